@@ -1,0 +1,73 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Bvd_face_base_2: a face base layer that stores the domain flag and the blinding constraint.
+#ifndef CVT_2_BVD_FACE_BASE_2_H
+#define CVT_2_BVD_FACE_BASE_2_H
+
+#include <CGAL/Constrained_Delaunay_triangulation_face_base_2.h>
+
+#include <utility>
+
+namespace CVT_2 {
+
+/// \ingroup PkgCvt2Ref
+/// A face base layer for a constrained Delaunay triangulation that stores what the bounded
+/// Voronoi diagram needs per face: whether the face lies in the domain and, when the face is
+/// *blind* (a constraint separates it from its circumcenter, paper Definition 2.1), the first
+/// constrained edge met on the way from the face to its circumcenter.
+///
+/// It stacks on any CGAL constrained face base, CGAL's `Delaunay_mesh_face_base_2` included, and
+/// shadows none of their members: CGAL's `is_blind()`, `blinding_constraint()` and
+/// `is_in_domain()` keep their meaning; ours are `is_blinded()`, `blinding_edge()` and
+/// `is_inside_domain()`.
+///
+/// \tparam Gt a geometric traits class (a CGAL kernel).
+/// \tparam Fb the face base it extends; models `ConstrainedTriangulationFaceBase_2`.
+/// \cgalModels `BvdFaceBase_2`
+template <class Gt, class Fb = CGAL::Constrained_Delaunay_triangulation_face_base_2<Gt>>
+class Bvd_face_base_2 : public Fb {
+ public:
+  using Geom_traits = Gt;
+  using Vertex_handle = typename Fb::Vertex_handle;
+  using Face_handle = typename Fb::Face_handle;
+  using Edge = std::pair<Face_handle, int>;
+
+  template <class Tds2>
+  struct Rebind_TDS {  // the TDS plugs itself in, like allocator rebind
+    using Other = Bvd_face_base_2<Gt, typename Fb::template Rebind_TDS<Tds2>::Other>;
+  };
+
+  Bvd_face_base_2() : Fb() {}
+  Bvd_face_base_2(Vertex_handle v0, Vertex_handle v1, Vertex_handle v2) : Fb(v0, v1, v2) {}
+  Bvd_face_base_2(Vertex_handle v0, Vertex_handle v1, Vertex_handle v2, Face_handle n0,
+                  Face_handle n1, Face_handle n2)
+      : Fb(v0, v1, v2, n0, n1, n2) {}
+
+  /// whether the face belongs to the domain (set by `mark_domain_2()`).
+  bool is_inside_domain() const { return m_inside_domain; }
+  void set_inside_domain(bool b) { m_inside_domain = b; }
+
+  /// whether a constraint hides the circumcenter from the face (set by the BVD, Algorithm 1).
+  bool is_blinded() const { return m_blinding_index >= 0; }
+  /// the first constrained edge on the way from the face to its circumcenter.
+  /// \pre `is_blinded()`
+  Edge blinding_edge() const {
+    CGAL_precondition(is_blinded());
+    return {m_blinding_face, m_blinding_index};
+  }
+  void set_blinding_edge(const Edge& e) {
+    m_blinding_face = e.first;
+    m_blinding_index = static_cast<signed char>(e.second);
+  }
+  void clear_blinding() { m_blinding_index = -1; }
+
+ private:
+  // The two bytes come first so that they fill the tail padding of the CGAL layers below:
+  // the layer then costs 8 bytes per face (16 per vertex) instead of 16.
+  signed char m_blinding_index = -1;  // -1: the face sees its circumcenter
+  bool m_inside_domain = false;
+  Face_handle m_blinding_face{};
+};
+
+}  // namespace CVT_2
+
+#endif  // CVT_2_BVD_FACE_BASE_2_H

@@ -1,0 +1,54 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Reading generator points: one 'x y' per line, '#' comments.
+#ifndef CVT_2_IO_READ_POINTS_H
+#define CVT_2_IO_READ_POINTS_H
+
+#include <CVT_2/exceptions.h>
+#include <CVT_2/internal/line_reader.h>
+
+#include <cstddef>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace CVT_2 {
+namespace IO {
+
+/// \ingroup PkgCvt2IO
+/// Points read from a text file, each with its line.
+template <class Point_2>
+struct Point_data {
+  std::string source;
+  std::vector<Point_2> points;
+  std::vector<std::size_t> lines;
+};
+
+/// \ingroup PkgCvt2IO
+/// Reads one point `x y` per line; blank lines and `#` comments are skipped.
+/// \throws Parse_error on a line that is not two finite numbers.
+template <class Point_2>
+Point_data<Point_2> read_points(std::istream& is, const std::string& source = "<points>") {
+  internal::Line_reader in(is, source);
+  Point_data<Point_2> data;
+  data.source = source;
+  for (std::vector<std::string> t; in.next(t);) {
+    if (t.size() != 2) in.fail("expected 'x y'", t.size() > 2 ? t[2] : t[0]);
+    data.points.emplace_back(in.real(t[0]), in.real(t[1]));
+    data.lines.push_back(in.line());
+  }
+  return data;
+}
+
+/// \ingroup PkgCvt2IO
+/// Reads the points of file `filename`. \throws Parse_error, also when it cannot be opened.
+template <class Point_2>
+Point_data<Point_2> read_points(const std::string& filename) {
+  std::ifstream is(filename);
+  if (!is) throw Parse_error(filename, 0, "cannot open the file");
+  return read_points<Point_2>(is, filename);
+}
+
+}  // namespace IO
+}  // namespace CVT_2
+
+#endif  // CVT_2_IO_READ_POINTS_H

@@ -1,0 +1,88 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// insert_generators_2(): inserts generator points into a marked domain, checking each one.
+#ifndef CVT_2_INSERT_GENERATORS_2_H
+#define CVT_2_INSERT_GENERATORS_2_H
+
+#include <CVT_2/exceptions.h>
+#include <CVT_2/mark_domain_2.h>
+
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+
+#include <iterator>
+#include <numeric>
+#include <vector>
+
+namespace CVT_2 {
+namespace internal {
+
+// Whether p lies in the closed domain; `hint` becomes the face where p was found.
+template <class CDT>
+bool locate_in_domain(const CDT& cdt, const typename CDT::Point_2& p,
+                      typename CDT::Face_handle& hint) {
+  if (cdt.dimension() < 2) return false;
+  typename CDT::Locate_type lt;
+  int li;
+  const typename CDT::Face_handle f = cdt.locate(p, lt, li, hint);
+  hint = f;
+  switch (lt) {
+    case CDT::FACE:
+      return f->is_inside_domain();
+    case CDT::EDGE:
+      return f->is_inside_domain() || f->neighbor(li)->is_inside_domain();
+    case CDT::VERTEX: {
+      auto fc = cdt.incident_faces(f->vertex(li)), done = fc;
+      do
+        if (fc->is_inside_domain()) return true;
+      while (++fc != done);
+      return false;
+    }
+    default:
+      return false;
+  }
+}
+
+}  // namespace internal
+
+/// \ingroup PkgCvt2Ref
+/// Whether `p` lies in the closed domain of `cdt`: in a domain face or on its boundary.
+/// \pre the domain is marked (`mark_domain_2()`).
+template <class CDT>
+bool is_in_domain_2(const CDT& cdt, const typename CDT::Point_2& p) {
+  typename CDT::Face_handle hint;
+  return internal::locate_in_domain(cdt, p, hint);
+}
+
+/// \ingroup PkgCvt2Ref
+/// Inserts generators into a triangulation whose domain is marked, then marks it again with the
+/// same hole seeds. A point on a constraint is kept and becomes a constrained vertex, as in
+/// Triangle; a point already present is merged.
+/// \throws Domain_error (with `index()` the position in `points`) for a NaN or infinite
+///         coordinate or a point outside the closed domain; nothing is inserted then.
+template <class CDT, class PointRange, class SeedRange>
+void insert_generators_2(CDT& cdt, const PointRange& points, const SeedRange& hole_seeds) {
+  using Point_2 = typename CDT::Point_2;
+  const std::vector<Point_2> pts(std::begin(points), std::end(points));
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    if (!internal::is_finite_point(pts[i]))
+      throw Domain_error("generator " + internal::to_string(pts[i]) + " is not finite", i);
+  // Locate in spatial order, each from the previous: a walk of a few faces per point.
+  std::vector<std::size_t> order(pts.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  using Map = typename CGAL::Pointer_property_map<Point_2>::const_type;
+  CGAL::spatial_sort(order.begin(), order.end(),
+                     CGAL::Spatial_sort_traits_adapter_2<typename CDT::Geom_traits, Map>(
+                         CGAL::make_property_map(pts)));
+  typename CDT::Face_handle hint;
+  for (const std::size_t i : order)
+    if (!internal::locate_in_domain(cdt, pts[i], hint))
+      throw Domain_error("generator " + internal::to_string(pts[i]) + " lies outside the domain",
+                         i);
+  cdt.insert(pts.begin(), pts.end());
+  mark_domain_2(cdt, hole_seeds);
+}
+
+}  // namespace CVT_2
+
+#endif  // CVT_2_INSERT_GENERATORS_2_H

@@ -1,0 +1,81 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// A line-by-line tokenizer for the text readers: '#' comments, numbers checked in full.
+#ifndef CVT_2_INTERNAL_LINE_READER_H
+#define CVT_2_INTERNAL_LINE_READER_H
+
+#include <CVT_2/exceptions.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <istream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CVT_2 {
+namespace internal {
+
+class Line_reader {
+ public:
+  Line_reader(std::istream& is, std::string source) : m_is(is), m_source(std::move(source)) {}
+
+  // The tokens of the next line that has any, or false at the end of the input.
+  bool next(std::vector<std::string>& tokens) {
+    std::string line;
+    while (std::getline(m_is, line)) {
+      ++m_line;
+      const std::size_t hash = line.find('#');
+      if (hash != std::string::npos) line.erase(hash);
+      std::istringstream ls(line);
+      tokens.clear();
+      for (std::string t; ls >> t;) tokens.push_back(t);
+      if (!tokens.empty()) return true;
+    }
+    if (m_is.bad()) fail("read error");
+    return false;
+  }
+  // Like next(), but the end of the input is an error that says what was expected.
+  void expect(std::vector<std::string>& tokens, const std::string& what) {
+    if (!next(tokens)) throw IO::Parse_error(m_source, m_line, "unexpected end of file, expected " + what);
+  }
+
+  double real(const std::string& t) const {
+    const char* b = t.c_str();
+    char* e = nullptr;
+    errno = 0;
+    const double x = std::strtod(b, &e);
+    if (e == b || *e != '\0') fail("not a number", t);
+    if (!std::isfinite(x) || (errno == ERANGE && std::fabs(x) > 1)) fail("number not finite or too large", t);
+    return x;
+  }
+  long long integer(const std::string& t) const {
+    const char* b = t.c_str();
+    char* e = nullptr;
+    errno = 0;
+    const long long x = std::strtoll(b, &e, 10);
+    if (e == b || *e != '\0' || errno == ERANGE) fail("not an integer", t);
+    return x;
+  }
+  std::size_t count(const std::string& t, const std::string& what) const {
+    const long long n = integer(t);
+    if (n < 0) fail("negative " + what, t);
+    return static_cast<std::size_t>(n);
+  }
+
+  [[noreturn]] void fail(const std::string& what, const std::string& token = {}) const {
+    throw IO::Parse_error(m_source, m_line, what, token);
+  }
+  std::size_t line() const { return m_line; }
+  const std::string& source() const { return m_source; }
+
+ private:
+  std::istream& m_is;
+  std::string m_source;
+  std::size_t m_line = 0;
+};
+
+}  // namespace internal
+}  // namespace CVT_2
+
+#endif  // CVT_2_INTERNAL_LINE_READER_H

@@ -1,0 +1,89 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Algorithm 1 of the paper: tag the blind faces of the domain with their first blinding edge.
+#ifndef CVT_2_INTERNAL_TAG_BLIND_FACES_H
+#define CVT_2_INTERNAL_TAG_BLIND_FACES_H
+
+#include <CGAL/enum.h>
+
+#include <cstddef>
+#include <unordered_set>
+#include <vector>
+
+namespace CVT_2 {
+namespace internal {
+
+template <class CDT>
+bool is_same_constraint(const typename CDT::Edge& e1, const typename CDT::Edge& e2) {
+  const auto a1 = e1.first->vertex(CDT::ccw(e1.second)), b1 = e1.first->vertex(CDT::cw(e1.second));
+  const auto a2 = e2.first->vertex(CDT::ccw(e2.second)), b2 = e2.first->vertex(CDT::cw(e2.second));
+  return (a1 == a2 && b1 == b2) || (a1 == b2 && b1 == a2);
+}
+
+// Alg. 1: the faces blinded by a constrained edge e are connected through unconstrained edges
+// and reach e (the Voronoi diagram of their vertices on one side of e is a tree rooted at the
+// dual ray of e), so a stack walk from each side of e finds them all. A face can be blinded by
+// several nested constraints; it keeps the first one met on the way to its circumcenter, which
+// is where Algorithm 2 must clip. The walk therefore goes on through faces tagged by another
+// constraint, and remembers them in `elsewhere` so as to visit each face once per walk.
+// Returns the number of blinded faces.
+template <class CDT, class Traits>
+std::size_t tag_blind_faces(const CDT& cdt, const Traits& traits) {
+  using Face_handle = typename CDT::Face_handle;
+  using Edge = typename CDT::Edge;
+  const auto is_blinded = traits.is_blinded_2_object();
+  const auto compare = traits.compare_blinding_distance_2_object();
+
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->clear_blinding();
+  if (cdt.dimension() < 2) return 0;
+
+  std::size_t count = 0;
+  std::vector<Face_handle> stack;
+  std::unordered_set<Face_handle> elsewhere;  // blinded by e, but first by another constraint
+  const auto tagged_by = [](Face_handle f, const Edge& e) {
+    if (!f->is_blinded()) return false;
+    const Edge t = f->blinding_edge();
+    return t.first == e.first && t.second == e.second;
+  };
+  for (auto ei = cdt.finite_edges_begin(); ei != cdt.finite_edges_end(); ++ei) {
+    if (!cdt.is_constrained(*ei)) continue;
+    for (const Edge& e : {*ei, cdt.mirror_edge(*ei)}) {
+      if (cdt.is_infinite(e.first) || !e.first->is_inside_domain()) continue;
+      const auto& a = e.first->vertex(CDT::ccw(e.second))->point();
+      const auto& b = e.first->vertex(CDT::cw(e.second))->point();
+      stack.assign(1, e.first);
+      elsewhere.clear();
+      while (!stack.empty()) {
+        const Face_handle f = stack.back();
+        stack.pop_back();
+        if (tagged_by(f, e) || elsewhere.count(f) != 0) continue;
+        const auto& p = f->vertex(0)->point();
+        const auto& q = f->vertex(1)->point();
+        const auto& r = f->vertex(2)->point();
+        if (!is_blinded(p, q, r, a, b)) continue;
+        if (!f->is_blinded()) {
+          f->set_blinding_edge(e);
+          ++count;
+        } else {
+          const Edge t = f->blinding_edge();
+          const auto& ta = t.first->vertex(CDT::ccw(t.second))->point();
+          const auto& tb = t.first->vertex(CDT::cw(t.second))->point();
+          if (!is_same_constraint<CDT>(t, e) && compare(p, q, r, a, b, ta, tb) == CGAL::SMALLER)
+            f->set_blinding_edge(e);
+          else
+            elsewhere.insert(f);
+        }
+        for (int i = 0; i < 3; ++i) {
+          const Face_handle n = f->neighbor(i);
+          if (!f->is_constrained(i) && !cdt.is_infinite(n) && n->is_inside_domain())
+            stack.push_back(n);
+        }
+      }
+    }
+  }
+  return count;
+}
+
+}  // namespace internal
+}  // namespace CVT_2
+
+#endif  // CVT_2_INTERNAL_TAG_BLIND_FACES_H

@@ -1,0 +1,160 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// mark_domain_2(): which faces of a constrained triangulation form the domain (Triangle's rule).
+#ifndef CVT_2_MARK_DOMAIN_2_H
+#define CVT_2_MARK_DOMAIN_2_H
+
+#include <CVT_2/exceptions.h>
+
+#include <CGAL/enum.h>
+
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+namespace CVT_2 {
+namespace internal {
+
+template <class Point_2>
+std::string to_string(const Point_2& p) {
+  std::ostringstream os;
+  os.precision(17);
+  os << '(' << p.x() << ", " << p.y() << ')';
+  return os.str();
+}
+
+template <class Point_2>
+bool is_finite_point(const Point_2& p) {
+  return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y()));
+}
+
+// Clears the domain flag of every face reachable from the seeds without crossing a constraint.
+template <class CDT>
+void flood_outside(const CDT& cdt, std::vector<typename CDT::Face_handle>& stack) {
+  while (!stack.empty()) {
+    const typename CDT::Face_handle f = stack.back();
+    stack.pop_back();
+    if (!f->is_inside_domain()) continue;
+    f->set_inside_domain(false);
+    for (int i = 0; i < 3; ++i)
+      if (!cdt.is_constrained(typename CDT::Edge(f, i)) && f->neighbor(i)->is_inside_domain())
+        stack.push_back(f->neighbor(i));
+  }
+}
+
+// The face on the given side of the constrained edge that starts at the vertex at `a` and goes
+// toward `b` (the segment ab may have been split by vertices lying on it).
+template <class CDT>
+typename CDT::Face_handle face_beside(const CDT& cdt, const typename CDT::Point_2& a,
+                                      const typename CDT::Point_2& b, CGAL::Orientation side) {
+  typename CDT::Locate_type lt;
+  int li;
+  const typename CDT::Face_handle fa = cdt.locate(a, lt, li);
+  if (lt != CDT::VERTEX)
+    throw Domain_error("polygon vertex " + to_string(a) + " is not a vertex of the triangulation");
+  const typename CDT::Vertex_handle va = fa->vertex(li);
+  typename CDT::Edge_circulator ec = cdt.incident_edges(va), done = ec;
+  do {
+    const typename CDT::Face_handle f = ec->first;
+    const int i = ec->second;
+    const typename CDT::Vertex_handle w =
+        f->vertex(CDT::cw(i)) == va ? f->vertex(CDT::ccw(i)) : f->vertex(CDT::cw(i));
+    if (cdt.is_infinite(w) || !cdt.is_constrained(*ec)) continue;
+    if (CGAL::orientation(a, b, w->point()) != CGAL::COLLINEAR ||
+        !CGAL::collinear_are_ordered_along_line(a, w->point(), b))
+      continue;
+    const typename CDT::Face_handle g = f->neighbor(i);
+    const typename CDT::Vertex_handle third = f->vertex(i);
+    const bool f_on_side =
+        !cdt.is_infinite(third) && CGAL::orientation(a, b, third->point()) == side;
+    if (f_on_side) return f;
+    if (cdt.is_infinite(f) && !cdt.is_infinite(g)) {
+      const typename CDT::Vertex_handle other = g->vertex(g->index(f));
+      if (CGAL::orientation(a, b, other->point()) != side) return f;
+    }
+    return g;
+  } while (++ec != done);
+  throw Domain_error("polygon edge " + to_string(a) + " - " + to_string(b) +
+                     " is not a constraint of the triangulation");
+}
+
+}  // namespace internal
+
+/// \ingroup PkgCvt2Ref
+/// Marks the domain by Triangle's rule, the rule of the `.poly` format: a face is in the domain
+/// unless it can be reached from the unbounded face or from the face holding a hole seed point
+/// without crossing a constrained edge. Regions closed by inner constraints (county borders
+/// meeting a state border) therefore stay in; a nesting-parity rule would drop every other one.
+///
+/// Call it again after inserting vertices: new faces are created outside the domain.
+/// \tparam CDT a constrained triangulation whose faces model `BvdFaceBase_2`.
+/// \tparam PointRange a range of `CDT::Point_2`.
+/// \throws Domain_error if a seed has a NaN or infinite coordinate, or lies on a constrained
+///         edge or vertex (it would not say which side is the hole).
+template <class CDT, class PointRange>
+void mark_domain_2(const CDT& cdt, const PointRange& hole_seeds) {
+  using Face_handle = typename CDT::Face_handle;
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_inside_domain(true);
+  if (cdt.dimension() < 2) {
+    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
+      f->set_inside_domain(false);
+    return;
+  }
+  std::vector<Face_handle> stack{cdt.infinite_face()};
+  internal::flood_outside(cdt, stack);
+  Face_handle hint;
+  for (const auto& p : hole_seeds) {
+    if (!internal::is_finite_point(p))
+      throw Domain_error("hole point " + internal::to_string(p) + " is not finite");
+    typename CDT::Locate_type lt;
+    int li;
+    const Face_handle f = cdt.locate(p, lt, li, hint);
+    hint = f;
+    if (lt == CDT::FACE) {
+      stack.push_back(f);
+    } else if (lt == CDT::EDGE) {
+      if (cdt.is_constrained(typename CDT::Edge(f, li)))
+        throw Domain_error("hole point " + internal::to_string(p) +
+                           " lies on a segment: it does not say which side is the hole");
+      stack.push_back(f);
+      stack.push_back(f->neighbor(li));
+    } else if (lt == CDT::VERTEX) {
+      if (cdt.are_there_incident_constraints(f->vertex(li)))
+        throw Domain_error("hole point " + internal::to_string(p) +
+                           " lies on a segment endpoint: it does not say which side is the hole");
+      auto fc = cdt.incident_faces(f->vertex(li)), done = fc;
+      do stack.push_back(fc);
+      while (++fc != done);
+    }  // outside the convex hull: outside already
+    internal::flood_outside(cdt, stack);
+  }
+}
+
+/// \ingroup PkgCvt2Ref
+/// Marks the domain of a triangulation into which the caller inserted the rings of polygons
+/// with holes (for example read by `CGAL::IO::read_WKT()`), without seed points: the faces
+/// inside each hole ring, next to its edges, serve as hole seeds, and Triangle's rule does the
+/// rest. Polygons may share edges and vertices (a map of counties); their union is the domain.
+/// \tparam PolygonWithHolesRange a range of `CGAL::Polygon_with_holes_2`.
+template <class CDT, class PolygonWithHolesRange>
+void mark_domain_from_polygons_2(const CDT& cdt, const PolygonWithHolesRange& polygons) {
+  using Face_handle = typename CDT::Face_handle;
+  mark_domain_2(cdt, std::vector<typename CDT::Point_2>());
+  if (cdt.dimension() < 2) return;
+  std::vector<Face_handle> stack;
+  for (const auto& pwh : polygons) {
+    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) {
+      if (h->size() < 3) continue;
+      // The hole lies left of its edges if it turns counterclockwise, right otherwise.
+      const CGAL::Orientation inside = h->orientation() == CGAL::COUNTERCLOCKWISE
+                                           ? CGAL::LEFT_TURN
+                                           : CGAL::RIGHT_TURN;
+      for (auto e = h->edges_begin(); e != h->edges_end(); ++e)
+        stack.push_back(internal::face_beside(cdt, e->source(), e->target(), inside));
+    }
+  }
+  internal::flood_outside(cdt, stack);
+}
+
+}  // namespace CVT_2
+
+#endif  // CVT_2_MARK_DOMAIN_2_H
