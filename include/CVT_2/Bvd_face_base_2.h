@@ -3,7 +3,7 @@
 #ifndef CVT_2_BVD_FACE_BASE_2_H
 #define CVT_2_BVD_FACE_BASE_2_H
 
-#include <CGAL/Constrained_Delaunay_triangulation_face_base_2.h>
+#include <CGAL/Constrained_triangulation_face_base_2.h>
 
 #include <utility>
 
@@ -15,15 +15,19 @@ namespace CVT_2 {
 /// *blind* (a constraint separates it from its circumcenter, paper Definition 2.1), the first
 /// constrained edge met on the way from the face to its circumcenter.
 ///
-/// It stacks on any CGAL constrained face base, CGAL's `Delaunay_mesh_face_base_2` included, and
-/// shadows none of their members: CGAL's `is_blind()`, `blinding_constraint()` and
-/// `is_in_domain()` keep their meaning; ours are `is_blinded()`, `blinding_edge()` and
-/// `is_inside_domain()`.
+/// It stacks on any CGAL constrained face base, `Constrained_Delaunay_triangulation_face_base_2`
+/// and `Delaunay_mesh_face_base_2` included, and shadows none of their members: CGAL's
+/// `is_blind()`, `blinding_constraint()` and `is_in_domain()` keep their meaning; ours are
+/// `is_blinded()`, `blinding_edge()` and `is_inside_domain()`.
+///
+/// The default base is `Constrained_triangulation_face_base_2`, without the blind flag and edge
+/// that CGAL 5.5's `Constrained_Delaunay_triangulation_face_base_2` carries for its own Lloyd
+/// optimizer: a face is then 64 bytes with Epick (CGAL's default CDT face: 72).
 ///
 /// \tparam Gt a geometric traits class (a CGAL kernel).
 /// \tparam Fb the face base it extends; models `ConstrainedTriangulationFaceBase_2`.
 /// \cgalModels `BvdFaceBase_2`
-template <class Gt, class Fb = CGAL::Constrained_Delaunay_triangulation_face_base_2<Gt>>
+template <class Gt, class Fb = CGAL::Constrained_triangulation_face_base_2<Gt>>
 class Bvd_face_base_2 : public Fb {
  public:
   using Geom_traits = Gt;
@@ -61,8 +65,9 @@ class Bvd_face_base_2 : public Fb {
   void clear_blinding() { m_blinding_index = -1; }
 
  private:
-  // The two bytes come first so that they fill the tail padding of the CGAL layers below:
-  // the layer then costs 8 bytes per face (16 per vertex) instead of 16.
+  // The two bytes come first so that they can fill the tail padding of the layer below (after
+  // the constrained flags of Constrained_triangulation_face_base_2): the layer then costs 8
+  // bytes per face instead of 16.
   signed char m_blinding_index = -1;  // -1: the face sees its circumcenter
   bool m_inside_domain = false;
   Face_handle m_blinding_face{};

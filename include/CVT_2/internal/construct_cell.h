@@ -7,6 +7,10 @@
 
 #include <CGAL/number_utils.h>
 
+#include <boost/container/small_vector.hpp>
+
+#include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CVT_2 {
@@ -89,63 +93,65 @@ void construct_cell(const CDT& cdt, const Traits& traits, typename CDT::Vertex_h
          n.constraint, w);
   };
 
-  // A face that follows a constrained edge, counterclockwise, starts a wedge.
+  // One turn around v, recording the fan: each face with the index of v in it. A face that
+  // follows a constrained edge, counterclockwise, starts a wedge.
+  boost::container::small_vector<std::pair<Face_handle, int>, 16> fan;
+  std::size_t first = 0;
+  bool has_constraint = false;
   auto fc = cdt.incident_faces(v);
   const auto done = fc;
-  bool has_constraint = false;
   do {
-    if (fc->is_constrained(CDT::cw(fc->index(v)))) {
+    const int i = fc->index(v);
+    if (!has_constraint && fc->is_constrained(CDT::cw(i))) {
       has_constraint = true;
-      break;
+      first = fan.size();
     }
+    fan.emplace_back(fc, i);
   } while (++fc != done);
+  const std::size_t k = fan.size();
+  const auto at = [&](std::size_t j) -> const std::pair<Face_handle, int>& {
+    return fan[first + j < k ? first + j : first + j - k];  // j < 2k: no division
+  };
+  const auto face = [&](std::size_t j) { return at(j).first; };
+  const auto index = [&](std::size_t j) { return at(j).second; };
 
   if (!has_constraint) {  // a free vertex: one cyclic chain (the paper's case)
-    if (!fc->is_inside_domain()) return;
-    const auto start = fc;
-    const Node first = face_node(start);
-    Node x = first;
-    do {
+    if (!face(0)->is_inside_domain()) return;
+    const Node start = face_node(face(0));
+    Node x = start;
+    for (std::size_t j = 0; j < k; ++j) {
       if (!x.blind) push_circumcenter(x);
-      const Vertex_handle w = fc->vertex(CDT::cw(fc->index(v)));
-      auto next = fc;
-      ++next;
-      const Node y = next == start ? first : face_node(next);
-      transition(x, y, w);
+      const Node y = j + 1 == k ? start : face_node(face(j + 1));
+      transition(x, y, face(j)->vertex(CDT::cw(index(j))));
       x = y;
-      fc = next;
-    } while (fc != start);
+    }
   } else {
-    const auto start = fc;
-    do {  // one wedge
-      const bool inside = fc->is_inside_domain();
-      if (!inside) {
-        while (!fc->is_constrained(CDT::ccw(fc->index(v)))) ++fc;
-        ++fc;
+    for (std::size_t j = 0; j < k;) {  // one wedge, from face j to the next constrained edge
+      if (!face(j)->is_inside_domain()) {
+        while (!face(j)->is_constrained(CDT::ccw(index(j)))) ++j;
+        ++j;
         continue;
       }
       push(v->point(), Cell_vertex::GENERATOR, Face_handle(), Edge(), Vertex_handle());
-      int i = fc->index(v);
-      Vertex_handle w = fc->vertex(CDT::ccw(i));
-      Node x = end_node(face_node(fc), Edge(fc, CDT::cw(i)));
+      Vertex_handle w = face(j)->vertex(CDT::ccw(index(j)));
+      Node x = end_node(face_node(face(j)), Edge(face(j), CDT::cw(index(j))));
       if (!x.blind) push_midpoint(x, w);
-      while (true) {
-        i = fc->index(v);
-        const Node y = face_node(fc);
+      for (;; ++j) {
+        const Node y = face_node(face(j));
         transition(x, y, w);
         if (!y.blind) push_circumcenter(y);
         x = y;
-        w = fc->vertex(CDT::cw(i));
-        const Edge after(fc, CDT::ccw(i));
-        ++fc;
-        if (cdt.is_constrained(after)) {
+        w = face(j)->vertex(CDT::cw(index(j)));
+        const Edge after(face(j), CDT::ccw(index(j)));
+        if (face(j)->is_constrained(after.second)) {
           const Node last = end_node(x, after);
           transition(x, last, w);
           if (!last.blind) push_midpoint(last, w);
+          ++j;
           break;
         }
       }
-    } while (fc != start);
+    }
   }
   if (out.size() > 1 && out.back().point == out.front().point) out.pop_back();
 }

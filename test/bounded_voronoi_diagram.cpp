@@ -1,0 +1,385 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Properties of the bounded Voronoi diagram: partition, convexity, nearest visible generator.
+#include "support/support.h"
+
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
+#include <catch2/catch.hpp>
+
+#include <map>
+
+using namespace support;
+
+namespace {
+
+struct Case {
+  const char* file;
+  std::size_t points;  // random generators added to the file's own
+  std::size_t samples;
+};
+const Case cases[] = {
+    {"four_clusters.poly", 300, 3000},        {"square_inner_constraints.poly", 1500, 3000},
+    {"us_massachusetts_counties.poly", 1500, 3000}, {"earcut_dude.poly", 800, 3000},
+    {"earcut_logo.poly", 1500, 2000},         {"france_mainland.poly", 1000, 2000},
+    {"earcut_eberly6.poly", 1500, 1500},      {"world_land_110m.poly", 2000, 600},
+};
+
+// Checks partition, convexity and the nearest-visible-generator oracle; returns the samples
+// that were decided (not within rounding of a tie).
+std::size_t check_diagram(const Bvd& bvd, std::size_t samples, unsigned seed) {
+  const Cdt& cdt = bvd.triangulation();
+  const double area = domain_area(cdt);
+  REQUIRE(area > 0);
+  CHECK(total_cell_area(bvd) == Approx(area).epsilon(1e-10));
+
+  // Every free cell is convex, counterclockwise, and holds its generator; every cell has
+  // positive area.
+  Cell c;
+  std::size_t non_convex = 0, not_containing = 0, not_positive = 0;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    bvd.cell(v, c);
+    if (c.empty()) continue;
+    if (!(signed_area(c) > 0)) ++not_positive;
+    if (!bvd.is_free(v)) continue;
+    double size = 0;
+    for (const auto& x : c) size = std::max(size, std::sqrt(CGAL::squared_distance(x.point, v->point())));
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      const auto& a = c[i].point;
+      const auto& b = c[(i + 1) % c.size()].point;
+      const auto& d = c[(i + 2) % c.size()].point;
+      const double turn = (b.x() - a.x()) * (d.y() - b.y()) - (b.y() - a.y()) * (d.x() - b.x());
+      if (turn < -1e-9 * size * size) ++non_convex;
+    }
+    if (!polygon_contains(c, v->point())) ++not_containing;
+  }
+  CHECK(not_positive == 0);
+  CHECK(non_convex == 0);
+  CHECK(not_containing == 0);
+
+  // Sample points fall in the cell of their nearest visible generator (brute force).
+  const Visibility_oracle oracle(bvd);
+  const double tol = 1e-9 * area;  // squared-distance gap below which a tie is rounding's call
+  std::size_t decided = 0, wrong = 0;
+  for (const Point& y : random_points_in_domain(cdt, samples, seed)) {
+    const auto [v, d] = oracle.nearest_visible(y);
+    REQUIRE(v != Cdt::Vertex_handle());
+    if (d.second - d.first < tol) continue;
+    ++decided;
+    bvd.cell(v, c);
+    if (!polygon_contains(c, y)) {
+      ++wrong;
+      if (wrong <= 3) {
+        CAPTURE(y, v->point(), d.first, d.second);
+        CHECK(polygon_contains(c, y));
+      }
+    }
+  }
+  CHECK(wrong == 0);
+  return decided;
+}
+
+}  // namespace
+
+TEST_CASE("cells tile the domain and each sample lies in the cell of its nearest visible generator",
+          "[bvd]") {
+  const Case k = GENERATE(from_range(std::begin(cases), std::end(cases)));
+  const unsigned seed = GENERATE(1u, 2u);
+  CAPTURE(k.file, seed);
+  Domain d;
+  load_domain(d, k.file);
+  insert_random_points(d, k.points, seed);
+  const Bvd bvd(d.cdt);
+  CHECK(check_diagram(bvd, k.samples, seed + 100) > k.samples * 9 / 10);
+}
+
+TEST_CASE("blind tags equal a brute-force exact search for the first constraint hit", "[bvd]") {
+  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+  const CGAL::Cartesian_converter<K, EK> to_exact;
+  const char* file = GENERATE("square_inner_constraints.poly", "us_massachusetts_counties.poly",
+                              "earcut_dude.poly", "four_clusters.poly", "earcut_logo.poly",
+                              "earcut_eberly6.poly");
+  const unsigned seed = GENERATE(3u, 4u);
+  CAPTURE(file, seed);
+  Domain d;
+  load_domain(d, file);
+  insert_random_points(d, 3000, seed);
+  const Bvd bvd(d.cdt);
+
+  std::vector<std::pair<EK::Segment_2, Cdt::Edge>> constraints;
+  for (auto e = d.cdt.finite_edges_begin(); e != d.cdt.finite_edges_end(); ++e)
+    if (d.cdt.is_constrained(*e)) constraints.push_back({to_exact(d.cdt.segment(*e)), *e});
+  std::size_t blind = 0, mismatches = 0;
+  for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f) {
+    if (!f->is_inside_domain()) continue;
+    const EK::Triangle_2 t = to_exact(d.cdt.triangle(f));
+    const EK::Point_2 g = CGAL::centroid(t), cc = CGAL::circumcenter(t[0], t[1], t[2]);
+    const EK::Segment_2 dual(g, cc);
+    // The first constraint met by [g, c), c on a constraint's line not counting for that one.
+    std::vector<Cdt::Edge> first;
+    EK::FT best = -1;
+    for (const auto& [s, e] : constraints) {
+      if (CGAL::collinear(s.source(), s.target(), cc) || !CGAL::do_intersect(dual, s)) continue;
+      const auto x = CGAL::intersection(dual.supporting_line(), s.supporting_line());
+      const EK::Point_2* px = boost::get<EK::Point_2>(&*x);
+      REQUIRE(px != nullptr);
+      const EK::FT dist = CGAL::squared_distance(g, *px);
+      if (best < 0 || dist < best) {
+        best = dist;
+        first.assign(1, e);
+      } else if (dist == best) {
+        first.push_back(e);
+      }
+    }
+    if (first.empty()) {
+      if (f->is_blinded()) ++mismatches;
+      continue;
+    }
+    ++blind;
+    bool ok = f->is_blinded();
+    if (ok) {
+      ok = false;
+      for (const auto& e : first) ok = ok || CVT_2::internal::is_same_constraint<Cdt>(e, f->blinding_edge());
+    }
+    if (!ok) ++mismatches;
+  }
+  CHECK(blind > 0);
+  CHECK(blind == bvd.number_of_blinded_faces());
+  CHECK(mismatches == 0);
+}
+
+TEST_CASE("cells survive translation and scaling of the input", "[bvd]") {
+  const double scale = GENERATE(1e-6, 1e-3, 1024.0, 1e6);
+  const double offset = GENERATE(0.0, 1e4);
+  CAPTURE(scale, offset);
+  Domain ref, moved;
+  load_domain(ref, "square_inner_constraints.poly");
+  load_domain(moved, "square_inner_constraints.poly", scale, offset * scale, -offset * scale);
+  const auto pts = random_points_in_domain(ref.cdt, 500, 11);
+  std::vector<Point> moved_pts;
+  for (const auto& p : pts) moved_pts.emplace_back(scale * p.x() + offset * scale, scale * p.y() - offset * scale);
+  CVT_2::insert_generators_2(ref.cdt, pts, ref.poly.holes);
+  CVT_2::insert_generators_2(moved.cdt, moved_pts, moved.poly.holes);
+  const Bvd a(ref.cdt), b(moved.cdt);
+  CHECK(total_cell_area(b) == Approx(domain_area(moved.cdt)).epsilon(1e-10));
+  // Same generators in the same order: cell areas scale by scale².
+  std::vector<double> areas_a, areas_b;
+  Cell c;
+  for (auto v = ref.cdt.finite_vertices_begin(); v != ref.cdt.finite_vertices_end(); ++v)
+    {
+      a.cell(v, c);
+      areas_a.push_back(signed_area(c));
+    }
+  for (auto v = moved.cdt.finite_vertices_begin(); v != moved.cdt.finite_vertices_end(); ++v) {
+    b.cell(v, c);
+    areas_b.push_back(signed_area(c) / (scale * scale));
+  }
+  REQUIRE(areas_a.size() == areas_b.size());
+  const double tolerance = offset == 0 ? 1e-9 : 1e-5;  // an offset costs digits
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < areas_a.size(); ++i)
+    if (std::abs(areas_a[i] - areas_b[i]) > tolerance * 100.0 / areas_a.size() + 1e-12) ++differ;
+  CHECK(differ == 0);
+  check_diagram(b, 1000, 5);
+}
+
+TEST_CASE("degenerate input: cocircular grid, points on constraints, collinear boundary",
+          "[bvd][degenerate]") {
+  // A square whose sides carry extra collinear vertices, an inner segment, a regular grid of
+  // generators (every four of them cocircular) with some of them exactly on the constraints.
+  CVT_2::IO::Poly_data<Point> poly;
+  const int n = 10;
+  for (int i = 0; i < n; ++i) poly.vertices.emplace_back(i, 0);
+  for (int i = 0; i < n; ++i) poly.vertices.emplace_back(n, i);
+  for (int i = 0; i < n; ++i) poly.vertices.emplace_back(n - i, n);
+  for (int i = 0; i < n; ++i) poly.vertices.emplace_back(0, n - i);
+  for (std::size_t i = 0; i < poly.vertices.size(); ++i)
+    poly.segments.push_back({i, (i + 1) % poly.vertices.size()});
+  poly.vertices.emplace_back(2, 5);
+  poly.vertices.emplace_back(8, 5);
+  poly.segments.push_back({poly.vertices.size() - 2, poly.vertices.size() - 1});
+  poly.segment_lines.assign(poly.segments.size(), 0);
+  poly.vertex_lines.assign(poly.vertices.size(), 0);
+  const double step = GENERATE(0.5, 1.0 / 3.0);
+  CAPTURE(step);
+  Cdt cdt;
+  CVT_2::IO::insert_poly(cdt, poly);
+  std::vector<Point> grid;
+  for (double x = 0; x <= n; x += step)
+    for (double y = 0; y <= n; y += step) grid.emplace_back(x, y);
+  CVT_2::insert_generators_2(cdt, grid, poly.holes);
+  const Bvd bvd(cdt);
+  check_diagram(bvd, 3000, 7);
+}
+
+TEST_CASE("degenerate input: right triangles put circumcenters exactly on constraints", "[bvd][degenerate]") {
+  // Generators mirrored across a slit, at equal distance: circumcenters fall on the slit's line.
+  Domain d;
+  load_domain(d, "square_inner_constraints.poly");
+  std::vector<Point> pts;
+  for (int i = 1; i < 40; ++i)
+    for (int j = 1; j < 40; ++j) pts.emplace_back(i * 0.25, j * 0.25);
+  CVT_2::insert_generators_2(d.cdt, pts, d.poly.holes);
+  const Bvd bvd(d.cdt);
+  check_diagram(bvd, 3000, 9);
+}
+
+TEST_CASE("tiny and huge domains far from the origin", "[bvd][degenerate]") {
+  const double scale = GENERATE(1e-9, 1e9);
+  const double offset = GENERATE(0.0, 1e3);
+  CAPTURE(scale, offset);
+  Domain d;
+  load_domain(d, "four_clusters.poly", scale, offset * scale, offset * scale);
+  insert_random_points(d, 300, 13);
+  const Bvd bvd(d.cdt);
+  check_diagram(bvd, 1500, 17);
+}
+
+TEST_CASE("a vertex on inner constraints has one cell, with a slit along each constraint", "[bvd]") {
+  Domain d;
+  load_domain(d, "square_inner_constraints.poly");
+  insert_random_points(d, 500, 19);
+  const Bvd bvd(d.cdt);
+  Cell c;
+  std::size_t checked = 0;
+  for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v) {
+    bvd.cell(v, c);
+    if (bvd.is_free(v)) {
+      for (const auto& x : c) CHECK(x.type != Bvd::Cell_vertex::GENERATOR);
+      continue;
+    }
+    // One GENERATOR entry per wedge of domain faces between two constraints around v.
+    std::size_t wedges = 0, constraints = 0;
+    auto e = d.cdt.incident_edges(v), done = e;
+    do {
+      if (!d.cdt.is_constrained(*e)) continue;
+      ++constraints;
+      // the face after this constraint, counterclockwise around v
+      const Cdt::Vertex_handle vh = v;
+      const auto f = e->first->vertex(d.cdt.ccw(e->second)) == vh ? e->first : e->first->neighbor(e->second);
+      if (f->is_inside_domain() && !d.cdt.is_infinite(f)) ++wedges;
+    } while (++e != done);
+    std::size_t generators = 0;
+    for (const auto& x : c) generators += x.type == Bvd::Cell_vertex::GENERATOR;
+    CHECK(generators == wedges);
+    ++checked;
+  }
+  CHECK(checked >= 18);
+}
+
+TEST_CASE("cell vertices say what they are: circumcenters, clip points on their constraint, generator",
+          "[bvd]") {
+  Domain d;
+  load_domain(d, "us_massachusetts_counties.poly");
+  insert_random_points(d, 1000, 23);
+  const Bvd bvd(d.cdt);
+  std::size_t clips = 0;
+  for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v) {
+    auto circ = bvd.cell_vertices(v);
+    if (circ == nullptr) {
+      CHECK(!bvd.has_cell(v));
+      continue;
+    }
+    const auto polygon = bvd.cell_polygon(v);
+    CHECK(polygon.size() == circ.size());
+    auto done = circ;
+    std::size_t i = 0;
+    do {
+      CHECK(polygon[i++] == circ->point);
+      switch (circ->type) {
+        case Bvd::Cell_vertex::CIRCUMCENTER:
+          CHECK(circ->point == d.cdt.circumcenter(circ->face));
+          CHECK(!circ->face->is_blinded());
+          break;
+        case Bvd::Cell_vertex::CLIP_POINT: {
+          ++clips;
+          const auto s = d.cdt.segment(circ->constraint);
+          CHECK(CGAL::squared_distance(s, circ->point) <= 1e-20 * s.squared_length());
+          CHECK(CGAL::squared_distance(v->point(), circ->point) ==
+                Approx(CGAL::squared_distance(circ->neighbor->point(), circ->point)).epsilon(1e-9));
+          break;
+        }
+        case Bvd::Cell_vertex::GENERATOR:
+          CHECK(circ->point == v->point());
+          CHECK(!bvd.is_free(v));
+          break;
+      }
+    } while (++circ != done);
+  }
+  CHECK(clips > 0);
+}
+
+TEST_CASE("the face base stacks on CGAL's Delaunay_mesh_face_base_2 and costs at most 8 bytes a face",
+          "[bvd]") {
+  using Mesh_fb = CVT_2::Bvd_face_base_2<K, CGAL::Delaunay_mesh_face_base_2<K>>;
+  using Mesh_tds = CGAL::Triangulation_data_structure_2<Vb, Mesh_fb>;
+  using Mesh_cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Mesh_tds>;
+  STATIC_REQUIRE(sizeof(Fb) <= sizeof(CGAL::Constrained_Delaunay_triangulation_face_base_2<K>) + 8);
+  Mesh_cdt cdt;
+  const auto poly = CVT_2::IO::read_poly<Point>(data_path("earcut_dude.poly"));
+  CVT_2::IO::insert_poly(cdt, poly);
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_in_domain(false);
+  const CVT_2::Bounded_voronoi_diagram_2<Mesh_cdt> bvd(cdt);
+  double area = 0;
+  std::vector<CVT_2::Bounded_voronoi_diagram_2<Mesh_cdt>::Cell_vertex> c;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    bvd.cell(v, c);
+    for (std::size_t i = 1; i + 1 < c.size(); ++i)
+      area += CGAL::area(c[0].point, c[i].point, c[i + 1].point);
+  }
+  double domain = 0;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    CHECK(!f->is_in_domain());  // CGAL's flag is CGAL's: ours did not touch it
+    if (f->is_inside_domain()) domain += cdt.triangle(f).area();
+  }
+  CHECK(area == Approx(domain).epsilon(1e-10));
+}
+
+TEST_CASE("nested constraints: a face keeps the first constraint on the way to its circumcenter",
+          "[bvd][degenerate]") {
+  // A flat face under a slit y = 9, x in [4, 6], below the top side y = 10: its circumcenter
+  // (5, 10.1) lies beyond both, and the slit is met first. Algorithm 2 must clip on the slit.
+  // Both orders of insertion and four rotations, since the walks' order follows storage.
+  const bool reversed = GENERATE(false, true);
+  const int quarter_turns = GENERATE(0, 1, 2, 3);
+  CAPTURE(reversed, quarter_turns);
+  const auto turn = [quarter_turns](Point p) {  // a quarter turn about (5, 5), exact
+    for (int i = 0; i < quarter_turns; ++i) p = Point(10 - p.y(), p.x());
+    return p;
+  };
+  CVT_2::IO::Poly_data<Point> poly;
+  poly.vertices = {Point(0, 0), Point(10, 0), Point(10, 10), Point(0, 10), Point(4, 9), Point(6, 9)};
+  for (auto& p : poly.vertices) p = turn(p);
+  poly.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}};
+  if (reversed) {
+    std::reverse(poly.vertices.begin(), poly.vertices.end());
+    for (auto& s : poly.segments) s = {5 - s[0], 5 - s[1]};
+    std::reverse(poly.segments.begin(), poly.segments.end());
+  }
+  poly.vertex_lines.assign(6, 0);
+  poly.segment_lines.assign(5, 0);
+  Cdt cdt;
+  CVT_2::IO::insert_poly(cdt, poly);
+  std::vector<Point> pts{Point(4.5, 8.9), Point(5.5, 8.9), Point(5, 8.8), Point(2, 2), Point(8, 3),
+                         Point(5, 5), Point(2, 7), Point(8, 7)};
+  for (auto& p : pts) p = turn(p);
+  if (reversed) std::reverse(pts.begin(), pts.end());
+  CVT_2::insert_generators_2(cdt, pts, poly.holes);
+  const Bvd bvd(cdt);
+  Cdt::Face_handle f;
+  Cdt::Vertex_handle v[3];
+  int k = 0;
+  for (const Point& p : {Point(4.5, 8.9), Point(5.5, 8.9), Point(5, 8.8)}) {
+    Cdt::Locate_type lt;
+    int li;
+    const auto g = cdt.locate(turn(p), lt, li);
+    REQUIRE(lt == Cdt::VERTEX);
+    v[k++] = g->vertex(li);
+  }
+  REQUIRE(cdt.is_face(v[0], v[1], v[2], f));
+  REQUIRE(f->is_blinded());
+  const auto s = cdt.segment(f->blinding_edge());
+  const auto slit = K::Segment_2(turn(Point(4, 9)), turn(Point(6, 9)));
+  CHECK((s == slit || s == slit.opposite()));
+  check_diagram(bvd, 4000, 29);
+}

@@ -1,0 +1,183 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Readers and domains: .poly parsing, clear errors with file and line, Triangle's domain rule.
+#include "support/support.h"
+
+#include <CVT_2/IO/read_points.h>
+
+#include <CGAL/IO/WKT.h>
+#include <CGAL/Polygon_with_holes_2.h>
+
+#include <catch2/catch.hpp>
+
+#include <sstream>
+
+using namespace support;
+
+namespace {
+
+CVT_2::IO::Poly_data<Point> parse(const std::string& text) {
+  std::istringstream is(text);
+  return CVT_2::IO::read_poly<Point>(is, "t.poly");
+}
+// The message of the exception that `f` throws, or "" if none.
+template <class Exception, class F>
+std::string message_of(F f) {
+  try {
+    f();
+  } catch (const Exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const char* const square =
+    "# unit square with a slit\n"
+    "6 2 0 1\n"
+    "1 0 0 1\n2 1 0 1\n3 1 1 1\n4 0 1 1\n5 0.25 0.5 0\n6 0.75 0.5 0\n"
+    "5 1\n"
+    "1 1 2 1\n2 2 3 1\n3 3 4 1\n4 4 1 1\n5 5 6 3\n"
+    "0\n";
+
+}  // namespace
+
+TEST_CASE("a .poly file is read with its numbering, comments, markers and holes", "[io]") {
+  const auto d = parse(square);
+  CHECK(d.vertices.size() == 6);
+  CHECK(d.segments.size() == 5);
+  CHECK(d.segments[4] == std::array<std::size_t, 2>{4, 5});
+  CHECK(d.vertex_lines[0] == 3);
+  CHECK(d.holes.empty());
+  // 0-based numbering and trailing comments
+  const auto z = parse("3 2 0 0 # header\n0 0 0\n1 1 0\n2 0 1\n3 0\n0 0 1\n1 1 2\n2 2 0\n0\n");
+  CHECK(z.segments[2] == std::array<std::size_t, 2>{2, 0});
+}
+
+TEST_CASE("malformed .poly files give a parse error that names the line", "[io]") {
+  using E = CVT_2::IO::Parse_error;
+  const auto err = [](const std::string& text) { return message_of<E>([&] { parse(text); }); };
+  CHECK(err("") == "t.poly:0: unexpected end of file, expected the vertex header '<#vertices> 2 <#attributes> <#markers>'");
+  CHECK_THAT(err("3 2 0 0\n1 0 0\n2 1 0\n"), Catch::Contains("t.poly:3: unexpected end of file"));
+  CHECK_THAT(err("2 2 0 0\n1 0 0\n2 nan 0\n"), Catch::Contains("t.poly:3: number not finite"));
+  CHECK_THAT(err("2 2 0 0\n1 0 0\n2 1e999 0\n"), Catch::Contains("t.poly:3"));
+  CHECK_THAT(err("2 2 0 0\n1 0 0\n2 1x 0\n"), Catch::Contains("t.poly:3: not a number (near '1x')"));
+  CHECK_THAT(err("2 2 0 0\n1 0 0\n3 1 0\n"), Catch::Contains("t.poly:3: vertex numbers must be consecutive"));
+  CHECK_THAT(err("2 2 0 0\n1 0 0\n2 1 0\n1 0\n1 1 3\n"), Catch::Contains("t.poly:5: vertex number out of range"));
+  CHECK_THAT(err("2 2 0 0\n1 0 0\n2 1 0\n1 0\n1 2 2\n"), Catch::Contains("t.poly:5: a segment needs two different vertices"));
+  CHECK_THAT(err("2 3 0 0\n"), Catch::Contains("t.poly:1: only dimension 2"));
+  CHECK_THAT(err("-2 2 0 0\n"), Catch::Contains("t.poly:1: negative vertex count"));
+  CHECK_THAT(err("2 2 0 0\n1 0 0 7\n"), Catch::Contains("t.poly:2: expected '<index> <x> <y>'"));
+  CHECK_THAT(err(std::string(square) + "1 2 3\n"), Catch::Contains("t.poly:16: too many fields in the region header"));
+  CHECK_THAT(err(std::string(square) + "0\nextra\n"), Catch::Contains("t.poly:17: unexpected content"));
+  CHECK_THAT(message_of<E>([] { CVT_2::IO::read_poly<Point>("/nonexistent.poly"); }),
+             Catch::Contains("/nonexistent.poly:0: cannot open the file"));
+}
+
+TEST_CASE("bad domains give a domain error with file, line and coordinates", "[io]") {
+  using E = CVT_2::Domain_error;
+  const auto err = [](const std::string& text) {
+    return message_of<E>([&] {
+      Cdt cdt;
+      CVT_2::IO::insert_poly(cdt, parse(text));
+    });
+  };
+  // crossing segments
+  CHECK_THAT(err("4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n2 0\n1 1 2\n2 3 4\n0\n"),
+             Catch::Contains("t.poly:8: segment (1, 0) - (0, 1) crosses an earlier segment"));
+  // an open ring encloses nothing
+  CHECK_THAT(err("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n2 2 3\n0\n"),
+             Catch::Contains("the domain is empty"));
+  // a free vertex outside
+  CHECK_THAT(err("4 2 0 0\n1 0 0\n2 1 0\n3 0 1\n4 5 5\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n"),
+             Catch::Contains("t.poly:5: free vertex (5, 5) lies outside the domain"));
+  // a hole point on a segment
+  CHECK_THAT(err("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 3\n3 3 1\n1\n1 0.5 0\n"),
+             Catch::Contains("hole point (0.5, 0) lies on a segment"));
+  // generators: outside, not finite
+  Cdt cdt;
+  const auto d = parse(square);
+  CVT_2::IO::insert_poly(cdt, d);
+  const std::vector<Point> outside{Point(0.5, 0.25), Point(2, 2)};
+  const std::string m = message_of<E>([&] { CVT_2::insert_generators_2(cdt, outside, d.holes); });
+  CHECK_THAT(m, Catch::Contains("generator (2, 2) lies outside the domain"));
+  try {
+    CVT_2::insert_generators_2(cdt, outside, d.holes);
+  } catch (const E& e) {
+    CHECK(e.index() == 1);
+  }
+  const std::vector<Point> nan{Point(std::nan(""), 0)};
+  CHECK_THAT(message_of<E>([&] { CVT_2::insert_generators_2(cdt, nan, d.holes); }),
+             Catch::Contains("is not finite"));
+  // a point on the boundary or on the slit is fine: it becomes a constrained vertex
+  const std::vector<Point> on{Point(0.5, 0), Point(0.5, 0.5)};
+  CVT_2::insert_generators_2(cdt, on, d.holes);
+  const Bvd bvd(cdt);
+  std::size_t constrained = 0;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    constrained += !bvd.is_free(v);
+  CHECK(constrained == 8);
+  CHECK(total_cell_area(bvd) == Approx(1.0).epsilon(1e-12));
+}
+
+TEST_CASE("points files: one 'x y' a line, errors name the line", "[io]") {
+  std::istringstream ok("# two points\n0.5 0.5\n\n0.25 0.75 # trailing\n");
+  const auto d = CVT_2::IO::read_points<Point>(ok, "p.txt");
+  CHECK(d.points.size() == 2);
+  CHECK(d.lines == std::vector<std::size_t>{2, 4});
+  std::istringstream bad("0.5 0.5\n0.5\n");
+  CHECK_THAT(message_of<CVT_2::IO::Parse_error>([&] { CVT_2::IO::read_points<Point>(bad, "p.txt"); }),
+             Catch::Contains("p.txt:2: expected 'x y'"));
+}
+
+TEST_CASE("Triangle's rule keeps every region closed by inner constraints", "[io][domain]") {
+  // Each shipped .poly has the even-odd region of its rings as domain; the .wkt has the same
+  // polygons. Massachusetts' county borders close regions: a parity rule would drop some.
+  const std::string name = GENERATE("us_massachusetts_counties", "earcut_dude", "four_clusters");
+  CAPTURE(name);
+  Domain d;
+  load_domain(d, name + ".poly");
+  std::ifstream is(data_path(name + ".wkt"));
+  std::vector<Point> points;
+  std::vector<std::vector<Point>> polylines;
+  std::vector<CGAL::Polygon_with_holes_2<K>> polygons;
+  REQUIRE(CGAL::IO::read_WKT(is, points, polylines, polygons));
+  double wkt_area = 0;
+  for (const auto& pwh : polygons) {
+    wkt_area += CGAL::to_double(pwh.outer_boundary().area());
+    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) wkt_area -= std::abs(CGAL::to_double(h->area()));
+  }
+  CHECK(domain_area(d.cdt) == Approx(wkt_area).epsilon(1e-12));
+
+  // The same domain from the polygons' structure, without seed points.
+  Cdt cdt;
+  for (const auto& pwh : polygons) {
+    cdt.insert_constraint(pwh.outer_boundary().vertices_begin(), pwh.outer_boundary().vertices_end(), true);
+    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h)
+      cdt.insert_constraint(h->vertices_begin(), h->vertices_end(), true);
+  }
+  for (const auto& pl : polylines) cdt.insert_constraint(pl.begin(), pl.end());
+  CVT_2::mark_domain_from_polygons_2(cdt, polygons);
+  CHECK(domain_area(cdt) == Approx(wkt_area).epsilon(1e-12));
+}
+
+TEST_CASE("the domain from polygons with holes, and islands in lakes", "[io][domain]") {
+  // A square with a square hole, and an island polygon inside the hole.
+  using Polygon = CGAL::Polygon_2<K>;
+  Polygon outer, hole, island;
+  for (const auto& p : {Point(0, 0), Point(10, 0), Point(10, 10), Point(0, 10)}) outer.push_back(p);
+  for (const auto& p : {Point(2, 2), Point(2, 8), Point(8, 8), Point(8, 2)}) hole.push_back(p);  // clockwise
+  for (const auto& p : {Point(4, 4), Point(6, 4), Point(6, 6), Point(4, 6)}) island.push_back(p);
+  CGAL::Polygon_with_holes_2<K> a(outer);
+  a.add_hole(hole);
+  const std::vector<CGAL::Polygon_with_holes_2<K>> polygons{a, CGAL::Polygon_with_holes_2<K>(island)};
+  Cdt cdt;
+  for (const Polygon* ring : {&outer, &hole, &island})
+    cdt.insert_constraint(ring->vertices_begin(), ring->vertices_end(), true);
+  CVT_2::mark_domain_from_polygons_2(cdt, polygons);
+  CHECK(domain_area(cdt) == Approx(100 - 36 + 4).epsilon(1e-14));
+  // Triangle's rule with a seed in the lake gives the same.
+  Cdt cdt2;
+  for (const Polygon* ring : {&outer, &hole, &island})
+    cdt2.insert_constraint(ring->vertices_begin(), ring->vertices_end(), true);
+  CVT_2::mark_domain_2(cdt2, std::vector<Point>{Point(3, 3)});
+  CHECK(domain_area(cdt2) == Approx(64 + 4).epsilon(1e-14));
+}

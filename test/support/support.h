@@ -1,0 +1,165 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Test support: the triangulation types, loaders, seeded random points and brute-force oracles.
+#ifndef CVT_2_TEST_SUPPORT_H
+#define CVT_2_TEST_SUPPORT_H
+
+#include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/IO/read_poly.h>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace support {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_2;
+using Segment = K::Segment_2;
+using Vb = CGAL::Triangulation_vertex_base_2<K>;
+using Fb = CVT_2::Bvd_face_base_2<K>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
+    K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
+using Bvd = CVT_2::Bounded_voronoi_diagram_2<Cdt>;
+using Cell = std::vector<Bvd::Cell_vertex>;
+
+inline std::string data_path(const std::string& file) { return std::string(CVT_2_DATA_DIR) + "/" + file; }
+
+// A domain from a bundled .poly file, optionally moved by p -> scale * p + offset.
+struct Domain {
+  CVT_2::IO::Poly_data<Point> poly;
+  Cdt cdt;
+};
+inline void transform(CVT_2::IO::Poly_data<Point>& poly, double scale, double ox, double oy) {
+  for (auto& p : poly.vertices) p = Point(scale * p.x() + ox, scale * p.y() + oy);
+  for (auto& p : poly.holes) p = Point(scale * p.x() + ox, scale * p.y() + oy);
+}
+inline void load_domain(Domain& d, const std::string& file, double scale = 1, double ox = 0,
+                        double oy = 0) {
+  d.poly = CVT_2::IO::read_poly<Point>(data_path(file));
+  transform(d.poly, scale, ox, oy);
+  CVT_2::IO::insert_poly(d.cdt, d.poly);
+}
+
+inline CGAL::Bbox_2 domain_bbox(const Cdt& cdt) {
+  CGAL::Bbox_2 b;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (f->is_inside_domain()) b += cdt.triangle(f).bbox();
+  return b;
+}
+
+// n points drawn uniformly in the domain (rejection in its bounding box).
+inline std::vector<Point> random_points_in_domain(const Cdt& cdt, std::size_t n, unsigned seed) {
+  const CGAL::Bbox_2 b = domain_bbox(cdt);
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> ux(b.xmin(), b.xmax()), uy(b.ymin(), b.ymax());
+  std::vector<Point> pts;
+  while (pts.size() < n) {
+    const Point p(ux(rng), uy(rng));
+    if (CVT_2::is_in_domain_2(cdt, p)) pts.push_back(p);
+  }
+  return pts;
+}
+inline void insert_random_points(Domain& d, std::size_t n, unsigned seed) {
+  CVT_2::insert_generators_2(d.cdt, random_points_in_domain(d.cdt, n, seed), d.poly.holes);
+}
+
+// Shoelace relative to the first vertex, so that coordinates far from the origin do not cancel.
+inline double signed_area(const Cell& c) {
+  if (c.empty()) return 0;
+  const Point& o = c[0].point;
+  double a = 0;
+  for (std::size_t i = 1; i + 1 < c.size(); ++i) {
+    const auto p = c[i].point - o, q = c[i + 1].point - o;
+    a += p.x() * q.y() - q.x() * p.y();
+  }
+  return a / 2;
+}
+
+inline double domain_area(const Cdt& cdt) {
+  double a = 0;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (f->is_inside_domain()) a += cdt.triangle(f).area();
+  return a;
+}
+
+inline double total_cell_area(const Bvd& bvd) {
+  double a = 0;
+  Cell c;
+  for (auto v = bvd.triangulation().finite_vertices_begin();
+       v != bvd.triangulation().finite_vertices_end(); ++v) {
+    bvd.cell(v, c);
+    a += signed_area(c);
+  }
+  return a;
+}
+
+// Even-odd test, which slits (edges walked both ways) do not disturb.
+inline bool polygon_contains(const Cell& c, const Point& y) {
+  bool in = false;
+  for (std::size_t i = 0, j = c.size() - 1; i < c.size(); j = i++) {
+    const Point& a = c[i].point;
+    const Point& b = c[j].point;
+    if ((a.y() > y.y()) != (b.y() > y.y()) &&
+        y.x() < (b.x() - a.x()) * (y.y() - a.y()) / (b.y() - a.y()) + a.x())
+      in = !in;
+  }
+  return in;
+}
+
+// Brute force: the generators that see y, by distance. x sees y when no constrained edge that
+// does not end at x meets the segment [x, y].
+struct Visibility_oracle {
+  std::vector<std::pair<Segment, std::pair<Cdt::Vertex_handle, Cdt::Vertex_handle>>> constraints;
+  std::vector<Cdt::Vertex_handle> generators;
+
+  explicit Visibility_oracle(const Bvd& bvd) {
+    const Cdt& cdt = bvd.triangulation();
+    for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
+      if (cdt.is_constrained(*e)) {
+        const auto a = e->first->vertex(cdt.ccw(e->second)), b = e->first->vertex(cdt.cw(e->second));
+        constraints.push_back({Segment(a->point(), b->point()), {a, b}});
+      }
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      if (bvd.has_cell(v)) generators.push_back(v);
+  }
+  bool sees(Cdt::Vertex_handle x, const Point& y) const {
+    const Segment s(x->point(), y);
+    const CGAL::Bbox_2 sb = s.bbox();
+    for (const auto& c : constraints) {
+      if (c.second.first == x || c.second.second == x) continue;
+      if (CGAL::do_overlap(sb, c.first.bbox()) && CGAL::do_intersect(s, c.first)) return false;
+    }
+    return true;
+  }
+  // The nearest and second nearest visible generators' squared distances, and the nearest.
+  std::pair<Cdt::Vertex_handle, std::pair<double, double>> nearest_visible(const Point& y) const {
+    std::vector<std::pair<double, Cdt::Vertex_handle>> by_distance;
+    by_distance.reserve(generators.size());
+    for (const auto v : generators) by_distance.push_back({CGAL::squared_distance(v->point(), y), v});
+    std::sort(by_distance.begin(), by_distance.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    Cdt::Vertex_handle best;
+    double d1 = -1;
+    for (const auto& [d, v] : by_distance) {
+      if (!sees(v, y)) continue;
+      if (d1 < 0) {
+        best = v;
+        d1 = d;
+      } else {
+        return {best, {d1, d}};
+      }
+    }
+    return {best, {d1, HUGE_VAL}};
+  }
+};
+
+}  // namespace support
+
+#endif  // CVT_2_TEST_SUPPORT_H
