@@ -383,3 +383,34 @@ TEST_CASE("nested constraints: a face keeps the first constraint on the way to i
   CHECK((s == slit || s == slit.opposite()));
   check_diagram(bvd, 4000, 29);
 }
+
+TEST_CASE("extreme scales: a power-of-two scaling scales every cell exactly", "[bvd][degenerate]") {
+  // Feature sizes near 1e-290 or 1e290 make the circumcenter formula's cubic terms underflow
+  // or overflow in double; the constructions rescale their differences, so the cells are the
+  // unit-scale cells, scaled, to the bit.
+  const int exponent = GENERATE(-960, -200, 200, 960);
+  CAPTURE(exponent);
+  Domain ref, scaled;
+  load_domain(ref, "square_inner_constraints.poly");
+  load_domain(scaled, "square_inner_constraints.poly", std::ldexp(1.0, exponent));
+  const auto pts = random_points_in_domain(ref.cdt, 300, 31);
+  std::vector<Point> scaled_pts;
+  for (const auto& p : pts) scaled_pts.emplace_back(std::ldexp(p.x(), exponent), std::ldexp(p.y(), exponent));
+  CVT_2::insert_generators_2(ref.cdt, pts, ref.poly.holes);
+  CVT_2::insert_generators_2(scaled.cdt, scaled_pts, scaled.poly.holes);
+  const Bvd a(ref.cdt), b(scaled.cdt);
+  Cell ca, cb;
+  std::size_t cells = 0, differ = 0;
+  auto vb = scaled.cdt.finite_vertices_begin();
+  for (auto va = ref.cdt.finite_vertices_begin(); va != ref.cdt.finite_vertices_end(); ++va, ++vb) {
+    a.cell(va, ca);
+    b.cell(vb, cb);
+    cells += !ca.empty();
+    bool same = ca.size() == cb.size();
+    for (std::size_t i = 0; same && i < ca.size(); ++i)
+      same = ca[i].point == Point(std::ldexp(cb[i].point.x(), -exponent), std::ldexp(cb[i].point.y(), -exponent));
+    differ += !same;
+  }
+  CHECK(cells > 300);
+  CHECK(differ == 0);
+}

@@ -5,6 +5,8 @@
 
 #include <CVT_2/Bvd_face_base_2.h>
 #include <CVT_2/Bvd_traits_2.h>
+#include <CVT_2/Concepts/BvdFaceBase_2.h>
+#include <CVT_2/Concepts/BvdTraits_2.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/mark_domain_2.h>
@@ -53,6 +55,18 @@ inline void prefetch(const void* p) {
 /// \tparam Traits a model of `BvdTraits_2`; by default `Bvd_traits_2` of the CDT's kernel.
 template <class CDT, class Traits = Bvd_traits_2<typename CDT::Geom_traits>>
 class Bounded_voronoi_diagram_2 {
+  static_assert(is_bvd_face_base_2<typename CDT::Face>::value,
+                "CDT::Face must model BvdFaceBase_2: bool is_inside_domain() const, "
+                "void set_inside_domain(bool), bool is_blinded() const, "
+                "Edge blinding_edge() const, void set_blinding_edge(const Edge&), "
+                "void clear_blinding()");
+  static_assert(is_bvd_traits_2<Traits>::value,
+                "Traits must model BvdTraits_2: FT, Point_2, "
+                "bool is_blinded_2_object()(p, q, r, a, b), "
+                "Comparison_result compare_blinding_distance_2_object()(p, q, r, a1, b1, a2, b2), "
+                "Point_2 construct_clip_point_2_object()(v, w, a, b), "
+                "Point_2 construct_circumcenter_2_object()(p, q, r)");
+
  public:
   using Triangulation = CDT;
   using Geom_traits = Traits;

@@ -11,7 +11,35 @@
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <type_traits>
+
 namespace CVT_2 {
+namespace internal {
+
+// For double: the exponent e of the largest magnitude, so that dividing by 2^e brings all the
+// values near 1 exactly. Other number types do not overflow this way: e = 0.
+template <class FT>
+int scale_exponent(std::initializer_list<FT> values) {
+  int e = 0;
+  if constexpr (std::is_same_v<FT, double>) {
+    double m = 0;
+    for (const double x : values) m = std::max(m, std::abs(x));
+    if (m > 0 && std::isfinite(m)) std::frexp(m, &e);
+  }
+  return e;
+}
+template <class FT>
+FT scaled(const FT& x, int e) {  // x 2^e
+  if constexpr (std::is_same_v<FT, double>)
+    return std::ldexp(x, e);
+  else
+    return x;
+}
+
+}  // namespace internal
 
 /// \ingroup PkgCvt2Ref
 /// Geometric traits of the bounded Voronoi diagram: the kernel `K` plus
@@ -22,6 +50,7 @@ namespace CVT_2 {
 ///   which of two segments that blind pqr is met first on that way (`SMALLER`: a1b1).
 /// - `Construct_clip_point_2`: `Point_2 operator()(v, w, a, b)`: the point of the line ab at
 ///   equal distance from v and w, that is where the Voronoi edge dual to vw meets ab.
+/// - `Construct_circumcenter_2`: the kernel's, made safe from overflow and underflow.
 ///
 /// Both predicates are exact: interval arithmetic first, then a ring number type (GMP) when the
 /// intervals cannot decide. The circumcenter is never constructed in floating point.
@@ -48,21 +77,43 @@ struct Bvd_traits_2 : K {
       CGAL::Filtered_predicate<internal::Compare_blinding_distance_2<Exact_kernel>,
                                internal::Compare_blinding_distance_2<Interval_kernel>, C2E, C2A>;
 
-  struct Construct_clip_point_2 {
-    // Relative to v, so that coordinates far from the origin do not cancel:
-    // y = a + t (b - a) with 2 (y - v).(w - v) = |w - v|².
-    Point_2 operator()(const Point_2& v, const Point_2& w, const Point_2& a,
-                       const Point_2& b) const {
-      const FT wx = w.x() - v.x(), wy = w.y() - v.y();
-      const FT ax = a.x() - v.x(), ay = a.y() - v.y();
-      const FT dx = b.x() - a.x(), dy = b.y() - a.y();
-      const FT denom = FT(2) * (dx * wx + dy * wy);
-      if (denom == FT(0)) return CGAL::midpoint(a, b);  // bisector parallel to ab: never asked
-      const FT t = (wx * wx + wy * wy - FT(2) * (ax * wx + ay * wy)) / denom;
-      return Point_2(a.x() + t * dx, a.y() + t * dy);
+  /// The circumcenter of pqr, as CGAL computes it (relative to p), on differences rescaled by
+  /// a power of two: exact, so the result is CGAL's to the bit whenever CGAL's does not
+  /// overflow or underflow, and still right where it would (feature sizes from 1e-300 to 1e300).
+  struct Construct_circumcenter_2 {
+    Point_2 operator()(const Point_2& p, const Point_2& q, const Point_2& r) const {
+      FT qx = q.x() - p.x(), qy = q.y() - p.y(), rx = r.x() - p.x(), ry = r.y() - p.y();
+      const int e = internal::scale_exponent<FT>({qx, qy, rx, ry});
+      qx = internal::scaled(qx, -e), qy = internal::scaled(qy, -e);
+      rx = internal::scaled(rx, -e), ry = internal::scaled(ry, -e);
+      const FT r2 = rx * rx + ry * ry, q2 = qx * qx + qy * qy;
+      const FT den = FT(2) * (qx * ry - qy * rx);
+      const FT cx = (ry * q2 - qy * r2) / den, cy = -(rx * q2 - qx * r2) / den;
+      return Point_2(p.x() + internal::scaled(cx, e), p.y() + internal::scaled(cy, e));
     }
   };
 
+  /// The point of the line ab at equal distance from v and w: where the Voronoi edge dual to vw
+  /// meets ab. Relative to v and rescaled like the circumcenter:
+  /// y = a + t (b - a) with 2 (y - v).(w - v) = |w - v|².
+  struct Construct_clip_point_2 {
+    Point_2 operator()(const Point_2& v, const Point_2& w, const Point_2& a,
+                       const Point_2& b) const {
+      FT wx = w.x() - v.x(), wy = w.y() - v.y(), ax = a.x() - v.x(), ay = a.y() - v.y();
+      FT dx = b.x() - a.x(), dy = b.y() - a.y();
+      const int e = internal::scale_exponent<FT>({wx, wy, ax, ay, dx, dy});
+      wx = internal::scaled(wx, -e), wy = internal::scaled(wy, -e), ax = internal::scaled(ax, -e);
+      ay = internal::scaled(ay, -e), dx = internal::scaled(dx, -e), dy = internal::scaled(dy, -e);
+      const FT denom = FT(2) * (dx * wx + dy * wy);
+      if (denom == FT(0)) return CGAL::midpoint(a, b);  // bisector parallel to ab: never asked
+      const FT t = (wx * wx + wy * wy - FT(2) * (ax * wx + ay * wy)) / denom;
+      return Point_2(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()));
+    }
+  };
+
+  Construct_circumcenter_2 construct_circumcenter_2_object() const {
+    return Construct_circumcenter_2();
+  }
   Is_blinded_2 is_blinded_2_object() const { return Is_blinded_2(); }
   Compare_blinding_distance_2 compare_blinding_distance_2_object() const {
     return Compare_blinding_distance_2();

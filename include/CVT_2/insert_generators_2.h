@@ -59,14 +59,17 @@ bool is_in_domain_2(const CDT& cdt, const typename CDT::Point_2& p) {
 /// same hole seeds. A point on a constraint is kept and becomes a constrained vertex, as in
 /// Triangle; a point already present is merged.
 /// \throws Domain_error (with `index()` the position in `points`) for a NaN or infinite
-///         coordinate or a point outside the closed domain; nothing is inserted then.
+///         coordinate, one beyond 1e300 in magnitude, or a point outside the closed domain;
+///         nothing is inserted then.
 template <class CDT, class PointRange, class SeedRange>
 void insert_generators_2(CDT& cdt, const PointRange& points, const SeedRange& hole_seeds) {
   using Point_2 = typename CDT::Point_2;
   const std::vector<Point_2> pts(std::begin(points), std::end(points));
   for (std::size_t i = 0; i < pts.size(); ++i)
-    if (!internal::is_finite_point(pts[i]))
-      throw Domain_error("generator " + internal::to_string(pts[i]) + " is not finite", i);
+    if (!internal::is_valid_point(pts[i]))
+      throw Domain_error("generator " + internal::to_string(pts[i]) +
+                             " is not finite or exceeds 1e300 in magnitude",
+                         i);
   // Locate in spatial order, each from the previous: a walk of a few faces per point.
   std::vector<std::size_t> order(pts.size());
   std::iota(order.begin(), order.end(), std::size_t(0));

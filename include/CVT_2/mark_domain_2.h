@@ -22,9 +22,15 @@ std::string to_string(const Point_2& p) {
   return os.str();
 }
 
+// Coordinates beyond this magnitude make differences overflow in double.
+constexpr double max_coordinate = 1e300;
+
+// Whether both coordinates are finite and at most max_coordinate in magnitude.
 template <class Point_2>
-bool is_finite_point(const Point_2& p) {
-  return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y()));
+bool is_valid_point(const Point_2& p) {
+  const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
+  return std::isfinite(x) && std::isfinite(y) && std::abs(x) <= max_coordinate &&
+         std::abs(y) <= max_coordinate;
 }
 
 // Clears the domain flag of every face reachable from the seeds without crossing a constraint.
@@ -103,8 +109,9 @@ void mark_domain_2(const CDT& cdt, const PointRange& hole_seeds) {
   internal::flood_outside(cdt, stack);
   Face_handle hint;
   for (const auto& p : hole_seeds) {
-    if (!internal::is_finite_point(p))
-      throw Domain_error("hole point " + internal::to_string(p) + " is not finite");
+    if (!internal::is_valid_point(p))
+      throw Domain_error("hole point " + internal::to_string(p) +
+                         " is not finite or exceeds 1e300 in magnitude");
     typename CDT::Locate_type lt;
     int li;
     const Face_handle f = cdt.locate(p, lt, li, hint);

@@ -140,6 +140,11 @@ void insert_poly(CDT& cdt, const Poly_data<typename CDT::Point_2>& data) {
   const auto where = [&data](std::size_t line) {
     return data.source + ":" + std::to_string(line) + ": ";
   };
+  for (std::size_t i = 0; i < data.vertices.size(); ++i)
+    if (!internal::is_valid_point(data.vertices[i]))
+      throw Domain_error(where(data.vertex_lines[i]) + "vertex " +
+                         internal::to_string(data.vertices[i]) +
+                         " is not finite or exceeds 1e300 in magnitude");
   std::vector<typename CDT::Vertex_handle> vertices;
   vertices.reserve(data.vertices.size());
   typename CDT::Face_handle hint;

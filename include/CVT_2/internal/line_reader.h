@@ -5,6 +5,7 @@
 
 #include <CVT_2/exceptions.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -63,8 +64,12 @@ class Line_reader {
     return static_cast<std::size_t>(n);
   }
 
+  // The token is quoted in the message: printable characters only, and not too many.
   [[noreturn]] void fail(const std::string& what, const std::string& token = {}) const {
-    throw IO::Parse_error(m_source, m_line, what, token);
+    std::string shown;
+    for (const char c : token.substr(0, 40)) shown += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+    if (token.size() > 40) shown += "...";
+    throw IO::Parse_error(m_source, m_line, what, shown);
   }
   std::size_t line() const { return m_line; }
   const std::string& source() const { return m_source; }

@@ -1,0 +1,14 @@
+#!/bin/sh
+# Installs the Debian packages the project needs, if any is missing (apt-get; sudo when not root).
+set -e
+packages="libcgal-dev libboost-dev libgmp-dev libmpfr-dev catch2 cmake g++ make ccache $*"
+missing=""
+for p in $packages; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+[ -z "$missing" ] && exit 0
+echo "installing:$missing"
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq $missing > /dev/null

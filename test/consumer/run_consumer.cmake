@@ -1,0 +1,38 @@
+# Installs the CVT_2 build tree into a fresh prefix, then configures, builds and runs the
+# consumer project against it. Run by the CTest test consumer_find_package:
+#   cmake -DCVT_2_BINARY_DIR=... -DCONSUMER_SOURCE_DIR=... -DCONSUMER_BINARY_DIR=...
+#         -DCONSUMER_PREFIX=... [-DGENERATOR=...] [-DCXX_COMPILER=...] [-DCGAL_DIR=...]
+#         -P run_consumer.cmake
+foreach(var CVT_2_BINARY_DIR CONSUMER_SOURCE_DIR CONSUMER_BINARY_DIR CONSUMER_PREFIX)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "run_consumer.cmake: ${var} is not set")
+  endif()
+endforeach()
+
+function(run_step what)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "consumer: ${what} failed (${rc})")
+  endif()
+endfunction()
+
+# A fresh prefix and build each time, so that nothing left from an earlier run is found.
+file(REMOVE_RECURSE ${CONSUMER_PREFIX} ${CONSUMER_BINARY_DIR})
+
+run_step("install into ${CONSUMER_PREFIX}"
+  ${CMAKE_COMMAND} --install ${CVT_2_BINARY_DIR} --prefix ${CONSUMER_PREFIX})
+
+set(configure_args -S ${CONSUMER_SOURCE_DIR} -B ${CONSUMER_BINARY_DIR}
+                   -DCMAKE_PREFIX_PATH=${CONSUMER_PREFIX} -DCMAKE_BUILD_TYPE=Release)
+if(GENERATOR)
+  list(APPEND configure_args -G ${GENERATOR})
+endif()
+if(CXX_COMPILER)
+  list(APPEND configure_args -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
+endif()
+if(CGAL_DIR)
+  list(APPEND configure_args -DCGAL_DIR=${CGAL_DIR})
+endif()
+run_step("configure" ${CMAKE_COMMAND} ${configure_args})
+run_step("build" ${CMAKE_COMMAND} --build ${CONSUMER_BINARY_DIR})
+run_step("run" ${CONSUMER_BINARY_DIR}/cvt_2_consumer)
