@@ -36,6 +36,7 @@ class BvdFaceBase_2 {
 
   /// \name Domain
   /// @{
+
   /// whether the face belongs to the domain.
   bool is_inside_domain() const;
   /// sets whether the face belongs to the domain.
@@ -44,6 +45,7 @@ class BvdFaceBase_2 {
 
   /// \name Blindness
   /// @{
+
   /// whether a constrained edge hides the face's circumcenter from it.
   bool is_blinded() const;
   /// the first constrained edge met on the way from the face's centroid to its circumcenter.

@@ -15,7 +15,7 @@
 /// \ingroup PkgCvt2Concepts
 /// The geometric traits of `CVT_2::Bounded_voronoi_diagram_2`: the point and number types, the
 /// blindness predicates of Algorithm 1 and the two constructions of Algorithm 2. This is all the
-/// diagram calls; each functor is fetched once, before the loop that uses it.
+/// diagram calls.
 ///
 /// The two predicates decide the topology of the diagram, so a model should evaluate them
 /// exactly (`CVT_2::Bvd_traits_2` filters them: interval arithmetic, then an exact ring type).
@@ -72,10 +72,16 @@ class BvdTraits_2 {
   };
 
   /// \name Operations
+  /// The diagram fetches each functor once, before the loop that uses it.
   /// @{
+
+  /// the blindness predicate.
   Is_blinded_2 is_blinded_2_object() const;
+  /// the comparison of blinding constraints.
   Compare_blinding_distance_2 compare_blinding_distance_2_object() const;
+  /// the clip point construction.
   Construct_clip_point_2 construct_clip_point_2_object() const;
+  /// the circumcenter construction.
   Construct_circumcenter_2 construct_circumcenter_2_object() const;
   /// @}
 };
