@@ -68,24 +68,25 @@ class Bounded_voronoi_diagram_2 {
                 "Point_2 construct_circumcenter_2_object()(p, q, r)");
 
  public:
-  using Triangulation = CDT;
-  using Geom_traits = Traits;
-  using FT = typename Traits::FT;
-  using Point_2 = typename Traits::Point_2;
-  using Polygon_2 = CGAL::Polygon_2<typename CDT::Geom_traits>;
-  using Vertex_handle = typename CDT::Vertex_handle;
-  using Face_handle = typename CDT::Face_handle;
-  using Edge = typename CDT::Edge;
+  using Triangulation = CDT;                                   ///< the triangulation type
+  using Geom_traits = Traits;                                  ///< the traits type
+  using FT = typename Traits::FT;                              ///< the number type
+  using Point_2 = typename Traits::Point_2;                     ///< the point type
+  using Polygon_2 = CGAL::Polygon_2<typename CDT::Geom_traits>;  ///< a cell as a polygon
+  using Vertex_handle = typename CDT::Vertex_handle;           ///< a generator
+  using Face_handle = typename CDT::Face_handle;               ///< a face of the triangulation
+  using Edge = typename CDT::Edge;                             ///< an edge of the triangulation
 
   /// A vertex of a cell.
   struct Cell_vertex {
+    /// What a cell vertex is.
     enum Type {
       CIRCUMCENTER,  ///< the circumcenter of `face`, which sees it
       CLIP_POINT,    ///< where the bisector of the generator and `neighbor` meets `constraint`
       GENERATOR      ///< the generator itself, on the boundary of its cell (constrained vertex)
     };
-    Point_2 point;
-    Type type;
+    Point_2 point;           ///< where it is
+    Type type;               ///< what it is
     Face_handle face;        ///< for `CIRCUMCENTER`
     Edge constraint;         ///< for `CLIP_POINT`: the constrained edge the point lies on
     Vertex_handle neighbor;  ///< for `CLIP_POINT`: the other generator of the bisector
@@ -95,13 +96,18 @@ class Bounded_voronoi_diagram_2 {
   /// cell it was made from, so copies are cheap and stay valid on their own.
   class Cell_vertex_circulator {
    public:
+    /// \name Circulator types
+    /// @{
     using iterator_category = CGAL::Bidirectional_circulator_tag;
     using value_type = Cell_vertex;
     using difference_type = std::ptrdiff_t;
     using size_type = std::size_t;
     using reference = const Cell_vertex&;
     using pointer = const Cell_vertex*;
+    /// @}
 
+    /// \name Circulator operations
+    /// @{
     Cell_vertex_circulator() = default;
     reference operator*() const { return (*m_cell)[m_index]; }
     pointer operator->() const { return &(*m_cell)[m_index]; }
@@ -129,7 +135,8 @@ class Bounded_voronoi_diagram_2 {
     bool operator!=(const Cell_vertex_circulator& c) const { return !(*this == c); }
     bool operator==(std::nullptr_t) const { return m_cell == nullptr; }  // empty cell
     bool operator!=(std::nullptr_t) const { return m_cell != nullptr; }
-    size_type size() const { return m_cell ? m_cell->size() : 0; }
+    size_type size() const { return m_cell ? m_cell->size() : 0; }  ///< the cell's vertex count
+    /// @}
 
    private:
     friend class Bounded_voronoi_diagram_2;
@@ -148,8 +155,9 @@ class Bounded_voronoi_diagram_2 {
   /// Tags the blind faces again, after the triangulation or its domain changed.
   void update() { m_number_of_blinded_faces = internal::tag_blind_faces(m_cdt, m_traits); }
 
-  const CDT& triangulation() const { return m_cdt; }
-  const Traits& geom_traits() const { return m_traits; }
+  const CDT& triangulation() const { return m_cdt; }         ///< the triangulation
+  const Traits& geom_traits() const { return m_traits; }     ///< the traits
+  /// the number of domain faces that a constraint hides from their circumcenter
   std::size_t number_of_blinded_faces() const { return m_number_of_blinded_faces; }
 
   /// whether `v` lies in the closed domain, and so has a cell.

@@ -30,25 +30,30 @@ namespace CVT_2 {
 template <class Gt, class Fb = CGAL::Constrained_triangulation_face_base_2<Gt>>
 class Bvd_face_base_2 : public Fb {
  public:
-  using Geom_traits = Gt;
-  using Vertex_handle = typename Fb::Vertex_handle;
-  using Face_handle = typename Fb::Face_handle;
-  using Edge = std::pair<Face_handle, int>;
+  using Geom_traits = Gt;                             ///< the geometric traits
+  using Vertex_handle = typename Fb::Vertex_handle;  ///< a vertex of the TDS
+  using Face_handle = typename Fb::Face_handle;      ///< a face of the TDS
+  using Edge = std::pair<Face_handle, int>;          ///< an edge, as a face and an index
 
+  /// Rebinds the layer to the TDS that stores it.
   template <class Tds2>
   struct Rebind_TDS {  // the TDS plugs itself in, like allocator rebind
     using Other = Bvd_face_base_2<Gt, typename Fb::template Rebind_TDS<Tds2>::Other>;
   };
 
+  /// \name Creation
+  /// The three constructors of a TDS face, passed to the layer below.
+  /// @{
   Bvd_face_base_2() : Fb() {}
   Bvd_face_base_2(Vertex_handle v0, Vertex_handle v1, Vertex_handle v2) : Fb(v0, v1, v2) {}
   Bvd_face_base_2(Vertex_handle v0, Vertex_handle v1, Vertex_handle v2, Face_handle n0,
                   Face_handle n1, Face_handle n2)
       : Fb(v0, v1, v2, n0, n1, n2) {}
+  /// @}
 
   /// whether the face belongs to the domain (set by `mark_domain_2()`).
   bool is_inside_domain() const { return m_inside_domain; }
-  void set_inside_domain(bool b) { m_inside_domain = b; }
+  void set_inside_domain(bool b) { m_inside_domain = b; }  ///< sets the domain flag
 
   /// whether a constraint hides the circumcenter from the face (set by the BVD, Algorithm 1).
   bool is_blinded() const { return m_blinding_index >= 0; }
@@ -58,11 +63,12 @@ class Bvd_face_base_2 : public Fb {
     CGAL_precondition(is_blinded());
     return {m_blinding_face, m_blinding_index};
   }
+  /// tags the face as blinded by the constrained edge `e`.
   void set_blinding_edge(const Edge& e) {
     m_blinding_face = e.first;
     m_blinding_index = static_cast<signed char>(e.second);
   }
-  void clear_blinding() { m_blinding_index = -1; }
+  void clear_blinding() { m_blinding_index = -1; }  ///< tags the face as seeing its circumcenter
 
  private:
   // The two bytes come first so that they can fill the tail padding of the layer below (after

@@ -58,9 +58,9 @@ FT scaled(const FT& x, int e) {  // x 2^e
 /// \cgalModels `BvdTraits_2`
 template <class K>
 struct Bvd_traits_2 : K {
-  using Kernel = K;
-  using FT = typename K::FT;
-  using Point_2 = typename K::Point_2;
+  using Kernel = K;                     ///< the kernel
+  using FT = typename K::FT;            ///< the number type
+  using Point_2 = typename K::Point_2;  ///< the point type
 
  private:
   using Interval_kernel = CGAL::Simple_cartesian<CGAL::Interval_nt_advanced>;
@@ -70,9 +70,11 @@ struct Bvd_traits_2 : K {
   using C2A = CGAL::Cartesian_converter<K, Interval_kernel>;
 
  public:
+  /// The predicate \f$\mathcal{P}\f$, filtered.
   using Is_blinded_2 =
       CGAL::Filtered_predicate<internal::Is_blinded_2<Exact_kernel>,
                                internal::Is_blinded_2<Interval_kernel>, C2E, C2A>;
+  /// Which of two blinding segments comes first, filtered.
   using Compare_blinding_distance_2 =
       CGAL::Filtered_predicate<internal::Compare_blinding_distance_2<Exact_kernel>,
                                internal::Compare_blinding_distance_2<Interval_kernel>, C2E, C2A>;
@@ -81,6 +83,7 @@ struct Bvd_traits_2 : K {
   /// a power of two: exact, so the result is CGAL's to the bit whenever CGAL's does not
   /// overflow or underflow, and still right where it would (feature sizes from 1e-300 to 1e300).
   struct Construct_circumcenter_2 {
+    /// \pre p, q, r are not collinear.
     Point_2 operator()(const Point_2& p, const Point_2& q, const Point_2& r) const {
       FT qx = q.x() - p.x(), qy = q.y() - p.y(), rx = r.x() - p.x(), ry = r.y() - p.y();
       const int e = internal::scale_exponent<FT>({qx, qy, rx, ry});
@@ -97,6 +100,7 @@ struct Bvd_traits_2 : K {
   /// meets ab. Relative to v and rescaled like the circumcenter:
   /// y = a + t (b - a) with 2 (y - v).(w - v) = |w - v|².
   struct Construct_clip_point_2 {
+    /// \pre the bisector of v and w is not parallel to ab.
     Point_2 operator()(const Point_2& v, const Point_2& w, const Point_2& a,
                        const Point_2& b) const {
       FT wx = w.x() - v.x(), wy = w.y() - v.y(), ax = a.x() - v.x(), ay = a.y() - v.y();
@@ -111,6 +115,8 @@ struct Bvd_traits_2 : K {
     }
   };
 
+  /// \name Functor accessors
+  /// @{
   Construct_circumcenter_2 construct_circumcenter_2_object() const {
     return Construct_circumcenter_2();
   }
@@ -120,8 +126,10 @@ struct Bvd_traits_2 : K {
   }
   Construct_clip_point_2 construct_clip_point_2_object() const { return Construct_clip_point_2(); }
 
-  Bvd_traits_2() = default;
-  explicit Bvd_traits_2(const K& k) : K(k) {}
+  /// @}
+
+  Bvd_traits_2() = default;                    ///< default traits
+  explicit Bvd_traits_2(const K& k) : K(k) {}  ///< traits over the kernel object `k`
 };
 
 }  // namespace CVT_2

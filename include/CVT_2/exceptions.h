@@ -17,10 +17,12 @@ namespace CVT_2 {
 /// (or `no_index`), so that a reader can turn it into a file line.
 class Domain_error : public std::invalid_argument {
  public:
+  /// `index()` when the error concerns no single input item
   static constexpr std::size_t no_index = std::numeric_limits<std::size_t>::max();
+  /// an error described by `what`, about the input item at `index`
   explicit Domain_error(const std::string& what, std::size_t index = no_index)
       : std::invalid_argument(what), m_index(index) {}
-  std::size_t index() const { return m_index; }
+  std::size_t index() const { return m_index; }  ///< the offending item, or `no_index`
 
  private:
   std::size_t m_index;
@@ -32,6 +34,7 @@ namespace IO {
 /// Thrown by the readers on malformed input; the message reads `file:line: what (near 'token')`.
 class Parse_error : public std::invalid_argument {
  public:
+  /// an error described by `what` at `line` of `file`, near `token`
   Parse_error(const std::string& file, std::size_t line, const std::string& what,
               const std::string& token = {})
       : std::invalid_argument(file + ":" + std::to_string(line) + ": " + what +
@@ -39,9 +42,9 @@ class Parse_error : public std::invalid_argument {
         m_file(file),
         m_line(line),
         m_token(token) {}
-  const std::string& file() const { return m_file; }
-  std::size_t line() const { return m_line; }
-  const std::string& token() const { return m_token; }
+  const std::string& file() const { return m_file; }    ///< the file
+  std::size_t line() const { return m_line; }            ///< the line, from 1 (0: none)
+  const std::string& token() const { return m_token; }  ///< the token, printable, shortened
 
  private:
   std::string m_file;

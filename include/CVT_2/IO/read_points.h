@@ -18,9 +18,9 @@ namespace IO {
 /// Points read from a text file, each with its line.
 template <class Point_2>
 struct Point_data {
-  std::string source;
-  std::vector<Point_2> points;
-  std::vector<std::size_t> lines;
+  std::string source;               ///< file name, for messages
+  std::vector<Point_2> points;      ///< in file order
+  std::vector<std::size_t> lines;   ///< the line of each point
 };
 
 /// \ingroup PkgCvt2IO

@@ -23,11 +23,11 @@ template <class Point_2>
 struct Poly_data {
   std::string source;                                  ///< file name, for messages
   std::vector<Point_2> vertices;                       ///< in file order
-  std::vector<std::size_t> vertex_lines;
+  std::vector<std::size_t> vertex_lines;               ///< the line of each vertex
   std::vector<std::array<std::size_t, 2>> segments;    ///< 0-based indices into `vertices`
-  std::vector<std::size_t> segment_lines;
+  std::vector<std::size_t> segment_lines;              ///< the line of each segment
   std::vector<Point_2> holes;                          ///< one seed point inside each hole
-  std::vector<std::size_t> hole_lines;
+  std::vector<std::size_t> hole_lines;                 ///< the line of each hole point
 };
 
 /// \ingroup PkgCvt2IO
