@@ -98,12 +98,12 @@ class Bounded_voronoi_diagram_2 {
    public:
     /// \name Circulator types
     /// @{
-    using iterator_category = CGAL::Bidirectional_circulator_tag;
-    using value_type = Cell_vertex;
-    using difference_type = std::ptrdiff_t;
-    using size_type = std::size_t;
-    using reference = const Cell_vertex&;
-    using pointer = const Cell_vertex*;
+    using iterator_category = CGAL::Bidirectional_circulator_tag;  ///< a CGAL circulator
+    using value_type = Cell_vertex;                                ///< what it points to
+    using difference_type = std::ptrdiff_t;                        ///< a difference
+    using size_type = std::size_t;                                 ///< a count
+    using reference = const Cell_vertex&;                          ///< a cell vertex
+    using pointer = const Cell_vertex*;                            ///< to a cell vertex
     /// @}
 
     /// \name Circulator operations

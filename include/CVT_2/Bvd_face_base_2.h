@@ -38,14 +38,16 @@ class Bvd_face_base_2 : public Fb {
   /// Rebinds the layer to the TDS that stores it.
   template <class Tds2>
   struct Rebind_TDS {  // the TDS plugs itself in, like allocator rebind
-    using Other = Bvd_face_base_2<Gt, typename Fb::template Rebind_TDS<Tds2>::Other>;
+    using Other = Bvd_face_base_2<Gt, typename Fb::template Rebind_TDS<Tds2>::Other>;  ///< rebound
   };
 
   /// \name Creation
   /// The three constructors of a TDS face, passed to the layer below.
   /// @{
-  Bvd_face_base_2() : Fb() {}
+  Bvd_face_base_2() : Fb() {}  ///< a face with no vertex
+  /// a face with vertices `v0`, `v1`, `v2`, counterclockwise
   Bvd_face_base_2(Vertex_handle v0, Vertex_handle v1, Vertex_handle v2) : Fb(v0, v1, v2) {}
+  /// a face with vertices and neighbors (`ni` opposite `vi`)
   Bvd_face_base_2(Vertex_handle v0, Vertex_handle v1, Vertex_handle v2, Face_handle n0,
                   Face_handle n1, Face_handle n2)
       : Fb(v0, v1, v2, n0, n1, n2) {}

@@ -117,13 +117,16 @@ struct Bvd_traits_2 : K {
 
   /// \name Functor accessors
   /// @{
+  /// the circumcenter functor
   Construct_circumcenter_2 construct_circumcenter_2_object() const {
     return Construct_circumcenter_2();
   }
-  Is_blinded_2 is_blinded_2_object() const { return Is_blinded_2(); }
+  Is_blinded_2 is_blinded_2_object() const { return Is_blinded_2(); }  ///< the predicate
+  /// the comparison of blinding segments
   Compare_blinding_distance_2 compare_blinding_distance_2_object() const {
     return Compare_blinding_distance_2();
   }
+  /// the clip point functor
   Construct_clip_point_2 construct_clip_point_2_object() const { return Construct_clip_point_2(); }
 
   /// @}
