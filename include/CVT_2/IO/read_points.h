@@ -43,8 +43,7 @@ Point_data<Point_2> read_points(std::istream& is, const std::string& source = "<
 /// Reads the points of file `filename`. \throws Parse_error, also when it cannot be opened.
 template <class Point_2>
 Point_data<Point_2> read_points(const std::string& filename) {
-  std::ifstream is(filename);
-  if (!is) throw Parse_error(filename, 0, "cannot open the file");
+  std::ifstream is = internal::open_input(filename);
   return read_points<Point_2>(is, filename);
 }
 

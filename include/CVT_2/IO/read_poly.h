@@ -9,7 +9,6 @@
 
 #include <array>
 #include <cstddef>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -123,8 +122,7 @@ Poly_data<Point_2> read_poly(std::istream& is, const std::string& source = "<pol
 /// Reads the `.poly` file `filename`. \throws Parse_error, also when it cannot be opened.
 template <class Point_2>
 Poly_data<Point_2> read_poly(const std::string& filename) {
-  std::ifstream is(filename);
-  if (!is) throw Parse_error(filename, 0, "cannot open the file");
+  std::ifstream is = internal::open_input(filename);
   return read_poly<Point_2>(is, filename);
 }
 

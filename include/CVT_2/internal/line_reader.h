@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <istream>
 #include <sstream>
 #include <string>
@@ -16,6 +17,13 @@
 
 namespace CVT_2 {
 namespace internal {
+
+// The file opened for reading, or a Parse_error that says it could not be.
+inline std::ifstream open_input(const std::string& filename) {
+  std::ifstream is(filename);
+  if (!is) throw IO::Parse_error(filename, 0, "cannot open the file");
+  return is;
+}
 
 class Line_reader {
  public:
