@@ -1,5 +1,6 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // Properties of the bounded Voronoi diagram: partition, convexity, nearest visible generator.
+#include "support/random_domain.h"
 #include "support/support.h"
 
 #include <CGAL/Delaunay_mesh_face_base_2.h>
@@ -7,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <map>
 
 using namespace support;
@@ -413,4 +415,22 @@ TEST_CASE("extreme scales: a power-of-two scaling scales every cell exactly", "[
   }
   CHECK(cells > 300);
   CHECK(differ == 0);
+}
+
+TEST_CASE("random domains on a grid: holes, touching polylines, points on constraints",
+          "[bvd][random]") {
+  // Each case a new domain; the properties of check_diagram hold on all of them. 400 cases
+  // here; CVT_2_RANDOM_CASES=N runs N (thousands for a nightly run).
+  const char* env = std::getenv("CVT_2_RANDOM_CASES");
+  const unsigned cases = env ? static_cast<unsigned>(std::strtoul(env, nullptr, 10)) : 400u;
+  for (unsigned seed = 1; seed <= cases; ++seed) {
+    CAPTURE(seed);
+    std::vector<Point> generators;
+    const auto poly = random_domain(seed, generators, 120);
+    Cdt cdt;
+    CVT_2::IO::insert_poly(cdt, poly);
+    CVT_2::insert_generators_2(cdt, generators, poly.holes);
+    const Bvd bvd(cdt);
+    check_diagram(bvd, 300, seed);
+  }
 }
