@@ -58,15 +58,19 @@ inline CVT_2::IO::Poly_data<Point> random_domain(unsigned seed, std::vector<Poin
   for (std::size_t i = 0; i < ring.size(); ++i) add_segment(ring[i], ring[(i + 1) % ring.size()]);
   // Rectangular holes, each with its seed at its center.
   const int holes = static_cast<int>(rng() % 4);
+  std::vector<CGAL::Bbox_2> boxes;
   for (int h = 0; h < holes; ++h) {
     const double x = grid(4, 64), y = grid(4, 24), w = grid(2, 10), t = grid(2, 10);
     const Point c[4] = {Point(x, y), Point(x, y + t), Point(x + w, y + t), Point(x + w, y)};
+    const CGAL::Bbox_2 box(x, y, x + w, y + t);
     bool ok = true;
+    for (const auto& b : boxes) ok = ok && !CGAL::do_overlap(b, box);  // nor in another hole
     for (int i = 0; i < 4 && ok; ++i) ok = !crosses(Segment(c[i], c[(i + 1) % 4]));
     for (const Point& p : poly.vertices)  // nothing inside the hole
       ok = ok && !(p.x() > x && p.x() < x + w && p.y() > y && p.y() < y + t);
     if (!ok) continue;
     for (int i = 0; i < 4; ++i) add_segment(c[i], c[(i + 1) % 4]);
+    boxes.push_back(box);
     poly.holes.emplace_back(x + w / 2, y + t / 2);
     poly.hole_lines.push_back(0);
   }
