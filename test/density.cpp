@@ -1,3 +1,365 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// placeholder
+// Properties of the density and sizing policies: values, validation, brute-force oracles.
+#include <CVT_2/Boundary_lipschitz_sizing_2.h>
+#include <CVT_2/Concepts/DensityFunction_2.h>
+#include <CVT_2/Concepts/SizingField_2.h>
+#include <CVT_2/Sizing_field_density_2.h>
+#include <CVT_2/Uniform_density_2.h>
+
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "support/support.h"
+
+using namespace support;
+
+namespace {
+
+using Uniform = CVT_2::Uniform_density_2<K>;
+using Sizing = CVT_2::Boundary_lipschitz_sizing_2<K>;
+const double not_a_number = std::numeric_limits<double>::quiet_NaN();
+const double infinity = std::numeric_limits<double>::infinity();
+
+// The boundary as the test sees it: every constrained edge with a domain face on a side.
+std::vector<Segment> boundary_segments(const Cdt& cdt) {
+  std::vector<Segment> s;
+  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
+    const Cdt::Face_handle f = e->first, g = f->neighbor(e->second);
+    if (cdt.is_constrained(*e) && ((!cdt.is_infinite(f) && f->is_inside_domain()) ||
+                                   (!cdt.is_infinite(g) && g->is_inside_domain())))
+      s.push_back(cdt.segment(*e));
+  }
+  return s;
+}
+
+// The formula, over every segment.
+double brute_force(const std::vector<Segment>& segments, double k, std::optional<double> size,
+                   const Point& x) {
+  double best = infinity;
+  for (const Segment& s : segments)
+    best = std::min(best, k * std::sqrt(CGAL::squared_distance(x, s)) +
+                              (size ? *size : std::sqrt(s.squared_length())));
+  return best;
+}
+
+// Points in the domain, and as many in its bounding box enlarged by half (outside too).
+std::vector<Point> sample_points(const Cdt& cdt, std::size_t n, unsigned seed) {
+  std::vector<Point> pts = random_points_in_domain(cdt, n, seed);
+  const CGAL::Bbox_2 b = domain_bbox(cdt);
+  const double w = b.xmax() - b.xmin(), h = b.ymax() - b.ymin();
+  std::mt19937_64 rng(seed + 1);
+  std::uniform_real_distribution<double> ux(b.xmin() - w / 4, b.xmax() + w / 4),
+      uy(b.ymin() - h / 4, b.ymax() + h / 4);
+  for (std::size_t i = 0; i < n; ++i) pts.emplace_back(ux(rng), uy(rng));
+  return pts;
+}
+
+double diagonal(const Cdt& cdt) {
+  const CGAL::Bbox_2 b = domain_bbox(cdt);
+  return std::hypot(b.xmax() - b.xmin(), b.ymax() - b.ymin());
+}
+
+template <class F>
+std::string message_of(F f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "no exception";
+}
+
+}  // namespace
+
+TEST_CASE("a uniform density is its value everywhere; a value not positive and finite throws",
+          "[density]") {
+  const Point p(3, -7), q(1e6, 2e-6);
+  CHECK(Uniform()(p) == 1);
+  CHECK(Uniform(2.5)(p) == 2.5);
+  CHECK(Uniform(2.5)(q) == 2.5);
+  CHECK(Uniform(2.5).value() == 2.5);
+  CHECK(Uniform(1e-300)(p) == 1e-300);
+  for (const double bad : {0.0, -1.5, not_a_number, infinity, -infinity}) {
+    CAPTURE(bad);
+    CHECK_THROWS_AS(Uniform(bad), std::invalid_argument);
+  }
+  CHECK_THAT(message_of([] { Uniform(-1.5); }), Catch::Contains("-1.5"));
+  CHECK_THAT(message_of([] { (void)Uniform(not_a_number); }), Catch::Contains("nan"));
+}
+
+TEST_CASE("the traits recognize uniform densities, density functions and sizing fields",
+          "[density]") {
+  const auto constant = [](const Point&) { return 1.0; };
+  using Lambda = decltype(constant);
+  using Density_of_lambda = CVT_2::Sizing_field_density_2<K, Lambda>;
+  STATIC_REQUIRE(CVT_2::is_uniform_density<Uniform>::value);
+  STATIC_REQUIRE(CVT_2::is_uniform_density_v<const Uniform&>);
+  STATIC_REQUIRE_FALSE(CVT_2::is_uniform_density<Lambda>::value);
+  STATIC_REQUIRE_FALSE(CVT_2::is_uniform_density<Density_of_lambda>::value);
+
+  STATIC_REQUIRE(CVT_2::is_density_function_2<Uniform, K>::value);
+  STATIC_REQUIRE(CVT_2::is_density_function_2<Density_of_lambda, K>::value);
+  STATIC_REQUIRE(CVT_2::is_density_function_2_v<Lambda, K>);
+  STATIC_REQUIRE(CVT_2::is_density_function_2<CVT_2::Sizing_field_density_2<K, Sizing>, K>::value);
+  STATIC_REQUIRE_FALSE(CVT_2::is_density_function_2<int, K>::value);
+  STATIC_REQUIRE_FALSE(CVT_2::is_density_function_2<double (*)(const std::string&), K>::value);
+
+  STATIC_REQUIRE(CVT_2::is_sizing_field_2<Sizing, K>::value);
+  STATIC_REQUIRE(CVT_2::is_sizing_field_2_v<Lambda, K>);
+  STATIC_REQUIRE_FALSE(CVT_2::is_sizing_field_2<Point, K>::value);
+}
+
+TEST_CASE("a sizing field density is 1/mu^4 of its sizing field, lambdas included", "[density]") {
+  const auto mu = [](const Point& p) { return 0.05 + std::abs(p.x()) + p.y() * p.y(); };
+  const auto rho = CVT_2::make_sizing_field_density_2<K>(mu);
+  Domain d;
+  load_domain(d, "earcut_dude.poly");
+  const Sizing boundary(d.cdt, 0.1);
+  const CVT_2::Sizing_field_density_2<K, Sizing> rho_boundary(boundary);
+  const auto copy = rho_boundary;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-3, 3);
+  std::size_t wrong = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Point p(u(rng), u(rng));
+    const double m = mu(p), b = boundary(p);
+    if (std::abs(rho(p) - 1 / (m * m * m * m)) > 1e-14 / (m * m * m * m)) ++wrong;
+    if (std::abs(rho_boundary(p) - 1 / (b * b * b * b)) > 1e-14 / (b * b * b * b)) ++wrong;
+    if (copy(p) != rho_boundary(p)) ++wrong;
+  }
+  CHECK(wrong == 0);
+  CHECK(rho(Point(0.95, 0)) == Approx(1.0).epsilon(1e-15));       // mu = 1
+  CHECK(rho(Point(1.95, 0)) == Approx(1.0 / 16).epsilon(1e-15));  // mu = 2
+}
+
+TEST_CASE("a sizing field not positive and finite throws Domain_error naming point and value",
+          "[density]") {
+  const Point p(0.25, 3.5);
+  const auto shifted = [](double v) {
+    return CVT_2::make_sizing_field_density_2<K>([v](const Point& x) { return x.x() - 0.25 + v; });
+  };
+  for (const double bad : {0.0, -0.75, not_a_number, infinity, 1e-80, 1e80}) {
+    CAPTURE(bad);
+    CHECK_THROWS_AS(shifted(bad)(p), CVT_2::Domain_error);
+    const std::string what = message_of([&] { shifted(bad)(p); });
+    CHECK_THAT(what, Catch::Contains("(0.25, 3.5)"));
+  }
+  CHECK_THAT(message_of([&] { shifted(-0.75)(p); }), Catch::Contains("-0.75"));
+  CHECK_THAT(message_of([&] { shifted(not_a_number)(p); }), Catch::Contains("nan"));
+  CHECK_NOTHROW(shifted(1e-70)(p));
+  CHECK_NOTHROW(shifted(1e70)(p));
+}
+
+TEST_CASE("the boundary sizing equals a brute-force minimum over all boundary segments",
+          "[density][sizing]") {
+  const std::string file = GENERATE(as<std::string>{}, "earcut_dude.poly",
+                                    "us_massachusetts_counties.poly", "world_land_110m.poly");
+  const double k = GENERATE(0.1, 0.5, 2.0);
+  const bool constant = GENERATE(false, true);
+  const unsigned seed = 17;
+  Domain d;
+  load_domain(d, file);
+  const std::vector<Segment> segments = boundary_segments(d.cdt);
+  const std::optional<double> size =
+      constant ? std::optional<double>(diagonal(d.cdt) / 200) : std::nullopt;
+  CAPTURE(file, k, constant, seed, segments.size());
+  const Sizing mu(d.cdt, k, size);
+  REQUIRE(mu.segments().size() == segments.size());
+  CHECK(mu.lipschitz_constant() == k);
+  std::size_t wrong = 0;
+  for (const Point& x : sample_points(d.cdt, 2000, seed)) {
+    const double expected = brute_force(segments, k, size, x), got = mu(x);
+    if (!(std::abs(got - expected) <= 1e-12 * expected)) {
+      if (++wrong <= 3) {
+        CAPTURE(x, expected, got);
+        CHECK(got == Approx(expected).epsilon(1e-12));
+      }
+    }
+  }
+  CHECK(wrong == 0);
+}
+
+TEST_CASE("the boundary sizing is k-Lipschitz", "[density][sizing]") {
+  const std::string file =
+      GENERATE(as<std::string>{}, "us_massachusetts_counties.poly", "world_land_110m.poly");
+  const double k = GENERATE(0.1, 2.0);
+  const unsigned seed = 23;
+  CAPTURE(file, k, seed);
+  Domain d;
+  load_domain(d, file);
+  const Sizing mu(d.cdt, k);
+  const std::vector<Point> a = sample_points(d.cdt, 1500, seed),
+                           b = sample_points(d.cdt, 1500, seed + 7);
+  const double h = diagonal(d.cdt) * 1e-4;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-h, h);
+  std::size_t violations = 0, compared = 0;
+  const auto check = [&](const Point& x, const Point& y) {
+    const double mx = mu(x), my = mu(y);
+    const double bound = k * std::sqrt(CGAL::squared_distance(x, y)) * (1 + 1e-12) +
+                         1e-15 * std::max(mx, my);  // rounding of the two values
+    ++compared;
+    if (std::abs(mx - my) > bound) ++violations;
+  };
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    check(a[i], b[i]);                                         // far apart
+    check(a[i], Point(a[i].x() + u(rng), a[i].y() + u(rng)));  // close
+  }
+  CHECK(compared == 2 * a.size());
+  CHECK(violations == 0);
+}
+
+TEST_CASE("the boundary sizing is at most size(s) on each segment, exactly the size if constant",
+          "[density][sizing]") {
+  const std::string file =
+      GENERATE(as<std::string>{}, "earcut_dude.poly", "us_massachusetts_counties.poly");
+  const double k = GENERATE(0.1, 2.0);
+  CAPTURE(file, k);
+  Domain d;
+  load_domain(d, file);
+  const std::vector<Segment> segments = boundary_segments(d.cdt);
+  const double size = diagonal(d.cdt) / 100;
+  const Sizing by_length(d.cdt, k), constant(d.cdt, k, size);
+  std::size_t above = 0, not_size = 0, not_min = 0;
+  for (const Segment& s : segments) {
+    const double length = std::sqrt(s.squared_length());
+    for (const double t : {0.0, 0.3, 0.5, 1.0}) {
+      const Point x = s.source() + t * (s.target() - s.source());
+      // x is s(t) rounded: k d(x, s) is up to k times a few ulps of its coordinates.
+      const double slack =
+          8 * k * std::numeric_limits<double>::epsilon() * (std::abs(x.x()) + std::abs(x.y()));
+      if (by_length(x) > length * (1 + 1e-12) + slack) ++above;
+      if (std::abs(constant(x) - size) > 1e-12 * size + slack) ++not_size;
+      if (std::abs(by_length(x) - brute_force(segments, k, std::nullopt, x)) > 1e-12 * length)
+        ++not_min;
+    }
+  }
+  CHECK(above == 0);
+  CHECK(not_size == 0);
+  CHECK(not_min == 0);
+}
+
+TEST_CASE("the sizing of a triangulation uses its domain's boundary and inner constraints",
+          "[density][sizing]") {
+  // The square [0, 10]² with the hole [4, 6]², a slit from (1, 1) to (3, 1) in the domain and a
+  // slit from (4.5, 5) to (5.5, 5) inside the hole, outside the domain.
+  CVT_2::IO::Poly_data<Point> poly;
+  poly.vertices = {Point(0, 0), Point(10, 0), Point(10, 10), Point(0, 10),
+                   Point(4, 4), Point(6, 4),  Point(6, 6),   Point(4, 6),
+                   Point(1, 1), Point(3, 1),  Point(4.5, 5), Point(5.5, 5)};
+  poly.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5},
+                   {5, 6}, {6, 7}, {7, 4}, {8, 9}, {10, 11}};
+  poly.holes = {Point(5, 4.5)};
+  poly.segment_lines.assign(poly.segments.size(), 0);
+  poly.vertex_lines.assign(poly.vertices.size(), 0);
+  Cdt cdt;
+  CVT_2::IO::insert_poly(cdt, poly);
+  const Sizing mu(cdt, 0.5, 1.0);
+  CHECK(mu.segments().size() == 9);
+  for (const Segment& s : mu.segments()) {
+    CAPTURE(s);
+    CHECK(s != Segment(Point(4.5, 5), Point(5.5, 5)));
+    CHECK(s != Segment(Point(5.5, 5), Point(4.5, 5)));
+  }
+  CHECK(mu(Point(5, 5)) == Approx(1.5).epsilon(1e-15));   // 1 from the hole's sides, not 0
+  CHECK(mu(Point(2, 2)) == Approx(1.5).epsilon(1e-15));   // 1 from the slit, 2 from the sides
+  CHECK(mu(Point(2, 1)) == Approx(1.0).epsilon(1e-15));   // on the slit
+  CHECK(mu(Point(-4, 5)) == Approx(3.0).epsilon(1e-15));  // outside: still defined
+  // Default sizes: the boundary edges are 10, 2 and 2 long.
+  const Sizing by_length(cdt, 0.5);
+  CHECK(by_length(Point(2, 1)) == Approx(2.0).epsilon(1e-15));
+  CHECK(by_length(Point(5, 5)) == Approx(2.5).epsilon(1e-15));
+}
+
+TEST_CASE("the boundary sizing scales with the domain: mu(s x + o) = s mu(x)",
+          "[density][sizing]") {
+  const double scale = GENERATE(1e-6, 1e-3, 1e6);
+  const double offset = GENERATE(0.0, 1e4);
+  CAPTURE(scale, offset);
+  Domain ref, moved;
+  load_domain(ref, "us_massachusetts_counties.poly");
+  load_domain(moved, "us_massachusetts_counties.poly", scale, offset * scale, -offset * scale);
+  const Sizing a(ref.cdt, 0.5), b(moved.cdt, 0.5);
+  const double tolerance = offset == 0 ? 1e-12 : 1e-6;  // an offset costs digits
+  std::size_t differ = 0;
+  for (const Point& x : sample_points(ref.cdt, 1000, 31)) {
+    const Point y(scale * x.x() + offset * scale, scale * x.y() - offset * scale);
+    if (std::abs(b(y) - scale * a(x)) > tolerance * scale * a(x)) ++differ;
+  }
+  CHECK(differ == 0);
+}
+
+TEST_CASE("copies of the boundary sizing share it, and concurrent calls from its first one agree",
+          "[density][sizing]") {
+  Domain d;
+  load_domain(d, "world_land_110m.poly");
+  const std::vector<Point> pts = sample_points(d.cdt, 2000, 41);
+  const Sizing mu(d.cdt, 0.1);
+  // No call before the threads start: a lazily built tree would be built by both at once.
+  std::vector<double> first(pts.size()), second(pts.size());
+  const Sizing copy = mu;
+  std::thread t1([&] {
+    for (std::size_t i = 0; i < pts.size(); ++i) first[i] = mu(pts[i]);
+  });
+  std::thread t2([&] {
+    for (std::size_t i = pts.size(); i-- > 0;) second[i] = copy(pts[i]);
+  });
+  t1.join();
+  t2.join();
+  CHECK(&copy.segments() == &mu.segments());
+  CHECK(first == second);
+  std::size_t wrong = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) wrong += first[i] != mu(pts[i]);
+  CHECK(wrong == 0);
+}
+
+TEST_CASE("the boundary sizing rejects a bad k or size, no segment, degenerate segments",
+          "[density][sizing]") {
+  const std::vector<Segment> square = {
+      Segment(Point(0, 0), Point(1, 0)), Segment(Point(1, 0), Point(1, 1)),
+      Segment(Point(1, 1), Point(0, 1)), Segment(Point(0, 1), Point(0, 0))};
+  for (const double k : {0.0, -0.5, not_a_number, infinity}) {
+    CAPTURE(k);
+    CHECK_THROWS_AS(Sizing(square, k), std::invalid_argument);
+    CHECK_THAT(message_of([&] { Sizing(square, k); }), Catch::Contains("k = "));
+  }
+  CHECK_THAT(message_of([&] { Sizing(square, -0.5); }), Catch::Contains("-0.5"));
+  for (const double size : {0.0, -1.0, not_a_number, infinity}) {
+    CAPTURE(size);
+    CHECK_THROWS_AS(Sizing(square, 0.1, size), std::invalid_argument);
+    CHECK_THAT(message_of([&] { Sizing(square, 0.1, size); }), Catch::Contains("size = "));
+  }
+  CHECK_THROWS_AS(Sizing(std::vector<Segment>(), 0.1), CVT_2::Domain_error);
+  const Cdt empty;
+  CHECK_THROWS_AS(Sizing(empty, 0.1), CVT_2::Domain_error);
+
+  std::vector<Segment> degenerate = square;
+  degenerate.emplace_back(Point(2, 3), Point(2, 3));
+  try {
+    Sizing(degenerate, 0.1);
+    FAIL("a segment of length 0 without a size was accepted");
+  } catch (const CVT_2::Domain_error& e) {
+    CHECK(e.index() == 4);
+    CHECK_THAT(std::string(e.what()), Catch::Contains("(2, 3)"));
+  }
+  const Sizing with_point(degenerate, 0.5, 0.25);  // with a size, a point source is fine
+  CHECK(with_point(Point(2, 4)) == Approx(0.75).epsilon(1e-15));
+
+  // A point that is not finite gets no size, so the density reports it.
+  const Sizing unit(square, 0.1);
+  CHECK(std::isnan(unit(Point(not_a_number, 0.5))));
+  CHECK_FALSE(std::isfinite(unit(Point(infinity, 0.5))));
+  CHECK_THAT(message_of([&] { CVT_2::make_sizing_field_density_2<K>(unit)(Point(0.5, infinity)); }),
+             Catch::Contains("(0.5, inf)"));
+
+  std::vector<Segment> not_finite = square;
+  not_finite.emplace_back(Point(0, 0), Point(not_a_number, 1));
+  CHECK_THROWS_AS(Sizing(not_finite, 0.1, 1.0), CVT_2::Domain_error);
+}

@@ -1,3 +1,277 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// placeholder
+// Lloyd iteration: energy descent, stopping rule, constraints respected, densities, sizing.
+#include "support/support.h"
+
+#include <CVT_2/Boundary_lipschitz_sizing_2.h>
+#include <CVT_2/lloyd_optimize_2.h>
+#include <CVT_2/random_points_in_domain_2.h>
+
 #include <catch2/catch.hpp>
+
+#include <cmath>
+#include <map>
+
+using namespace support;
+
+namespace {
+
+// The unit square, or a square of side `side`.
+void load_square(Domain& d, double side = 1) {
+  d.poly = CVT_2::IO::Poly_data<Point>();
+  d.poly.vertices = {Point(0, 0), Point(side, 0), Point(side, side), Point(0, side)};
+  d.poly.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  d.poly.vertex_lines.assign(4, 0);
+  d.poly.segment_lines.assign(4, 0);
+  CVT_2::IO::insert_poly(d.cdt, d.poly);
+}
+
+void add_random_generators(Domain& d, std::size_t n, unsigned seed) {
+  const auto pts = CVT_2::random_points_in_domain_2(d.cdt, n, CVT_2::parameters::random_seed(seed));
+  CVT_2::insert_generators_2(d.cdt, pts, d.poly.holes);
+}
+
+// E N / A² over its lower bound for uniform density, the regular hexagonal tiling's 5/(18√3).
+double normalized_energy(double energy, std::size_t n, double area) {
+  return energy * double(n) / (area * area) / (5.0 / (18.0 * std::sqrt(3.0)));
+}
+
+std::vector<Segment> constraint_segments(const Cdt& cdt) {
+  std::vector<Segment> s;
+  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
+    if (cdt.is_constrained(*e)) s.push_back(cdt.segment(*e));
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("energy never rises under Lloyd iteration with exact quadrature", "[lloyd]") {
+  const char* file = GENERATE("four_clusters.poly", "square_inner_constraints.poly",
+                              "us_massachusetts_counties.poly", "earcut_dude.poly");
+  CAPTURE(file);
+  Domain d;
+  load_domain(d, file);
+  add_random_generators(d, 400, 1);
+  CVT_2::Lloyd_optimizer_2<Cdt> lloyd(d.cdt);
+  double previous = lloyd.evaluate(10).energy;
+  for (int it = 0; it < 40; ++it) {
+    lloyd.move();
+    const double e = lloyd.evaluate(10).energy;
+    CAPTURE(it, previous, e);
+    CHECK(e <= previous * (1 + 1e-12));
+    previous = e;
+  }
+}
+
+TEST_CASE("constrained vertices never move and free generators never cross a constraint",
+          "[lloyd]") {
+  const char* file = GENERATE("square_inner_constraints.poly", "us_massachusetts_counties.poly");
+  CAPTURE(file);
+  Domain d;
+  load_domain(d, file);
+  add_random_generators(d, 600, 2);
+  const auto constraints = constraint_segments(d.cdt);
+  CVT_2::Lloyd_optimizer_2<Cdt> lloyd(d.cdt);
+  std::size_t crossings = 0, constrained_moved = 0, moved = 0;
+  for (int it = 0; it < 20; ++it) {
+    std::map<Cdt::Vertex_handle, Point> before;
+    for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v) before[v] = v->point();
+    lloyd.evaluate(10);
+    lloyd.move();
+    for (const auto& [v, p] : before) {
+      if (v->point() == p) continue;
+      ++moved;
+      if (d.cdt.are_there_incident_constraints(v)) ++constrained_moved;
+      const Segment path(p, v->point());
+      for (const auto& s : constraints) crossings += CGAL::do_intersect(path, s);
+    }
+  }
+  CHECK(moved > 600);
+  CHECK(constrained_moved == 0);
+  CHECK(crossings == 0);
+}
+
+TEST_CASE("generators stay in the region of the domain they start in", "[lloyd]") {
+  // Massachusetts' counties are regions closed by constraints.
+  Domain d;
+  load_domain(d, "us_massachusetts_counties.poly");
+  add_random_generators(d, 800, 3);
+  // Number the regions: faces connected without crossing a constraint.
+  const auto regions = [&d] {
+    std::map<Cdt::Face_handle, int> id;
+    int next = 0;
+    for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f) {
+      if (!f->is_inside_domain() || id.count(f)) continue;
+      std::vector<Cdt::Face_handle> stack{f};
+      id[f] = next;
+      while (!stack.empty()) {
+        const auto g = stack.back();
+        stack.pop_back();
+        for (int i = 0; i < 3; ++i)
+          if (!g->is_constrained(i) && !id.count(g->neighbor(i))) {
+            id[g->neighbor(i)] = next;
+            stack.push_back(g->neighbor(i));
+          }
+      }
+      ++next;
+    }
+    std::map<Cdt::Vertex_handle, int> region;
+    for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v)
+      if (!d.cdt.are_there_incident_constraints(v)) region[v] = id.at(v->face());
+    return region;
+  };
+  const auto start = regions();
+  CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::number_of_iterations(30).move_ratio_bound(0));
+  const auto end = regions();
+  REQUIRE(start.size() == end.size());
+  std::size_t changed = 0;
+  for (const auto& [v, r] : start) changed += end.at(v) != r;
+  CHECK(changed == 0);
+}
+
+TEST_CASE("the stopping rule stops where it should, and the result describes the final points",
+          "[lloyd]") {
+  Domain d;
+  load_domain(d, "four_clusters.poly");  // the paper's Fig. 7: 200 clustered generators
+  const CVT_2::Lloyd_result r = CVT_2::lloyd_optimize_2(d.cdt);
+  CHECK(r.stop_reason == CVT_2::CONVERGED);
+  CHECK(r.max_move_ratio < 0.01);
+  REQUIRE(r.max_move_ratio_history.size() == r.number_of_iterations + 1);
+  REQUIRE(r.number_of_iterations >= 1);
+  CHECK(r.max_move_ratio_history[r.number_of_iterations - 1] >= 0.01);
+  CHECK(r.energy == r.energy_history.back());
+  // An independent evaluation of the final points finds the same figures.
+  CVT_2::Lloyd_optimizer_2<Cdt> check(d.cdt);
+  const auto& e = check.evaluate(100);
+  CHECK(e.energy == Approx(r.energy).epsilon(1e-12));
+  CHECK(e.max_move_ratio == Approx(r.max_move_ratio).epsilon(1e-9));
+
+  // With the move-ratio stop off, exactly the iterations asked for.
+  Domain d2;
+  load_domain(d2, "four_clusters.poly");
+  const auto r2 = CVT_2::lloyd_optimize_2(d2.cdt, CVT_2::parameters::number_of_iterations(7).move_ratio_bound(0));
+  CHECK(r2.stop_reason == CVT_2::MAX_ITERATIONS_REACHED);
+  CHECK(r2.number_of_iterations == 7);
+  CHECK(r2.energy_history.size() == 8);
+  // A callback stops it.
+  Domain d3;
+  load_domain(d3, "four_clusters.poly");
+  const auto r3 = CVT_2::lloyd_optimize_2(
+      d3.cdt, CVT_2::parameters::callback([](const CVT_2::Lloyd_result& p) { return p.number_of_iterations < 3; }));
+  CHECK(r3.stop_reason == CVT_2::CALLBACK_REQUESTED_STOP);
+  CHECK(r3.number_of_iterations == 3);
+}
+
+TEST_CASE("a converged uniform CVT of 2000 points in the unit square is within 4% of the hexagonal bound",
+          "[lloyd]") {
+  Domain d;
+  load_square(d);
+  add_random_generators(d, 2000, 4);
+  const auto r = CVT_2::lloyd_optimize_2(d.cdt);
+  CAPTURE(r.number_of_iterations, r.max_move_ratio);
+  CHECK(r.stop_reason == CVT_2::CONVERGED);
+  const double e0 = normalized_energy(r.energy_history.front(), 2004, 1.0);
+  const double e = normalized_energy(r.energy, 2004, 1.0);
+  CAPTURE(e0, e);
+  CHECK(e0 > 1.5);  // random points are far from it
+  CHECK(e <= 1.04);
+}
+
+TEST_CASE("a user density (a lambda) and a user sizing field shape the cells", "[lloyd]") {
+  SECTION("density: more generators where it is larger") {
+    Domain d;
+    load_square(d);
+    const auto rho = [](const Point& p) { return 1.0 + 20.0 * p.x(); };
+    const auto sqrt_rho = [&rho](const Point& p) { return std::sqrt(rho(p)); };
+    CVT_2::insert_generators_2(
+        d.cdt, CVT_2::random_points_in_domain_2(d.cdt, 600, CVT_2::parameters::random_seed(5).density(sqrt_rho)),
+        d.poly.holes);
+    const auto r = CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::density(rho).number_of_iterations(60));
+    CHECK(r.energy_history.back() < r.energy_history.front());
+    std::size_t left = 0, right = 0;
+    for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v)
+      (v->point().x() < 0.5 ? left : right) += 1;
+    // Cells of size ∝ ρ^(-1/4): counts ∝ ∫ρ^(1/2), (21^1.5 - 11^1.5) / (11^1.5 - 1) = 1.68.
+    CHECK(double(right) / double(left) == Approx(1.68).epsilon(0.1));
+  }
+  SECTION("sizing: cell size proportional to the sizing field") {
+    Domain d;
+    load_square(d);
+    const auto mu = [](const Point& p) { return 0.5 + p.x(); };
+    // Initial points at about the CVT's density, μ^-2: Lloyd moves points only locally.
+    const auto start = [&mu](const Point& p) { return 1 / (mu(p) * mu(p)); };
+    CVT_2::insert_generators_2(
+        d.cdt, CVT_2::random_points_in_domain_2(d.cdt, 1500, CVT_2::parameters::random_seed(6).density(start)),
+        d.poly.holes);
+    CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::sizing_field(mu).number_of_iterations(150));
+    // Mean cell area in two strips: ∝ μ², so their ratio is about (1.3 / 0.7)² = 3.45.
+    const Bvd bvd(d.cdt);
+    double area[2] = {0, 0};
+    std::size_t count[2] = {0, 0};
+    bvd.for_each_cell([&](Cdt::Vertex_handle v, const Cell& c) {
+      if (!bvd.is_free(v)) return;
+      const double x = v->point().x();
+      const int s = x > 0.1 && x < 0.3 ? 0 : x > 0.7 && x < 0.9 ? 1 : -1;
+      if (s < 0) return;
+      area[s] += signed_area(c);
+      ++count[s];
+    });
+    const double ratio = (area[1] / double(count[1])) / (area[0] / double(count[0]));
+    CAPTURE(ratio, count[0], count[1]);
+    CHECK(ratio == Approx(3.45).epsilon(0.2));
+  }
+}
+
+TEST_CASE("bad densities and parameters give errors that say what and where", "[lloyd]") {
+  Domain d;
+  load_square(d);
+  add_random_generators(d, 100, 7);
+  const auto negative = [](const Point& p) { return p.x() < 0.5 ? 1.0 : -1.0; };
+  try {
+    CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::density(negative));
+    FAIL("no exception");
+  } catch (const CVT_2::Domain_error& e) {
+    CHECK_THAT(e.what(), Catch::Contains("the density is -1") && Catch::Contains(" at ("));
+  }
+  const auto nan_sizing = [](const Point&) { return std::nan(""); };
+  CHECK_THROWS_AS(CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::sizing_field(nan_sizing)), CVT_2::Domain_error);
+  CHECK_THROWS_WITH(CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::move_ratio_bound(-1.0)),
+                    Catch::Contains("move_ratio_bound"));
+  CHECK_THROWS_WITH(CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::maximum_running_time(-1.0)),
+                    Catch::Contains("maximum_running_time"));
+  CHECK_THROWS_WITH(CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::minimum_quadrature_resolution(std::size_t(50))
+                                                       .maximum_quadrature_resolution(std::size_t(10))),
+                    Catch::Contains("quadrature resolutions"));
+}
+
+TEST_CASE("random initial generators are reproducible, inside, and follow the density", "[lloyd]") {
+  Domain d;
+  load_domain(d, "earcut_dude.poly");
+  const auto a = CVT_2::random_points_in_domain_2(d.cdt, 2000, CVT_2::parameters::random_seed(9));
+  const auto b = CVT_2::random_points_in_domain_2(d.cdt, 2000, CVT_2::parameters::random_seed(9));
+  const auto c = CVT_2::random_points_in_domain_2(d.cdt, 2000, CVT_2::parameters::random_seed(10));
+  CHECK(a == b);
+  CHECK(a != c);
+  std::size_t outside = 0;
+  for (const auto& p : a) outside += !CVT_2::is_in_domain_2(d.cdt, p);
+  CHECK(outside == 0);
+  const CGAL::Bbox_2 box = domain_bbox(d.cdt);
+  const double mid = (box.xmin() + box.xmax()) / 2;
+  // A smooth density, 1 to 9 across: followed face by face (the sampling's resolution).
+  const auto rho = [&box](const Point& p) { return 1 + 8 * (p.x() - box.xmin()) / (box.xmax() - box.xmin()); };
+  const auto w = CVT_2::random_points_in_domain_2(d.cdt, 40000, CVT_2::parameters::random_seed(9).density(rho));
+  const auto u = CVT_2::random_points_in_domain_2(d.cdt, 40000, CVT_2::parameters::random_seed(9));
+  double mass[2] = {0, 0}, area[2] = {0, 0}, count[2] = {0, 0};  // the halves', from u
+  for (const auto& p : u) mass[p.x() < mid ? 0 : 1] += rho(p), area[p.x() < mid ? 0 : 1] += 1;
+  for (const auto& p : w) count[p.x() < mid ? 0 : 1] += 1;
+  CHECK(count[1] / count[0] == Approx(mass[1] / mass[0]).epsilon(0.05));
+  CHECK(count[1] / count[0] > 1.5 * area[1] / area[0]);  // far from uniform
+}
+
+TEST_CASE("Lloyd with the automatic k-Lipschitz sizing refines near the boundary", "[lloyd]") {
+  Domain d;
+  load_domain(d, "earcut_dude.poly");
+  add_random_generators(d, 800, 11);
+  const CVT_2::Boundary_lipschitz_sizing_2<K> mu(d.cdt, 0.1);
+  const auto r = CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::sizing_field(mu).number_of_iterations(40));
+  CHECK(r.energy_history.back() < r.energy_history.front());
+}

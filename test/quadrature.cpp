@@ -1,3 +1,479 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// placeholder
+// Properties of the cell quadratures: closed forms, exactness, convergence, counts, slits.
+#include "support/support.h"
+
+#include <CVT_2/Concepts/CellQuadrature_2.h>
+#include <CVT_2/Exact_quadrature_2.h>
+#include <CVT_2/Midpoint_quadrature_2.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/convex_hull_2.h>
+
 #include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <random>
+#include <vector>
+
+using namespace support;
+
+namespace {
+
+using Points = std::vector<Point>;
+using Moments = CVT_2::Cell_moments_2<K>;
+using Exact = CVT_2::Exact_quadrature_2<K>;
+using Midpoint = CVT_2::Midpoint_quadrature_2<K>;
+
+struct Star_cell {
+  Point x;
+  Points cell;  // ccw, star-shaped from x
+  double diameter;
+};
+
+// A random convex cell of size `scale` (the hull of 3 to 12 points in a disk) around a random
+// interior generator, everything moved by `offset` along a random direction.
+Star_cell random_convex_cell(std::mt19937_64& rng, double scale, double offset) {
+  std::uniform_real_distribution<double> unit(0, 1);
+  const double pi = std::acos(-1.0);
+  Points local;
+  const std::size_t n = 3 + static_cast<std::size_t>(unit(rng) * 10);
+  while (local.size() < n) {
+    const double r = scale * std::sqrt(unit(rng)), t = 2 * pi * unit(rng);
+    local.push_back(Point(r * std::cos(t), r * std::sin(t)));
+  }
+  Points hull;
+  CGAL::convex_hull_2(local.begin(), local.end(), std::back_inserter(hull));
+  double wx = 0, wy = 0, wsum = 0;  // x: a convex combination, sometimes close to an edge
+  for (const Point& p : hull) {
+    const double w = std::pow(unit(rng), 3) + 1e-3;
+    wx += w * p.x();
+    wy += w * p.y();
+    wsum += w;
+  }
+  const double t = 2 * pi * unit(rng), ox = offset * std::cos(t), oy = offset * std::sin(t);
+  Star_cell c{Point(wx / wsum + ox, wy / wsum + oy), {}, 0};
+  for (const Point& p : hull) c.cell.push_back(Point(p.x() + ox, p.y() + oy));
+  for (const Point& p : c.cell)
+    for (const Point& q : c.cell)
+      c.diameter = std::max(c.diameter, std::sqrt(CGAL::squared_distance(p, q)));
+  return c;
+}
+
+// Independent closed forms: Green's theorem relative to the first vertex c0 (the polygon area,
+// centroid and second-moment formulas), moved to x by the parallel axis theorem.
+Moments polygon_moments_oracle(const Point& x, const Points& cell) {
+  const Point& c0 = cell.front();
+  double a = 0, sx = 0, sy = 0, j = 0;
+  for (std::size_t i = 0; i < cell.size(); ++i) {
+    const auto u = cell[i] - c0, v = cell[(i + 1) % cell.size()] - c0;
+    const double cross = u.x() * v.y() - v.x() * u.y();
+    a += cross / 2;
+    sx += cross * (u.x() + v.x()) / 6;
+    sy += cross * (u.y() + v.y()) / 6;
+    j += cross * (u.x() * u.x() + u.x() * v.x() + v.x() * v.x() + u.y() * u.y() + u.y() * v.y() +
+                  v.y() * v.y()) / 12;
+  }
+  const auto d = x - c0;
+  Moments m;
+  m.mass = a;
+  m.first_moment = K::Vector_2(sx - d.x() * a, sy - d.y() * a);
+  m.energy = j - 2 * (d.x() * sx + d.y() * sy) + (d.x() * d.x() + d.y() * d.y()) * a;
+  return m;
+}
+
+// The largest of the three relative errors: mass, first moment (against mass × diameter),
+// energy.
+double relative_error(const Moments& m, const Moments& ref, double diameter) {
+  const double fm = std::sqrt((m.first_moment - ref.first_moment).squared_length());
+  return std::max({std::abs(m.mass - ref.mass) / std::abs(ref.mass),
+                   fm / (std::abs(ref.mass) * diameter),
+                   std::abs(m.energy - ref.energy) / std::abs(ref.energy)});
+}
+
+// Gauss-Legendre nodes and weights on [0, 1] (Newton on the Legendre polynomial).
+void gauss_legendre(int n, std::vector<double>& nodes, std::vector<double>& weights) {
+  const double pi = std::acos(-1.0);
+  nodes.assign(n, 0);
+  weights.assign(n, 0);
+  for (int i = 0; i < n; ++i) {
+    double z = std::cos(pi * (i + 0.75) / (n + 0.5)), dp = 0;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1, p1 = z;
+      for (int k = 2; k <= n; ++k) {
+        const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = n * (z * p1 - p0) / (z * z - 1);
+      const double dz = p1 / dp;
+      z -= dz;
+      if (std::abs(dz) < 1e-16) break;
+    }
+    nodes[i] = (1 - z) / 2;
+    weights[i] = 1 / ((1 - z * z) * dp * dp);
+  }
+}
+
+// An independent reference for a smooth density: on each fan triangle (x, a, b), the collapsed
+// (Duffy) map y = x + s((1 - t) a + t b), of Jacobian s cross(a, b), with 24 × 24 Gauss points.
+template <class Density>
+Moments gauss_reference(const Point& x, const Points& cell, const Density& rho) {
+  std::vector<double> g, w;
+  gauss_legendre(24, g, w);
+  Moments m;
+  double fx = 0, fy = 0;
+  for (std::size_t i = 0; i < cell.size(); ++i) {
+    const auto a = cell[i] - x, b = cell[(i + 1) % cell.size()] - x;
+    const double cross = a.x() * b.y() - a.y() * b.x();
+    for (std::size_t is = 0; is < g.size(); ++is)
+      for (std::size_t it = 0; it < g.size(); ++it) {
+        const double s = g[is], t = g[it];
+        const double u = s * ((1 - t) * a.x() + t * b.x()), v = s * ((1 - t) * a.y() + t * b.y());
+        const double r = w[is] * w[it] * s * cross * rho(Point(x.x() + u, x.y() + v));
+        m.mass += r;
+        fx += r * u;
+        fy += r * v;
+        m.energy += r * (u * u + v * v);
+      }
+  }
+  m.first_moment = K::Vector_2(fx, fy);
+  return m;
+}
+
+// A density that counts its evaluations.
+struct Counting_density {
+  std::size_t* calls;
+  double operator()(const Point&) const {
+    ++*calls;
+    return 1;
+  }
+};
+
+// [-1, 1]² around x = (0, 0) with slits along the positive and negative x axes: the polygon
+// goes out to the boundary along each slit and back, so x appears twice.
+const Point origin(0, 0);
+const Points two_slit_square = {origin, Point(1, 0),  Point(1, 1),   Point(-1, 1), Point(-1, 0),
+                                origin, Point(-1, 0), Point(-1, -1), Point(1, -1), Point(1, 0)};
+
+}  // namespace
+
+static_assert(CVT_2::is_cell_quadrature_2_v<Exact, K, double (*)(const Point&)>);
+static_assert(CVT_2::is_cell_quadrature_2_v<Midpoint, K, Counting_density>);
+static_assert(!CVT_2::is_cell_quadrature_2_v<Midpoint, K, int>, "int is no density");
+static_assert(!CVT_2::is_cell_quadrature_2_v<Midpoint, K, Point (*)(const Point&)>,
+              "a density returns a number");
+static_assert(!CVT_2::is_cell_quadrature_2_v<int, K, Counting_density>);
+static_assert(!CVT_2::is_cell_quadrature_2_v<Counting_density, K, Counting_density>);
+
+TEST_CASE("exact quadrature equals polygon closed forms on random convex cells, also far away",
+          "[quadrature]") {
+  const double scale = GENERATE(1e-6, 1.0, 1e6);
+  const double offset = GENERATE(0.0, 1e6);
+  const unsigned seed = 11;
+  CAPTURE(scale, offset, seed);
+  std::mt19937_64 rng(seed);
+  double worst = 0;
+  for (int i = 0; i < 300; ++i) {
+    const Star_cell c = random_convex_cell(rng, scale, offset * std::max(scale, 1.0));
+    const Moments m = Exact()(c.x, c.cell, [](const Point&) { return 1.0; }, 0);
+    worst = std::max(worst, relative_error(m, polygon_moments_oracle(c.x, c.cell), c.diameter));
+    if (offset == 0) {
+      const CGAL::Polygon_2<K> polygon(c.cell.begin(), c.cell.end());
+      CHECK(m.mass == Approx(polygon.area()).epsilon(1e-12));
+    }
+  }
+  CHECK(worst < 1e-11);
+}
+
+TEST_CASE("exact quadrature's moments relative to the generator survive translation by 1e6",
+          "[quadrature]") {
+  const unsigned seed = 12;
+  CAPTURE(seed);
+  std::mt19937_64 rng(seed), same(seed);
+  double worst = 0;
+  for (int i = 0; i < 300; ++i) {
+    const Star_cell near = random_convex_cell(rng, 10, 0), far = random_convex_cell(same, 10, 1e6);
+    const Moments m0 = Exact()(near.x, near.cell, [](const Point&) { return 1.0; }, 0);
+    const Moments m1 = Exact()(far.x, far.cell, [](const Point&) { return 1.0; }, 0);
+    worst = std::max(worst, relative_error(m1, m0, near.diameter));
+  }
+  CHECK(worst < 1e-8);  // the input points themselves are rounded to ~1e-10 at 1e6
+  CHECK(worst > 0);     // the translation did happen
+}
+
+TEST_CASE("exact quadrature scales the uniform moments by rho(x) and evaluates rho once",
+          "[quadrature]") {
+  std::mt19937_64 rng(13);
+  const Star_cell c = random_convex_cell(rng, 1, 0);
+  std::size_t calls = 0;
+  const Moments one = Exact()(c.x, c.cell, Counting_density{&calls}, 100);
+  CHECK(calls == 1);
+  const Moments m = Exact()(c.x, c.cell, [](const Point&) { return 2.5; }, 7);
+  CHECK(m.mass == Approx(2.5 * one.mass).epsilon(1e-15));
+  CHECK(m.energy == Approx(2.5 * one.energy).epsilon(1e-15));
+  CHECK(m.first_moment.x() == Approx(2.5 * one.first_moment.x()).epsilon(1e-15));
+}
+
+TEST_CASE("midpoint rule with a constant density equals exact quadrature at resolutions 1 to 200",
+          "[quadrature]") {
+  const double offset = GENERATE(0.0, 1e6);
+  const unsigned seed = 21;
+  CAPTURE(offset, seed);
+  std::mt19937_64 rng(seed);
+  const auto rho = [](const Point&) { return 2.5; };
+  double worst = 0;
+  for (int i = 0; i < 20; ++i) {
+    const Star_cell c = random_convex_cell(rng, 3, offset);
+    const Moments exact = Exact()(c.x, c.cell, rho, 0);
+    for (std::size_t n = 1; n <= 200; ++n)
+      worst = std::max(worst, relative_error(Midpoint()(c.x, c.cell, rho, n), exact, c.diameter));
+  }
+  CHECK(worst < 1e-12);
+}
+
+TEST_CASE("midpoint rule with a constant density is exact in exact arithmetic", "[quadrature]") {
+  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+  std::mt19937_64 rng(22);
+  for (int i = 0; i < 3; ++i) {
+    const Star_cell c = random_convex_cell(rng, 1, 0);
+    const EK::Point_2 x(c.x.x(), c.x.y());
+    std::vector<EK::Point_2> cell;
+    for (const Point& p : c.cell) cell.push_back(EK::Point_2(p.x(), p.y()));
+    const auto rho = [](const EK::Point_2&) { return EK::FT(3); };
+    const CVT_2::Cell_moments_2<EK> exact = CVT_2::Exact_quadrature_2<EK>()(x, cell, rho, 0);
+    for (const std::size_t n : {1, 7, 30}) {
+      CAPTURE(i, n);
+      const CVT_2::Cell_moments_2<EK> m = CVT_2::Midpoint_quadrature_2<EK>()(x, cell, rho, n);
+      CHECK(m.mass == exact.mass);
+      CHECK(m.first_moment == exact.first_moment);
+      CHECK(m.energy == exact.energy);
+    }
+  }
+}
+
+TEST_CASE("midpoint rule converges at least as O(1/n) for non-polynomial densities",
+          "[quadrature]") {
+  const int density = GENERATE(0, 1);
+  const double offset = GENERATE(0.0, 1e6);
+  const unsigned seed = 31;
+  CAPTURE(density, offset, seed);
+  std::mt19937_64 rng(seed);
+  double error_25 = 0, error_100 = 0, error_400 = 0, reference_gap = 0;
+  for (int i = 0; i < 20; ++i) {
+    const Star_cell c = random_convex_cell(rng, 1, offset);
+    // The density's features sit near the cell, wherever the cell is.
+    const Point o(c.x.x() + 0.3, c.x.y() - 0.2);
+    const auto smooth = [o](const Point& p) {
+      const double u = p.x() - o.x(), v = p.y() - o.y();
+      return std::exp(2 * u) * (1 + 4 * v * v);
+    };
+    const auto graded = [o](const Point& p) {  // rho = 1 / mu^4, mu = |p - o| + 0.1: a kink at o
+      const double mu = std::sqrt(CGAL::squared_distance(p, o)) + 0.1;
+      return 1 / (mu * mu * mu * mu);
+    };
+    const auto error = [&](std::size_t n) {
+      const auto run = [&](const auto& rho) {
+        return relative_error(Midpoint()(c.x, c.cell, rho, n),
+                              Midpoint()(c.x, c.cell, rho, 20000), c.diameter);
+      };
+      return density == 0 ? run(smooth) : run(graded);
+    };
+    error_25 += error(25);
+    error_100 += error(100);
+    error_400 += error(400);
+    if (density == 0)
+      reference_gap = std::max(reference_gap, relative_error(Midpoint()(c.x, c.cell, smooth, 20000),
+                                                             gauss_reference(c.x, c.cell, smooth),
+                                                             c.diameter));
+  }
+  CAPTURE(error_25, error_100, error_400, reference_gap);
+  // Pre-asymptotic for the graded density (rho varies 10^4-fold over a cell): the ratios at 4×
+  // the resolution are about 3 and 7 there, 16 to 19 for the smooth one.
+  CHECK(error_100 < error_25 / 2);
+  CHECK(error_400 < error_100 / 2);
+  CHECK(error_400 < error_25 / 8);
+  CHECK(reference_gap < 1e-5);  // the reference agrees with an independent Gauss rule
+}
+
+TEST_CASE("midpoint rule makes max(resolution, fan triangles) sub-triangles, 3 evaluations each",
+          "[quadrature]") {
+  const double pi = std::acos(-1.0);
+  Points hexagon, polygon_150;
+  for (int i = 0; i < 6; ++i) hexagon.push_back(Point(std::cos(i * pi / 3), std::sin(i * pi / 3)));
+  for (int i = 0; i < 150; ++i)
+    polygon_150.push_back(Point(std::cos(i * pi / 75), std::sin(i * pi / 75)));
+  struct Case {
+    const Points* cell;
+    std::size_t fan;  // fan triangles of nonzero area
+  };
+  for (const Case& c : {Case{&hexagon, 6}, Case{&two_slit_square, 6}, Case{&polygon_150, 150}})
+    for (const std::size_t n : {0, 1, 5, 6, 7, 10, 100, 127, 128, 129, 149, 150, 151, 300}) {
+      CAPTURE(c.fan, n);
+      std::size_t calls = 0;
+      Midpoint()(origin, *c.cell, Counting_density{&calls}, n);
+      CHECK(calls == 3 * std::max(n, c.fan));
+    }
+}
+
+namespace {
+
+// The sub-triangles of a midpoint run, each known by its three (sorted) evaluation points, the
+// midpoints of its edges; all sorted, so that runs compare as sets.
+using Midpoint_triple = std::array<Point, 3>;
+std::vector<Midpoint_triple> sub_triangles(const Point& x, const Points& cell, std::size_t n) {
+  std::vector<Point> points;
+  Midpoint()(x, cell, [&points](const Point& p) { points.push_back(p); return 1.0; }, n);
+  std::vector<Midpoint_triple> triangles;
+  for (std::size_t i = 0; i + 2 < points.size(); i += 3) {
+    Midpoint_triple t = {points[i], points[i + 1], points[i + 2]};
+    std::sort(t.begin(), t.end());
+    triangles.push_back(t);
+  }
+  std::sort(triangles.begin(), triangles.end());
+  return triangles;
+}
+// The midpoint triangle has half the sides of the triangle: this is its longest side, squared.
+double squared_longest_edge(const Midpoint_triple& m) {
+  return 4 * std::max({CGAL::squared_distance(m[0], m[1]), CGAL::squared_distance(m[1], m[2]),
+                       CGAL::squared_distance(m[2], m[0])});
+}
+// The vertices, m_i + m_j - m_k, and the area, 4 × the midpoint triangle's.
+std::array<Point, 3> triangle_vertices(const Midpoint_triple& m) {
+  const auto corner = [](const Point& p, const Point& q, const Point& r) { return p + (q - r); };
+  return {corner(m[0], m[1], m[2]), corner(m[1], m[2], m[0]), corner(m[2], m[0], m[1])};
+}
+double triangle_area(const Midpoint_triple& m) { return 4 * std::abs(CGAL::area(m[0], m[1], m[2])); }
+
+}  // namespace
+
+TEST_CASE("midpoint rule bisects, at each step, the longest edge of all sub-triangles",
+          "[quadrature]") {
+  std::mt19937_64 rng(51);
+  for (int i = 0; i < 5; ++i) {
+    const double offset = i % 2 == 0 ? 0 : 1e6;
+    const Star_cell c = random_convex_cell(rng, 1, offset);
+    // The evaluation points are rounded to ~1e-10 at 1e6, and the reconstructed vertices too.
+    const double relative = offset == 0 ? 1e-12 : 1e-7, tolerance = 1e-9 * c.diameter;
+    std::vector<Midpoint_triple> before = sub_triangles(c.x, c.cell, c.cell.size());
+    for (std::size_t n = c.cell.size(); n < 150; ++n) {
+      CAPTURE(i, n);
+      const std::vector<Midpoint_triple> after = sub_triangles(c.x, c.cell, n + 1);
+      std::vector<Midpoint_triple> bisected, halves;
+      std::set_difference(before.begin(), before.end(), after.begin(), after.end(),
+                          std::back_inserter(bisected));
+      std::set_difference(after.begin(), after.end(), before.begin(), before.end(),
+                          std::back_inserter(halves));
+      REQUIRE(bisected.size() == 1);
+      REQUIRE(halves.size() == 2);
+      const Midpoint_triple& t = bisected[0];
+      double longest = 0;
+      for (const Midpoint_triple& s : before) longest = std::max(longest, squared_longest_edge(s));
+      CHECK(squared_longest_edge(t) >= longest * (1 - relative));
+      // The new vertex is the midpoint of the longest edge of t, a vertex of both halves.
+      const std::array<Point, 3> v = triangle_vertices(t);
+      Point split = v[0];
+      for (int j = 0; j < 3; ++j) {
+        const Point m = CGAL::midpoint(v[j], v[(j + 1) % 3]);
+        const double edge = CGAL::squared_distance(v[j], v[(j + 1) % 3]);
+        if (edge >= squared_longest_edge(t) * (1 - relative)) split = m;
+      }
+      for (const Midpoint_triple& h : halves) {
+        CHECK(triangle_area(h) == Approx(triangle_area(t) / 2).epsilon(relative));
+        const std::array<Point, 3> w = triangle_vertices(h);
+        CHECK(std::any_of(w.begin(), w.end(), [&](const Point& p) {
+          return CGAL::squared_distance(p, split) < tolerance * tolerance;
+        }));
+      }
+      before = after;
+    }
+  }
+}
+
+TEST_CASE("a generator on its cell's boundary or on slits integrates to the right moments",
+          "[quadrature]") {
+  // x on the boundary of [-1, 1] × [0, 1]: area 2, first moment (0, 1), energy 2/3 + 2/3.
+  const Points half_square = {origin, Point(1, 0), Point(1, 1), Point(-1, 1), Point(-1, 0)};
+  // [-1, 1]² with one slit from x to (1, 0): area 4, first moment 0, energy 8/3.
+  const Points one_slit_square = {origin,        Point(1, 0),  Point(1, 1), Point(-1, 1),
+                                  Point(-1, -1), Point(1, -1), Point(1, 0)};
+  struct Case {
+    const Points* cell;
+    double mass, first_y, energy;
+  };
+  const auto rho = [](const Point&) { return 1.0; };
+  for (const Case& c : {Case{&half_square, 2, 1, 4.0 / 3}, Case{&one_slit_square, 4, 0, 8.0 / 3},
+                        Case{&two_slit_square, 4, 0, 8.0 / 3}})
+    for (const std::size_t n : {1, 10, 100}) {
+      CAPTURE(c.mass, n);
+      for (const Moments& m :
+           {Exact()(origin, *c.cell, rho, n), Midpoint()(origin, *c.cell, rho, n)}) {
+        CHECK(m.mass == Approx(c.mass).epsilon(1e-14));
+        CHECK(m.first_moment.x() == Approx(0).margin(1e-14));
+        CHECK(m.first_moment.y() == Approx(c.first_y).margin(1e-14));
+        CHECK(m.energy == Approx(c.energy).epsilon(1e-14));
+      }
+    }
+}
+
+TEST_CASE("quadratures of the cells of a constrained domain sum to its area, slits included",
+          "[quadrature]") {
+  const std::string file = GENERATE(as<std::string>{}, "square_inner_constraints.poly",
+                                    "four_clusters.poly");
+  const unsigned seed = 41;
+  CAPTURE(file, seed);
+  Domain d;
+  load_domain(d, file);
+  insert_random_points(d, 300, seed);
+  const Bvd bvd(d.cdt);
+  const auto rho = [](const Point&) { return 1.0; };
+  double exact_sum = 0, midpoint_sum = 0, worst = 0;
+  std::size_t constrained = 0, with_slits = 0;
+  Points points;
+  bvd.for_each_cell([&](Cdt::Vertex_handle v, const Cell& c) {
+    points.clear();
+    for (const auto& cv : c) points.push_back(cv.point);
+    const Moments exact = Exact()(v->point(), points, rho, 0);
+    const Moments midpoint = Midpoint()(v->point(), points, rho, 10);
+    worst = std::max(worst, std::abs(exact.mass - signed_area(c)) / signed_area(c));
+    worst = std::max(worst, std::abs(midpoint.mass - signed_area(c)) / signed_area(c));
+    exact_sum += exact.mass;
+    midpoint_sum += midpoint.mass;
+    constrained += bvd.is_free(v) ? 0 : 1;
+    with_slits += std::count(points.begin(), points.end(), v->point()) > 1 ? 1 : 0;
+  });
+  REQUIRE(constrained > 0);
+  CHECK(worst < 1e-12);
+  CHECK(exact_sum == Approx(domain_area(d.cdt)).epsilon(1e-10));
+  CHECK(midpoint_sum == Approx(domain_area(d.cdt)).epsilon(1e-10));
+  if (file == "square_inner_constraints.poly") CHECK(with_slits > 0);
+}
+
+TEST_CASE("quadratures of an empty or flat cell return zero moments", "[quadrature]") {
+  const auto rho = [](const Point&) { return 1.0; };
+  const Points empty, flat = {Point(0, 0), Point(1, 1), Point(2, 2)}, single = {origin};
+  for (const Points* cell : {&empty, &flat, &single})
+    for (const Moments& m : {Exact()(origin, *cell, rho, 10), Midpoint()(origin, *cell, rho, 10)}) {
+      CHECK(m.mass == 0);
+      CHECK(m.first_moment == K::Vector_2(0, 0));
+      CHECK(m.energy == 0);
+    }
+}
+
+TEST_CASE("a lambda density works, capturing state or not", "[quadrature]") {
+  const Points square = {Point(-1, -1), Point(1, -1), Point(1, 1), Point(-1, 1)};
+  const double a = 0.5;
+  const auto linear = [a](const Point& p) { return 1 + a * p.x(); };
+  static_assert(CVT_2::is_cell_quadrature_2_v<Midpoint, K, decltype(linear)>);
+  const Moments m = Midpoint()(origin, square, linear, 10);
+  // Mass and first moment have degree <= 2, so the rule is exact; the energy has degree 3.
+  CHECK(m.mass == Approx(4).epsilon(1e-14));
+  CHECK(m.first_moment.x() == Approx(a * 4.0 / 3).epsilon(1e-14));  // ∫ a u² over the square
+  CHECK(m.first_moment.y() == Approx(0).margin(1e-14));
+  CHECK(m.energy == Approx(8.0 / 3).epsilon(1e-2));
+  CHECK(Exact()(origin, square, [](const Point&) { return 2.0; }, 0).mass == Approx(8));
+}

@@ -5,6 +5,7 @@
 
 #include <CVT_2/exceptions.h>
 
+#include <CGAL/Kernel/global_functions.h>
 #include <CGAL/enum.h>
 
 #include <cmath>

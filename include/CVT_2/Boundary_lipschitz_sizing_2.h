@@ -1,0 +1,254 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Boundary_lipschitz_sizing_2: the largest k-Lipschitz sizing field bounded by sizes on the
+// boundary.
+#ifndef CVT_2_BOUNDARY_LIPSCHITZ_SIZING_2_H
+#define CVT_2_BOUNDARY_LIPSCHITZ_SIZING_2_H
+
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Algebraic_structure_traits.h>
+#include <CGAL/number_utils.h>
+#include <CVT_2/Concepts/BvdFaceBase_2.h>
+#include <CVT_2/exceptions.h>
+#include <CVT_2/mark_domain_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CVT_2 {
+
+/// \ingroup PkgCvt2Policies
+/// The automatic sizing field of the paper's Section 4, after [ACSYD05]:
+/// \f[ \mu(x) = \min_{s \in \partial\Omega} \big(k\, d(x, s) + \mathrm{size}(s)\big), \f]
+/// the largest \f$k\f$-Lipschitz function that is at most \f$\mathrm{size}(s)\f$ on every
+/// boundary segment \f$s\f$. Cells are small near the boundary (and near inner constraints) and
+/// grow by \f$k\f$ per unit of distance away from it; the paper uses \f$k = 0.1\f$. Wrap it in
+/// `Sizing_field_density_2` to get the density of the Lloyd iteration.
+///
+/// \f$\mathrm{size}(s)\f$ is either one constant for all segments or, by default, the length of
+/// \f$s\f$ (the local boundary edge length), so that the cells near the boundary match its
+/// sampling.
+///
+/// An evaluation does not scan the boundary: the segments sit in a CGAL AABB tree (3D in CGAL
+/// 5.5, so each segment is lifted to the height \f$z = \mathrm{size}(s)\f$) and a branch and
+/// bound walk skips every box whose lower bound
+/// \f$k\, d_{xy}(x, \mathrm{box}) + z_{\min}(\mathrm{box})\f$ already reaches the best value
+/// found. The candidates it keeps are evaluated exactly as in the formula, so the result
+/// equals the minimum over all segments up to rounding.
+///
+/// Copies share the tree and are cheap; the call operator changes nothing and may run in
+/// several threads at once.
+///
+/// \tparam K a CGAL kernel with 3D types (any CGAL kernel) whose `FT` has a square root
+///         (`CGAL::Exact_predicates_inexact_constructions_kernel`, for example).
+/// \cgalModels `SizingField_2`
+/// \sa `Sizing_field_density_2`
+template <class K>
+class Boundary_lipschitz_sizing_2 {
+  // Tells the triangulation constructor from the segment range one.
+  template <class T, class = void>
+  struct Is_triangulation : std::false_type {};
+  template <class T>
+  struct Is_triangulation<T, std::void_t<decltype(std::declval<const T&>().is_constrained(
+                                 std::declval<const typename T::Edge&>()))>> : std::true_type {};
+
+ public:
+  using Geom_traits = K;                    ///< the kernel
+  using FT = typename K::FT;                ///< the number type
+  using Point_2 = typename K::Point_2;      ///< the point type
+  using Segment_2 = typename K::Segment_2;  ///< a boundary segment
+
+  static_assert(
+      !std::is_same<typename CGAL::Algebraic_structure_traits<FT>::Sqrt, CGAL::Null_functor>::value,
+      "Boundary_lipschitz_sizing_2<K>: K::FT must have a square root (CGAL::sqrt)");
+
+  /// The sizing field of the boundary of the domain of `cdt`: every constrained edge that
+  /// borders at least one face of the domain (`is_inside_domain()`), so the outer boundary, the
+  /// holes' boundaries and the inner constraints.
+  ///
+  /// Each edge of the triangulation is a segment: a constraint split by a vertex inserted on it
+  /// gives two shorter segments, hence smaller default sizes. Build the field from the input
+  /// domain, before generators are inserted.
+  /// \tparam CDT a `CGAL::Constrained_triangulation_2` or a derived class, whose faces model
+  ///         `BvdFaceBase_2`, with its domain marked by `mark_domain_2()`.
+  /// \param cdt the triangulation.
+  /// \param k the Lipschitz constant \f$k\f$.
+  /// \param size the size of every segment; by default (`std::nullopt`) each segment's length.
+  /// \throws std::invalid_argument if `k` or `size` is not positive and finite.
+  /// \throws Domain_error if no constrained edge borders the domain, or if a segment has a
+  ///         coordinate that is not finite, or has length 0 and no `size` is given.
+  template <class CDT, std::enable_if_t<Is_triangulation<CDT>::value, int> = 0>
+  Boundary_lipschitz_sizing_2(const CDT& cdt, const FT& k, std::optional<FT> size = std::nullopt) {
+    static_assert(is_bvd_face_base_2<typename CDT::Face>::value,
+                  "CDT::Face must model BvdFaceBase_2: bool is_inside_domain() const, "
+                  "void set_inside_domain(bool), bool is_blinded() const, "
+                  "Edge blinding_edge() const, void set_blinding_edge(const Edge&), "
+                  "void clear_blinding()");
+    std::vector<Segment_2> segments;
+    for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
+      if (!cdt.is_constrained(*e)) continue;
+      const auto f = e->first, g = f->neighbor(e->second);
+      if ((!cdt.is_infinite(f) && f->is_inside_domain()) ||
+          (!cdt.is_infinite(g) && g->is_inside_domain()))
+        segments.push_back(cdt.segment(*e));
+    }
+    initialize(std::move(segments), k, size);
+  }
+
+  /// The sizing field of the segments of `segments`, which need not form a closed boundary.
+  /// \tparam SegmentRange a range whose values convert to `Segment_2`.
+  /// \param segments the segments \f$s\f$; a segment of length 0 acts as a point.
+  /// \param k the Lipschitz constant \f$k\f$.
+  /// \param size the size of every segment; by default (`std::nullopt`) each segment's length.
+  /// \throws std::invalid_argument if `k` or `size` is not positive and finite.
+  /// \throws Domain_error if `segments` is empty, or if a segment has a coordinate that is not
+  ///         finite, or has length 0 and no `size` is given; `Domain_error::index()` then gives
+  ///         its position.
+  template <class SegmentRange, std::enable_if_t<!Is_triangulation<SegmentRange>::value, int> = 0>
+  Boundary_lipschitz_sizing_2(const SegmentRange& segments, const FT& k,
+                              std::optional<FT> size = std::nullopt) {
+    std::vector<Segment_2> s;
+    for (const auto& x : segments) s.push_back(x);
+    initialize(std::move(s), k, size);
+  }
+
+  /// \f$\mu(x) = \min_s (k\, d(x, s) + \mathrm{size}(s))\f$.
+  /// \pre `x` has finite coordinates; otherwise the result is NaN or infinite, which
+  ///      `Sizing_field_density_2` reports.
+  FT operator()(const Point_2& x) const {
+    Search search(*m_data, x);
+    m_data->tree.traversal_with_priority(x, search);
+    return search.best ? *search.best : FT(std::numeric_limits<double>::quiet_NaN());
+  }
+
+  FT lipschitz_constant() const { return m_data->k; }  ///< \f$k\f$
+  /// the boundary segments, in the order of the input (of the triangulation's edges)
+  const std::vector<Segment_2>& segments() const { return m_data->segments; }
+  /// \f$\mathrm{size}(s)\f$ of each segment, in the order of `segments()`
+  const std::vector<FT>& sizes() const { return m_data->sizes; }
+
+ private:
+  using Segment_3 = typename K::Segment_3;
+  using Segment_3_iterator = typename std::vector<Segment_3>::const_iterator;
+  using Primitive = CGAL::AABB_segment_primitive<K, Segment_3_iterator>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+
+  // Never moved once built: the tree's primitives point into `lifted`.
+  struct Data {
+    FT k;
+    std::vector<Segment_2> segments;
+    std::vector<FT> sizes;
+    std::vector<Segment_3> lifted;  // segment i at the height sizes[i]
+    Tree tree;
+  };
+
+  // The branch and bound walk of the tree, nearer boxes first (CGAL's priority traversal,
+  // which its ray queries use). A box cannot beat `best` if k d_xy(x, box) + z_min >= best:
+  // each segment in it has d(x, s) >= d_xy(x, box) and size(s) >= z_min.
+  struct Search {
+    using Priority = double;
+    const Data& data;
+    const Point_2& x;
+    const double xd, yd, k;
+    const typename K::Compute_squared_distance_2 squared_distance;
+    std::optional<FT> best;  // none until a segment is evaluated
+    double best_double = std::numeric_limits<double>::infinity();
+
+    Search(const Data& d, const Point_2& p)
+        : data(d),
+          x(p),
+          xd(CGAL::to_double(p.x())),
+          yd(CGAL::to_double(p.y())),
+          k(CGAL::to_double(d.k)),
+          squared_distance(K().compute_squared_distance_2_object()) {}
+
+    bool go_further() const { return true; }
+    void intersection(const Point_2&, const Primitive& primitive) {
+      const std::size_t i = static_cast<std::size_t>(primitive.id() - data.lifted.begin());
+      const FT value = data.k * CGAL::sqrt(squared_distance(x, data.segments[i])) + data.sizes[i];
+      if (!best || value < *best) {
+        best = value;
+        best_double = CGAL::to_double(value);
+      }
+    }
+    double lower_bound(const CGAL::Bbox_3& b) const {
+      const double dx = std::max({b.xmin() - xd, 0.0, xd - b.xmax()});
+      const double dy = std::max({b.ymin() - yd, 0.0, yd - b.ymax()});
+      return k * std::sqrt(dx * dx + dy * dy) + b.zmin();
+    }
+    template <class Node>
+    bool do_intersect(const Point_2&, const Node& node) const {
+      return lower_bound(node.bbox()) < best_double;
+    }
+    template <class Node>
+    std::pair<bool, Priority> do_intersect_with_priority(const Point_2&, const Node& node) const {
+      const double b = lower_bound(node.bbox());
+      return {b < best_double, -b};
+    }
+  };
+
+  static std::string number_to_string(const FT& x) {
+    std::ostringstream os;
+    os.precision(17);
+    os << CGAL::to_double(x);
+    return os.str();
+  }
+
+  static bool is_positive_finite(const FT& x) { return x > 0 && std::isfinite(CGAL::to_double(x)); }
+
+  void initialize(std::vector<Segment_2> segments, const FT& k, const std::optional<FT>& size) {
+    if (!is_positive_finite(k))
+      throw std::invalid_argument("Boundary_lipschitz_sizing_2: k = " + number_to_string(k) +
+                                  " must be positive and finite");
+    if (size && !is_positive_finite(*size))
+      throw std::invalid_argument("Boundary_lipschitz_sizing_2: size = " + number_to_string(*size) +
+                                  " must be positive and finite");
+    if (segments.empty()) throw Domain_error("Boundary_lipschitz_sizing_2: no boundary segment");
+    auto data = std::make_shared<Data>();
+    data->k = k;
+    data->sizes.reserve(segments.size());
+    data->lifted.reserve(segments.size());
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const Segment_2& s = segments[i];
+      const auto where = [&s] {
+        return "Boundary_lipschitz_sizing_2: segment " + internal::to_string(s.source()) + " - " +
+               internal::to_string(s.target());
+      };
+      if (!internal::is_valid_point(s.source()) || !internal::is_valid_point(s.target()))
+        throw Domain_error(where() + " is not finite or exceeds 1e300 in magnitude", i);
+      const FT si = size ? *size : CGAL::sqrt(s.squared_length());
+      if (!is_positive_finite(si))
+        throw Domain_error(where() + " has length " + number_to_string(si) +
+                               ": its size must be positive and finite",
+                           i);
+      data->sizes.push_back(si);
+      data->lifted.emplace_back(typename K::Point_3(s.source().x(), s.source().y(), si),
+                                typename K::Point_3(s.target().x(), s.target().y(), si));
+    }
+    data->segments = std::move(segments);
+    data->tree.insert(data->lifted.begin(), data->lifted.end());
+    // The tree builds itself at its first query unless built now; built, it is read-only, so
+    // concurrent const calls are safe. The walk needs no KD-tree of hints.
+    data->tree.do_not_accelerate_distance_queries();
+    data->tree.build();
+    m_data = std::move(data);
+  }
+
+  std::shared_ptr<const Data> m_data;
+};
+
+}  // namespace CVT_2
+
+#endif  // CVT_2_BOUNDARY_LIPSCHITZ_SIZING_2_H

@@ -1,0 +1,65 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// The DensityFunction_2 concept: the density that weighs the Lloyd centroids, and its check.
+#ifndef CVT_2_CONCEPTS_DENSITYFUNCTION_2_H
+#define CVT_2_CONCEPTS_DENSITYFUNCTION_2_H
+
+#include <type_traits>
+#include <utility>
+
+#ifdef DOXYGEN_RUNNING
+// A concept is not a C++ type; as in CGAL, Doxygen sees it as a class that lists the
+// requirements. The compiler never sees this class.
+
+/// \ingroup PkgCvt2Concepts
+/// A density \f$\rho\f$ over the plane, which weighs the centroids of the Lloyd iteration: each
+/// generator moves to the centroid of its cell under \f$\rho\f$, so cells shrink where
+/// \f$\rho\f$ is large. In 2D the cell size \f$\mu\f$ goes as \f$\rho^{-1/4}\f$.
+///
+/// A model is any copyable function object with this call operator, lambdas included. The
+/// quadratures call it from several points of each cell, possibly from several threads at once,
+/// so it must not change state.
+///
+/// \pre \f$\rho(p) > 0\f$ and finite at every point `p` of the domain.
+/// \cgalHasModel `CVT_2::Uniform_density_2<K>`
+/// \cgalHasModel `CVT_2::Sizing_field_density_2<K, Sizing>`
+/// \cgalHasModel any lambda `[](const K::Point_2& p) -> K::FT { ... }`
+/// \sa `CVT_2::is_density_function_2`
+/// \sa `SizingField_2`
+class DensityFunction_2 {
+ public:
+  /// the density \f$\rho(p)\f$, positive and finite.
+  FT operator()(const Point_2& p) const;
+};
+#endif  // DOXYGEN_RUNNING
+
+namespace CVT_2 {
+namespace internal {
+
+template <class D, class K>
+using Density_function_2_result_t =
+    decltype(std::declval<const D&>()(std::declval<const typename K::Point_2&>()));
+
+}  // namespace internal
+
+/// \ingroup PkgCvt2Concepts
+/// Whether `D` provides what `DensityFunction_2` requires for the kernel `K`: a const call
+/// operator that takes a `K::Point_2` and returns something convertible to `K::FT`. A
+/// `std::true_type` or `std::false_type`. It checks the signature only, not that
+/// \f$\rho > 0\f$.
+template <class D, class K, class = void>
+struct is_density_function_2 : std::false_type {};
+
+/// \cond SKIP_IN_MANUAL
+template <class D, class K>
+struct is_density_function_2<D, K, std::void_t<internal::Density_function_2_result_t<D, K>>>
+    : std::is_convertible<internal::Density_function_2_result_t<D, K>, typename K::FT> {};
+/// \endcond
+
+/// \ingroup PkgCvt2Concepts
+/// `is_density_function_2<D, K>::value`.
+template <class D, class K>
+inline constexpr bool is_density_function_2_v = is_density_function_2<D, K>::value;
+
+}  // namespace CVT_2
+
+#endif  // CVT_2_CONCEPTS_DENSITYFUNCTION_2_H

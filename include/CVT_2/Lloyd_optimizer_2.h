@@ -1,0 +1,183 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Lloyd_optimizer_2: Lloyd iteration on a bounded Voronoi diagram, one evaluation or move at a time.
+#ifndef CVT_2_LLOYD_OPTIMIZER_2_H
+#define CVT_2_LLOYD_OPTIMIZER_2_H
+
+#include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/Cell_moments_2.h>
+#include <CVT_2/Exact_quadrature_2.h>
+#include <CVT_2/Midpoint_quadrature_2.h>
+#include <CVT_2/Uniform_density_2.h>
+#include <CVT_2/exceptions.h>
+#include <CVT_2/internal/move_vertex.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CVT_2 {
+
+/// \ingroup PkgCvt2Ref
+/// Why an optimization stopped.
+enum Lloyd_stop_reason {
+  CONVERGED,                ///< every free generator's move ratio is below the bound
+  MAX_ITERATIONS_REACHED,   ///< `number_of_iterations` moves were done
+  TIME_LIMIT_REACHED,       ///< `maximum_running_time` passed
+  CALLBACK_REQUESTED_STOP,  ///< the callback returned `false`
+  NO_FREE_GENERATOR         ///< nothing can move
+};
+
+/// \ingroup PkgCvt2Ref
+/// What an optimization did. The figures describe the generators as they are at the end:
+/// an independent evaluation of the final points finds the same energy and move ratios.
+struct Lloyd_result {
+  std::size_t number_of_iterations = 0;  ///< moves of all free generators done
+  Lloyd_stop_reason stop_reason = MAX_ITERATIONS_REACHED;  ///< why it stopped
+  double energy = 0;           ///< \f$E = \sum_i \int_{V_i} \rho(y)\|y - x_i\|^2 dy\f$, all cells
+  double max_move_ratio = 0;   ///< \f$\max_i mr(x_i)\f$ over free generators
+  double mean_move_ratio = 0;  ///< the mean of \f$mr(x_i)\f$ over free generators
+  std::vector<double> energy_history;          ///< one per evaluation, the first before any move
+  std::vector<double> max_move_ratio_history;  ///< likewise
+  std::vector<double> mean_move_ratio_history; ///< likewise
+  double seconds = 0;                          ///< running time
+};
+
+namespace internal {
+
+// Checks each value of a user density: a value that is not positive and finite names the point.
+template <class Density, class Point_2>
+struct Checked_density {
+  const Density& rho;
+  auto operator()(const Point_2& p) const {
+    const auto r = rho(p);
+    if (!(r > 0) || !std::isfinite(CGAL::to_double(r)))
+      throw Domain_error("the density is " + std::to_string(CGAL::to_double(r)) + " at " +
+                         to_string(p) + ": it must be positive and finite");
+    return r;
+  }
+};
+
+template <class K, class Density>
+using Default_quadrature =
+    std::conditional_t<is_uniform_density<Density>::value, Exact_quadrature_2<K>,
+                       Midpoint_quadrature_2<K>>;
+
+}  // namespace internal
+
+/// \ingroup PkgCvt2Ref
+/// Lloyd iteration on the bounded Voronoi diagram of a constrained Delaunay triangulation,
+/// usable step by step: `evaluate()` computes the diagram, the moments of every cell, the
+/// energy and the move ratios \f$mr(x) = \|x - x^*\| / \mathrm{diameter}(V)\f$ of the free
+/// generators; `move()` moves every free generator to the centroid \f$x^*\f$ of its cell.
+/// `lloyd_optimize_2()` drives it with the paper's stopping rule.
+///
+/// The triangulation is updated in place, in the structure the user sees: a generator moves
+/// within its star (the faces around it keep their orientation, so it crosses no edge and so
+/// no constraint; a target beyond the star is approached in several iterations), then edge
+/// flips restore the constrained Delaunay property. Vertex handles stay valid; constrained
+/// vertices never move.
+///
+/// \tparam CDT as for `Bounded_voronoi_diagram_2`, with its domain marked.
+/// \tparam Density a model of `DensityFunction_2`.
+/// \tparam Quadrature a model of `CellQuadrature_2`; by default exact formulas for a uniform
+///         density, the paper's midpoint rule otherwise.
+template <class CDT, class Density = Uniform_density_2<typename CDT::Geom_traits>,
+          class Quadrature = internal::Default_quadrature<typename CDT::Geom_traits, Density>>
+class Lloyd_optimizer_2 {
+ public:
+  using Triangulation = CDT;                              ///< the triangulation type
+  using Kernel = typename CDT::Geom_traits;               ///< its kernel
+  using FT = typename Kernel::FT;                         ///< number type
+  using Point_2 = typename Kernel::Point_2;               ///< point type
+  using Vertex_handle = typename CDT::Vertex_handle;      ///< a generator
+  using Diagram = Bounded_voronoi_diagram_2<CDT>;        ///< the diagram it iterates on
+  using Density_function = Density;                       ///< the density policy
+  using Cell_quadrature = Quadrature;                     ///< the quadrature policy
+
+  /// What one evaluation found.
+  struct Evaluation {
+    double energy = 0;           ///< of all cells
+    double max_move_ratio = 0;   ///< over the free generators
+    double mean_move_ratio = 0;  ///< over the free generators
+    std::size_t number_of_free_generators = 0;  ///< that have a cell
+    std::size_t resolution = 0;                 ///< the quadrature resolution used
+  };
+
+  /// Prepares the iteration on `cdt` (nothing is computed yet).
+  explicit Lloyd_optimizer_2(CDT& cdt, const Density& rho = Density(),
+                             const Quadrature& quadrature = Quadrature())
+      : m_cdt(cdt), m_rho(rho), m_quadrature(quadrature), m_diagram(cdt) {}
+
+  /// Builds the diagram of the current generators and computes the energy, the centroids and
+  /// the move ratios, integrating with `resolution` sub-triangles a cell (see
+  /// `CellQuadrature_2`). \throws Domain_error if the density is not positive and finite at a
+  /// point where it is evaluated.
+  const Evaluation& evaluate(std::size_t resolution) {
+    m_diagram.update();
+    m_moves.clear();
+    m_evaluation = Evaluation();
+    m_evaluation.resolution = resolution;
+    const internal::Checked_density<Density, Point_2> rho{m_rho};
+    double sum_ratio = 0;
+    m_diagram.for_each_cell([&](Vertex_handle v, const auto& cell) {
+      m_points.clear();
+      bool is_free = true;  // a constrained generator is a vertex of its own cell
+      for (const auto& c : cell) {
+        m_points.push_back(c.point);
+        is_free = is_free && c.type != Diagram::Cell_vertex::GENERATOR;
+      }
+      const Cell_moments_2<Kernel> m = m_quadrature(v->point(), m_points, rho, resolution);
+      m_evaluation.energy += CGAL::to_double(m.energy);
+      if (!is_free || !(m.mass > 0)) return;
+      const typename Kernel::Vector_2 shift = m.first_moment / m.mass;
+      const double ratio = std::sqrt(CGAL::to_double(shift.squared_length()) / squared_diameter());
+      m_evaluation.max_move_ratio = std::max(m_evaluation.max_move_ratio, ratio);
+      sum_ratio += ratio;
+      m_moves.push_back({v, v->point() + shift});
+    });
+    m_evaluation.number_of_free_generators = m_moves.size();
+    if (!m_moves.empty()) m_evaluation.mean_move_ratio = sum_ratio / double(m_moves.size());
+    return m_evaluation;
+  }
+
+  /// Moves every free generator to the centroid that the last `evaluate()` computed (or as
+  /// far toward it as its star allows), then restores the constrained Delaunay property.
+  /// Returns the number of generators that reached their centroid.
+  std::size_t move() {
+    std::size_t reached = 0;
+    for (const auto& [v, target] : m_moves)
+      reached += internal::move_free_vertex(m_cdt, v, target, m_flip_stack) == 1;
+    m_moves.clear();
+    return reached;
+  }
+
+  const Evaluation& last_evaluation() const { return m_evaluation; }  ///< the last evaluation
+  const Diagram& diagram() const { return m_diagram; }  ///< the diagram, as last evaluated
+  const CDT& triangulation() const { return m_cdt; }    ///< the triangulation
+
+ private:
+  double squared_diameter() const {
+    double d = 0;
+    for (std::size_t i = 0; i < m_points.size(); ++i)
+      for (std::size_t j = i + 1; j < m_points.size(); ++j)
+        d = std::max(d, CGAL::to_double(CGAL::squared_distance(m_points[i], m_points[j])));
+    return d;
+  }
+
+  CDT& m_cdt;
+  Density m_rho;
+  Quadrature m_quadrature;
+  Diagram m_diagram;
+  Evaluation m_evaluation;
+  std::vector<Point_2> m_points;                          // the current cell
+  std::vector<std::pair<Vertex_handle, Point_2>> m_moves;  // free generator, centroid
+  std::vector<internal::Flip_candidate<CDT>> m_flip_stack;
+};
+
+}  // namespace CVT_2
+
+#endif  // CVT_2_LLOYD_OPTIMIZER_2_H

@@ -1,0 +1,110 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Moving a free vertex in place: within its star, then edge flips back to constrained Delaunay.
+#ifndef CVT_2_INTERNAL_MOVE_VERTEX_H
+#define CVT_2_INTERNAL_MOVE_VERTEX_H
+
+#include <CGAL/enum.h>
+
+#include <boost/container/small_vector.hpp>
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+namespace CVT_2 {
+namespace internal {
+
+// An edge to examine: a face and an index, and the edge's vertices, which tell whether a flip
+// since has made (face, index) another edge.
+template <class CDT>
+struct Flip_candidate {
+  typename CDT::Face_handle f;
+  int i;
+  typename CDT::Vertex_handle a, b;
+};
+
+// Lawson's flips from the edges of the faces around v: an edge that is not constrained and
+// fails the (symbolically perturbed) empty-circle test is flipped, and the four edges around it
+// are examined in turn.
+template <class CDT>
+void restore_delaunay_around(CDT& cdt, typename CDT::Vertex_handle v,
+                             std::vector<Flip_candidate<CDT>>& stack) {
+  using Face_handle = typename CDT::Face_handle;
+  const auto candidate = [](Face_handle f, int i) {
+    return Flip_candidate<CDT>{f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))};
+  };
+  stack.clear();
+  auto fc = cdt.incident_faces(v), done = fc;
+  do {
+    const int i = fc->index(v);
+    stack.push_back(candidate(fc, i));               // the link edge, opposite v
+    stack.push_back(candidate(fc, CDT::ccw(i)));     // a star edge, each once
+  } while (++fc != done);
+  while (!stack.empty()) {
+    Flip_candidate<CDT> e = stack.back();
+    stack.pop_back();
+    if (e.f->vertex(CDT::ccw(e.i)) != e.a || e.f->vertex(CDT::cw(e.i)) != e.b) {
+      if (!cdt.is_edge(e.a, e.b, e.f, e.i)) continue;  // flipped away
+    }
+    if (!cdt.is_flipable(e.f, e.i)) continue;
+    Face_handle f = e.f;
+    const Face_handle g = f->neighbor(e.i);
+    cdt.flip(f, e.i);
+    // The two faces now share the new edge; their four other edges are examined.
+    for (const Face_handle h : {f, g}) {
+      const int k = h->index(h == f ? g : f);
+      stack.push_back(candidate(h, CDT::ccw(k)));
+      stack.push_back(candidate(h, CDT::cw(k)));
+    }
+  }
+}
+
+// Moves the free vertex v toward `target`, as far as its star stays valid: every face around v
+// keeps its orientation, so the move changes no topology and crosses no edge, constrained or
+// not. If the target lies beyond the star's link, v goes halfway to the link along the way
+// (each later iteration, after the flips, goes on from there). Then flips restore the
+// constrained Delaunay property. Returns the fraction of the way done (0: v did not move).
+template <class CDT>
+double move_free_vertex(CDT& cdt, typename CDT::Vertex_handle v,
+                        const typename CDT::Point_2& target,
+                        std::vector<Flip_candidate<CDT>>& stack) {
+  using Point_2 = typename CDT::Point_2;
+  using FT = typename CDT::Geom_traits::FT;
+  const Point_2 x = v->point();
+  if (x == target) return 1;
+  const auto orientation = cdt.geom_traits().orientation_2_object();
+  boost::container::small_vector<std::pair<Point_2, Point_2>, 16> link;
+  auto fc = cdt.incident_faces(v), done = fc;
+  do {
+    const int i = fc->index(v);
+    link.emplace_back(fc->vertex(CDT::ccw(i))->point(), fc->vertex(CDT::cw(i))->point());
+  } while (++fc != done);
+  // orientation(a, b, x + t (target - x)) is affine in t, positive at t = 0: the largest t
+  // that keeps every face positive, in floating point; exact tests decide below.
+  FT t_max = 1;
+  for (const auto& [a, b] : link) {
+    const FT ux = b.x() - a.x(), uy = b.y() - a.y();
+    const FT o0 = ux * (x.y() - a.y()) - uy * (x.x() - a.x());
+    const FT o1 = ux * (target.y() - a.y()) - uy * (target.x() - a.x());
+    if (o1 <= 0 && o0 > o1) t_max = std::min(t_max, o0 / (o0 - o1));
+  }
+  FT t = t_max >= 1 ? FT(1) : t_max / 2;
+  for (int attempt = 0; attempt < 16; ++attempt, t /= 2) {
+    const Point_2 p = t == 1 ? target
+                             : Point_2(x.x() + t * (target.x() - x.x()),
+                                       x.y() + t * (target.y() - x.y()));
+    const bool valid = std::all_of(link.begin(), link.end(), [&](const auto& e) {
+      return orientation(e.first, e.second, p) == CGAL::LEFT_TURN;
+    });
+    if (!valid) continue;
+    v->set_point(p);
+    restore_delaunay_around(cdt, v, stack);
+    return CGAL::to_double(t);
+  }
+  return 0;
+}
+
+}  // namespace internal
+}  // namespace CVT_2
+
+#endif  // CVT_2_INTERNAL_MOVE_VERTEX_H
