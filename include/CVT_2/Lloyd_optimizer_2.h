@@ -5,6 +5,8 @@
 
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/Cell_moments_2.h>
+#include <CVT_2/Concepts/CellQuadrature_2.h>
+#include <CVT_2/Concepts/DensityFunction_2.h>
 #include <CVT_2/Exact_quadrature_2.h>
 #include <CVT_2/Midpoint_quadrature_2.h>
 #include <CVT_2/Uniform_density_2.h>
@@ -97,6 +99,13 @@ class Lloyd_optimizer_2 {
   using Diagram = Bounded_voronoi_diagram_2<CDT>;        ///< the diagram it iterates on
   using Density_function = Density;                       ///< the density policy
   using Cell_quadrature = Quadrature;                     ///< the quadrature policy
+
+  static_assert(is_density_function_2<Density, Kernel>::value,
+                "Density must model DensityFunction_2: FT operator()(const Point_2&) const");
+  static_assert(is_cell_quadrature_2<Quadrature, Kernel, Density>::value,
+                "Quadrature must model CellQuadrature_2: Cell_moments_2<K> operator()(const "
+                "Point_2& x, const PointRange& cell, const Density& rho, std::size_t resolution) "
+                "const");
 
   /// What one evaluation found.
   struct Evaluation {

