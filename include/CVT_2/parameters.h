@@ -14,7 +14,9 @@ struct Param_not_found {};
 
 #define CVT_2_add_named_parameter(TAG, NAME) \
   struct TAG {};
+#ifndef DOXYGEN_RUNNING  // the options are documented where they are read
 #include <CVT_2/internal/parameters_interface.h>
+#endif
 #undef CVT_2_add_named_parameter
 
 }  // namespace internal_np
@@ -33,8 +35,10 @@ struct Named_function_parameters;
 /// \ingroup PkgCvt2Ref
 /// No named parameter: every option takes its default. `CVT_2::parameters::default_values()`.
 struct No_named_parameters {
-  using SELF_ = No_named_parameters;
+  using SELF_ = No_named_parameters;  ///< the chain type, for the chained calls
+#ifndef DOXYGEN_RUNNING  // the options are documented where they are read
 #include <CVT_2/internal/parameters_interface.h>
+#endif
 };
 
 /// \ingroup PkgCvt2Ref
@@ -42,11 +46,14 @@ struct No_named_parameters {
 /// Made by the functions of `CVT_2::parameters` and chained with the same names.
 template <class T, class Tag, class Base>
 struct Named_function_parameters {
-  using SELF_ = Named_function_parameters;
+  using SELF_ = Named_function_parameters;  ///< the chain type, for the chained calls
   T v;        ///< the value
   Base base;  ///< the rest of the chain
+  /// `value` for `Tag`, before the options of `rest`
   Named_function_parameters(const T& value, const Base& rest) : v(value), base(rest) {}
+#ifndef DOXYGEN_RUNNING  // the options are documented where they are read
 #include <CVT_2/internal/parameters_interface.h>
+#endif
 };
 
 #undef CVT_2_add_named_parameter
@@ -63,7 +70,9 @@ inline No_named_parameters default_values() { return {}; }
   Named_function_parameters<T, internal_np::TAG, No_named_parameters> NAME(const T& v) { \
     return Named_function_parameters<T, internal_np::TAG, No_named_parameters>(v, {});     \
   }
+#ifndef DOXYGEN_RUNNING  // the options are documented where they are read
 #include <CVT_2/internal/parameters_interface.h>
+#endif
 #undef CVT_2_add_named_parameter
 
 }  // namespace parameters

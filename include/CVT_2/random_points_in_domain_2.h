@@ -31,6 +31,8 @@ inline double uniform01(std::mt19937_64& rng) { return double(rng() >> 11) * 0x1
 /// \f$\int\rho\f$ (midpoint rule), so the sample follows \f$\rho\f$ at a resolution finer
 /// than the cells it seeds. A CVT of density \f$\rho\f$ has about \f$\rho^{1/2}\f$ points per
 /// unit area in 2D: sampling with \f$\rho^{1/2}\f$ starts Lloyd iteration close to it.
+/// \param cdt a triangulation whose domain is marked
+/// \param n how many points
 /// \param np optional: `density(rho)` (default uniform), `random_seed(s)` (default 0).
 /// \throws Domain_error if the domain is empty; the density's own errors.
 template <class CDT, class NP = No_named_parameters>
