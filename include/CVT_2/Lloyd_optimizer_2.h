@@ -158,9 +158,9 @@ class Lloyd_optimizer_2 {
   /// Returns the number of generators that reached their centroid.
   std::size_t move() {
     std::size_t reached = 0;
-    for (const auto& [v, target] : m_moves)
-      reached += internal::move_free_vertex(m_cdt, v, target, m_flip_stack) == 1;
+    for (const auto& [v, target] : m_moves) reached += internal::move_free_vertex(m_cdt, v, target) == 1;
     m_moves.clear();
+    internal::restore_delaunay(m_cdt, m_flip_stack);  // one pass: each edge tested once
     return reached;
   }
 

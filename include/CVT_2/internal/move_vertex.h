@@ -23,23 +23,15 @@ struct Flip_candidate {
   typename CDT::Vertex_handle a, b;
 };
 
-// Lawson's flips from the edges of the faces around v: an edge that is not constrained and
-// fails the (symbolically perturbed) empty-circle test is flipped, and the four edges around it
-// are examined in turn.
+// Lawson's flips: an edge on the stack that is not constrained and fails the (symbolically
+// perturbed) empty-circle test is flipped, and the four edges around it are examined in turn.
+// From any valid constrained triangulation this ends at the constrained Delaunay one.
 template <class CDT>
-void restore_delaunay_around(CDT& cdt, typename CDT::Vertex_handle v,
-                             std::vector<Flip_candidate<CDT>>& stack) {
+void lawson_flips(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
   using Face_handle = typename CDT::Face_handle;
   const auto candidate = [](Face_handle f, int i) {
     return Flip_candidate<CDT>{f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))};
   };
-  stack.clear();
-  auto fc = cdt.incident_faces(v), done = fc;
-  do {
-    const int i = fc->index(v);
-    stack.push_back(candidate(fc, i));               // the link edge, opposite v
-    stack.push_back(candidate(fc, CDT::ccw(i)));     // a star edge, each once
-  } while (++fc != done);
   while (!stack.empty()) {
     Flip_candidate<CDT> e = stack.back();
     stack.pop_back();
@@ -59,15 +51,32 @@ void restore_delaunay_around(CDT& cdt, typename CDT::Vertex_handle v,
   }
 }
 
+// Restores the constrained Delaunay property of the domain after its free vertices moved:
+// every edge with a domain face on its side is examined once, then Lawson's flips.
+template <class CDT>
+void restore_delaunay(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
+  stack.clear();
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (!f->is_inside_domain()) continue;
+    for (int i = 0; i < 3; ++i) {
+      const auto g = f->neighbor(i);
+      // each edge once: from the face with the smaller address, or the only domain face
+      if (f->is_constrained(i) || (g->is_inside_domain() && &*g < &*f)) continue;
+      stack.push_back(Flip_candidate<CDT>{f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))});
+    }
+  }
+  lawson_flips(cdt, stack);
+}
+
 // Moves the free vertex v toward `target`, as far as its star stays valid: every face around v
 // keeps its orientation, so the move changes no topology and crosses no edge, constrained or
 // not. If the target lies beyond the star's link, v goes halfway to the link along the way
-// (each later iteration, after the flips, goes on from there). Then flips restore the
-// constrained Delaunay property. Returns the fraction of the way done (0: v did not move).
+// (each later iteration, after the flips, goes on from there). The triangulation stays valid
+// but may no longer be Delaunay: restore_delaunay() follows. Returns the fraction of the way
+// done (0: v did not move).
 template <class CDT>
-double move_free_vertex(CDT& cdt, typename CDT::Vertex_handle v,
-                        const typename CDT::Point_2& target,
-                        std::vector<Flip_candidate<CDT>>& stack) {
+double move_free_vertex(const CDT& cdt, typename CDT::Vertex_handle v,
+                        const typename CDT::Point_2& target) {
   using Point_2 = typename CDT::Point_2;
   using FT = typename CDT::Geom_traits::FT;
   const Point_2 x = v->point();
@@ -98,7 +107,6 @@ double move_free_vertex(CDT& cdt, typename CDT::Vertex_handle v,
     });
     if (!valid) continue;
     v->set_point(p);
-    restore_delaunay_around(cdt, v, stack);
     return CGAL::to_double(t);
   }
   return 0;
