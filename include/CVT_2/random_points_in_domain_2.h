@@ -7,6 +7,7 @@
 #include <CVT_2/parameters.h>
 
 #include <CGAL/Kernel/global_functions.h>
+#include <CGAL/squared_distance_2.h>
 
 #include <algorithm>
 #include <array>

@@ -5,6 +5,7 @@
 
 #include <CVT_2/internal/tag_blind_faces.h>
 
+#include <CGAL/Kernel/global_functions.h>
 #include <CGAL/number_utils.h>
 
 #include <boost/container/small_vector.hpp>

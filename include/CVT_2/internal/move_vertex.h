@@ -4,6 +4,7 @@
 #define CVT_2_INTERNAL_MOVE_VERTEX_H
 
 #include <CGAL/enum.h>
+#include <CGAL/number_utils.h>
 
 #include <boost/container/small_vector.hpp>
 
