@@ -106,7 +106,7 @@ std::vector<Point> initial_points(const Domain& d, std::size_t n) {
 
 void build_ours(CDT& cdt, const Domain& d, const std::vector<Point>& points) {
   CVT_2::IO::insert_poly(cdt, d.poly);
-  CVT_2::insert_generators_2(cdt, points, d.poly.holes);
+  CVT_2::insert_generators_2(cdt, points);
 }
 
 // What a user of plain CGAL builds: vertices, constraints, points.

@@ -33,7 +33,7 @@ int main(int argc, char* argv[]) {
     if (argc > 2) {
       const auto points = CVT_2::IO::read_points<K::Point_2>(argv[2]);
       try {
-        CVT_2::insert_generators_2(cdt, points.points, poly.holes);
+        CVT_2::insert_generators_2(cdt, points.points);
       } catch (const CVT_2::Domain_error& e) {  // say which line of the points file
         throw CVT_2::Domain_error(points.source + ":" + std::to_string(points.lines.at(e.index())) +
                                   ": " + e.what());

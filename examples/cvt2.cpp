@@ -239,11 +239,8 @@ bool has_suffix(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-// Inserting generators marks the domain from hole seeds; a WKT domain has none, so it is
-// marked again from its polygons.
-void insert_generators(CDT& cdt, const std::vector<Point_2>& points, const Domain& domain) {
-  CVT_2::insert_generators_2(cdt, points, domain.holes);
-  if (!domain.polygons.empty()) CVT_2::mark_domain_from_polygons_2(cdt, domain.polygons);
+void insert_generators(CDT& cdt, const std::vector<Point_2>& points, const Domain&) {
+  CVT_2::insert_generators_2(cdt, points);  // keeps the marking, from seeds or polygons
 }
 
 Domain load_poly(const std::string& file, CDT& cdt) {

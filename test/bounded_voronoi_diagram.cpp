@@ -160,8 +160,8 @@ TEST_CASE("cells survive translation and scaling of the input", "[bvd]") {
   const auto pts = random_points_in_domain(ref.cdt, 500, 11);
   std::vector<Point> moved_pts;
   for (const auto& p : pts) moved_pts.emplace_back(scale * p.x() + offset * scale, scale * p.y() - offset * scale);
-  CVT_2::insert_generators_2(ref.cdt, pts, ref.poly.holes);
-  CVT_2::insert_generators_2(moved.cdt, moved_pts, moved.poly.holes);
+  CVT_2::insert_generators_2(ref.cdt, pts);
+  CVT_2::insert_generators_2(moved.cdt, moved_pts);
   const Bvd a(ref.cdt), b(moved.cdt);
   CHECK(total_cell_area(b) == Approx(domain_area(moved.cdt)).epsilon(1e-10));
   // Same generators in the same order: cell areas scale by scale².
@@ -209,7 +209,7 @@ TEST_CASE("degenerate input: cocircular grid, points on constraints, collinear b
   std::vector<Point> grid;
   for (double x = 0; x <= n; x += step)
     for (double y = 0; y <= n; y += step) grid.emplace_back(x, y);
-  CVT_2::insert_generators_2(cdt, grid, poly.holes);
+  CVT_2::insert_generators_2(cdt, grid);
   const Bvd bvd(cdt);
   check_diagram(bvd, 3000, 7);
 }
@@ -221,7 +221,7 @@ TEST_CASE("degenerate input: right triangles put circumcenters exactly on constr
   std::vector<Point> pts;
   for (int i = 1; i < 40; ++i)
     for (int j = 1; j < 40; ++j) pts.emplace_back(i * 0.25, j * 0.25);
-  CVT_2::insert_generators_2(d.cdt, pts, d.poly.holes);
+  CVT_2::insert_generators_2(d.cdt, pts);
   const Bvd bvd(d.cdt);
   check_diagram(bvd, 3000, 9);
 }
@@ -366,7 +366,7 @@ TEST_CASE("nested constraints: a face keeps the first constraint on the way to i
                          Point(5, 5), Point(2, 7), Point(8, 7)};
   for (auto& p : pts) p = turn(p);
   if (reversed) std::reverse(pts.begin(), pts.end());
-  CVT_2::insert_generators_2(cdt, pts, poly.holes);
+  CVT_2::insert_generators_2(cdt, pts);
   const Bvd bvd(cdt);
   Cdt::Face_handle f;
   Cdt::Vertex_handle v[3];
@@ -398,8 +398,8 @@ TEST_CASE("extreme scales: a power-of-two scaling scales every cell exactly", "[
   const auto pts = random_points_in_domain(ref.cdt, 300, 31);
   std::vector<Point> scaled_pts;
   for (const auto& p : pts) scaled_pts.emplace_back(std::ldexp(p.x(), exponent), std::ldexp(p.y(), exponent));
-  CVT_2::insert_generators_2(ref.cdt, pts, ref.poly.holes);
-  CVT_2::insert_generators_2(scaled.cdt, scaled_pts, scaled.poly.holes);
+  CVT_2::insert_generators_2(ref.cdt, pts);
+  CVT_2::insert_generators_2(scaled.cdt, scaled_pts);
   const Bvd a(ref.cdt), b(scaled.cdt);
   Cell ca, cb;
   std::size_t cells = 0, differ = 0;
@@ -429,7 +429,7 @@ TEST_CASE("random domains on a grid: holes, touching polylines, points on constr
     const auto poly = random_domain(seed, generators, 120);
     Cdt cdt;
     CVT_2::IO::insert_poly(cdt, poly);
-    CVT_2::insert_generators_2(cdt, generators, poly.holes);
+    CVT_2::insert_generators_2(cdt, generators);
     const Bvd bvd(cdt);
     check_diagram(bvd, 300, seed);
   }

@@ -97,19 +97,19 @@ TEST_CASE("bad domains give a domain error with file, line and coordinates", "[i
   const auto d = parse(square);
   CVT_2::IO::insert_poly(cdt, d);
   const std::vector<Point> outside{Point(0.5, 0.25), Point(2, 2)};
-  const std::string m = message_of<E>([&] { CVT_2::insert_generators_2(cdt, outside, d.holes); });
+  const std::string m = message_of<E>([&] { CVT_2::insert_generators_2(cdt, outside); });
   CHECK_THAT(m, Catch::Contains("generator (2, 2) lies outside the domain"));
   try {
-    CVT_2::insert_generators_2(cdt, outside, d.holes);
+    CVT_2::insert_generators_2(cdt, outside);
   } catch (const E& e) {
     CHECK(e.index() == 1);
   }
   const std::vector<Point> nan{Point(std::nan(""), 0)};
-  CHECK_THAT(message_of<E>([&] { CVT_2::insert_generators_2(cdt, nan, d.holes); }),
+  CHECK_THAT(message_of<E>([&] { CVT_2::insert_generators_2(cdt, nan); }),
              Catch::Contains("is not finite"));
   // a point on the boundary or on the slit is fine: it becomes a constrained vertex
   const std::vector<Point> on{Point(0.5, 0), Point(0.5, 0.5)};
-  CVT_2::insert_generators_2(cdt, on, d.holes);
+  CVT_2::insert_generators_2(cdt, on);
   const Bvd bvd(cdt);
   std::size_t constrained = 0;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
@@ -180,4 +180,24 @@ TEST_CASE("the domain from polygons with holes, and islands in lakes", "[io][dom
     cdt2.insert_constraint(ring->vertices_begin(), ring->vertices_end(), true);
   CVT_2::mark_domain_2(cdt2, std::vector<Point>{Point(3, 3)});
   CHECK(domain_area(cdt2) == Approx(64 + 4).epsilon(1e-14));
+}
+
+TEST_CASE("inserting generators keeps a domain marked from polygons, holes included", "[io][domain]") {
+  // No seed points anywhere: the marking comes from the polygons and must survive insertion,
+  // also of points on the hole's boundary and on the outer boundary.
+  using Polygon = CGAL::Polygon_2<K>;
+  Polygon outer, hole;
+  for (const auto& p : {Point(0, 0), Point(10, 0), Point(10, 10), Point(0, 10)}) outer.push_back(p);
+  for (const auto& p : {Point(2, 2), Point(2, 8), Point(8, 8), Point(8, 2)}) hole.push_back(p);
+  CGAL::Polygon_with_holes_2<K> pwh(outer);
+  pwh.add_hole(hole);
+  Cdt cdt;
+  for (const Polygon* ring : {&outer, &hole}) cdt.insert_constraint(ring->vertices_begin(), ring->vertices_end(), true);
+  CVT_2::mark_domain_from_polygons_2(cdt, std::vector<CGAL::Polygon_with_holes_2<K>>{pwh});
+  std::vector<Point> pts = random_points_in_domain(cdt, 500, 3);
+  for (const auto& p : {Point(5, 2), Point(2, 5), Point(5, 0), Point(0, 5), Point(8, 8)}) pts.push_back(p);
+  CVT_2::insert_generators_2(cdt, pts);
+  CHECK(domain_area(cdt) == Approx(64).epsilon(1e-14));
+  const Bvd bvd(cdt);
+  CHECK(total_cell_area(bvd) == Approx(64).epsilon(1e-10));
 }

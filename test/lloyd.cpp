@@ -27,7 +27,7 @@ void load_square(Domain& d, double side = 1) {
 
 void add_random_generators(Domain& d, std::size_t n, unsigned seed) {
   const auto pts = CVT_2::random_points_in_domain_2(d.cdt, n, CVT_2::parameters::random_seed(seed));
-  CVT_2::insert_generators_2(d.cdt, pts, d.poly.holes);
+  CVT_2::insert_generators_2(d.cdt, pts);
 }
 
 // E N / A² over its lower bound for uniform density, the regular hexagonal tiling's 5/(18√3).
@@ -183,8 +183,7 @@ TEST_CASE("a user density (a lambda) and a user sizing field shape the cells", "
     const auto rho = [](const Point& p) { return 1.0 + 20.0 * p.x(); };
     const auto sqrt_rho = [&rho](const Point& p) { return std::sqrt(rho(p)); };
     CVT_2::insert_generators_2(
-        d.cdt, CVT_2::random_points_in_domain_2(d.cdt, 600, CVT_2::parameters::random_seed(5).density(sqrt_rho)),
-        d.poly.holes);
+        d.cdt, CVT_2::random_points_in_domain_2(d.cdt, 600, CVT_2::parameters::random_seed(5).density(sqrt_rho)));
     const auto r = CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::density(rho).number_of_iterations(60));
     CHECK(r.energy_history.back() < r.energy_history.front());
     std::size_t left = 0, right = 0;
@@ -200,8 +199,7 @@ TEST_CASE("a user density (a lambda) and a user sizing field shape the cells", "
     // Initial points at about the CVT's density, μ^-2: Lloyd moves points only locally.
     const auto start = [&mu](const Point& p) { return 1 / (mu(p) * mu(p)); };
     CVT_2::insert_generators_2(
-        d.cdt, CVT_2::random_points_in_domain_2(d.cdt, 1500, CVT_2::parameters::random_seed(6).density(start)),
-        d.poly.holes);
+        d.cdt, CVT_2::random_points_in_domain_2(d.cdt, 1500, CVT_2::parameters::random_seed(6).density(start)));
     CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::sizing_field(mu).number_of_iterations(150));
     // Mean cell area in two strips: ∝ μ², so their ratio is about (1.3 / 0.7)² = 3.45.
     const Bvd bvd(d.cdt);

@@ -55,15 +55,18 @@ bool is_in_domain_2(const CDT& cdt, const typename CDT::Point_2& p) {
 }
 
 /// \ingroup PkgCvt2Ref
-/// Inserts generators into a triangulation whose domain is marked, then marks it again with the
-/// same hole seeds. A point on a constraint is kept and becomes a constrained vertex, as in
+/// Inserts generators into a triangulation whose domain is marked, and keeps the marking: the
+/// faces a new vertex creates (all around it) take the flag of the face where it landed, or,
+/// for a point on a constraint, of the face on their side. So any marking is kept, by seeds or
+/// from polygons. A point on a constraint is kept and becomes a constrained vertex, as in
 /// Triangle; a point already present is merged.
 /// \throws Domain_error (with `index()` the position in `points`) for a NaN or infinite
 ///         coordinate, one beyond 1e300 in magnitude, or a point outside the closed domain;
 ///         nothing is inserted then.
-template <class CDT, class PointRange, class SeedRange>
-void insert_generators_2(CDT& cdt, const PointRange& points, const SeedRange& hole_seeds) {
+template <class CDT, class PointRange>
+void insert_generators_2(CDT& cdt, const PointRange& points) {
   using Point_2 = typename CDT::Point_2;
+  using Face_handle = typename CDT::Face_handle;
   const std::vector<Point_2> pts(std::begin(points), std::end(points));
   for (std::size_t i = 0; i < pts.size(); ++i)
     if (!internal::is_valid_point(pts[i]))
@@ -77,13 +80,45 @@ void insert_generators_2(CDT& cdt, const PointRange& points, const SeedRange& ho
   CGAL::spatial_sort(order.begin(), order.end(),
                      CGAL::Spatial_sort_traits_adapter_2<typename CDT::Geom_traits, Map>(
                          CGAL::make_property_map(pts)));
-  typename CDT::Face_handle hint;
+  Face_handle hint;
   for (const std::size_t i : order)
     if (!internal::locate_in_domain(cdt, pts[i], hint))
       throw Domain_error("generator " + internal::to_string(pts[i]) + " lies outside the domain",
                          i);
-  cdt.insert(pts.begin(), pts.end());
-  mark_domain_2(cdt, hole_seeds);
+  for (const std::size_t i : order) {
+    const Point_2& p = pts[i];
+    typename CDT::Locate_type lt;
+    int li;
+    const Face_handle f = cdt.locate(p, lt, li, hint);
+    if (lt == CDT::VERTEX) {  // already there
+      hint = f;
+      continue;
+    }
+    // Where p lands: one face, or an edge with a face on each side (a constraint's two sides
+    // may differ: a boundary).
+    const bool inside = f->is_inside_domain();
+    const bool on_edge = lt == CDT::EDGE;
+    const bool other = on_edge && f->neighbor(li)->is_inside_domain();
+    const Point_2 a = on_edge ? f->vertex(CDT::ccw(li))->point() : p;
+    const Point_2 b = on_edge ? f->vertex(CDT::cw(li))->point() : p;
+    const CGAL::Orientation f_side = on_edge ? CGAL::orientation(a, b, f->vertex(li)->point()) : CGAL::COLLINEAR;
+    const auto v = cdt.insert(p, lt, f, li);
+    auto fc = cdt.incident_faces(v), done = fc;
+    do {
+      bool flag = inside;
+      if (on_edge && inside != other) {
+        const int j = fc->index(v);
+        const Point_2& q = fc->vertex(CDT::ccw(j))->point();
+        const Point_2& r = fc->vertex(CDT::cw(j))->point();
+        const CGAL::Orientation side = CGAL::orientation(a, b, q) != CGAL::COLLINEAR
+                                           ? CGAL::orientation(a, b, q)
+                                           : CGAL::orientation(a, b, r);
+        flag = side == f_side ? inside : other;
+      }
+      fc->set_inside_domain(flag && !cdt.is_infinite(fc));
+    } while (++fc != done);
+    hint = v->face();
+  }
 }
 
 }  // namespace CVT_2

@@ -27,7 +27,7 @@ int main() {
   CVT_2::mark_domain_2(cdt, std::vector<Point_2>());
   const std::vector<Point_2> generators{{0.1, 0.1}, {0.45, 0.47}, {0.5, 0.53}, {0.9, 0.2},
                                         {0.3, 0.9}, {0.8, 0.8},   {0.05, 0.6}};
-  CVT_2::insert_generators_2(cdt, generators, std::vector<Point_2>());
+  CVT_2::insert_generators_2(cdt, generators);
 
   const BVD bvd(cdt);
   double area = 0;

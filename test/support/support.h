@@ -67,7 +67,7 @@ inline std::vector<Point> random_points_in_domain(const Cdt& cdt, std::size_t n,
   return pts;
 }
 inline void insert_random_points(Domain& d, std::size_t n, unsigned seed) {
-  CVT_2::insert_generators_2(d.cdt, random_points_in_domain(d.cdt, n, seed), d.poly.holes);
+  CVT_2::insert_generators_2(d.cdt, random_points_in_domain(d.cdt, n, seed));
 }
 
 // Shoelace relative to the first vertex, so that coordinates far from the origin do not cancel.
