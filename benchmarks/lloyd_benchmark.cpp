@@ -230,17 +230,24 @@ void rises(const std::vector<double>& e, std::size_t& count, double& largest) {
     if (e[i] > e[i - 1]) ++count, largest = std::max(largest, e[i] / e[i - 1] - 1);
 }
 
+// The initial points of a case, or false after telling the benchmark why there are none.
+bool load_points(benchmark::State& state, const std::string& name, std::size_t n,
+                 std::vector<Point>& points) {
+  try {
+    points = initial_points(domain(name), n);
+    return true;
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    return false;
+  }
+}
+
 // Per-iteration times: K iterations of each optimizer from the same points; a CDT build.
 void bm_iteration(benchmark::State& state, const std::string& name) {
   const std::size_t n = static_cast<std::size_t>(state.range(0)), k = iterations_for(n);
   const bool uniform = n <= 100000;
   std::vector<Point> points;
-  try {
-    points = initial_points(domain(name), n);
-  } catch (const std::exception& e) {
-    state.SkipWithError(e.what());
-    return;
-  }
+  if (!load_points(state, name, n, points)) return;
   const Domain& d = domain(name);
   Row& r = rows[{name, n}];
   r.k = k;
@@ -330,12 +337,7 @@ void bm_iteration(benchmark::State& state, const std::string& name) {
 void bm_converge(benchmark::State& state, const std::string& name) {
   const std::size_t n = static_cast<std::size_t>(state.range(0));
   std::vector<Point> points;
-  try {
-    points = initial_points(domain(name), n);
-  } catch (const std::exception& e) {
-    state.SkipWithError(e.what());
-    return;
-  }
+  if (!load_points(state, name, n, points)) return;
   const Domain& d = domain(name);
   Row& r = rows[{name, n}];
   for (auto _ : state) {
