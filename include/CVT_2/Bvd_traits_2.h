@@ -35,9 +35,9 @@ int scale_exponent(std::initializer_list<FT> values) {
   return e;
 }
 template <class FT>
-FT scaled(const FT& x, int e) {  // x 2^e
+FT scaled(const FT& x, int e) {  // x 2^e; ldexp is a library call, skipped in the common case
   if constexpr (std::is_same_v<FT, double>)
-    return std::ldexp(x, e);
+    return e == 0 ? x : std::ldexp(x, e);
   else
     return x;
 }
