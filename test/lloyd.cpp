@@ -273,3 +273,23 @@ TEST_CASE("Lloyd with the automatic k-Lipschitz sizing refines near the boundary
   const auto r = CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::sizing_field(mu).number_of_iterations(40));
   CHECK(r.energy_history.back() < r.energy_history.front());
 }
+
+TEST_CASE("extreme scales: random points work, Lloyd says clearly when moments leave double",
+          "[lloyd][degenerate]") {
+  // At 2^-1000 or 2^1000 the BVD is still right (see the BVD tests), but a cell's moments,
+  // which scale as its size to the fourth, underflow or overflow.
+  const int exponent = GENERATE(-1000, 1000);
+  CAPTURE(exponent);
+  Domain d;
+  load_domain(d, "square_inner_constraints.poly", std::ldexp(1.0, exponent));
+  const auto pts = CVT_2::random_points_in_domain_2(d.cdt, 200, CVT_2::parameters::random_seed(1));
+  REQUIRE(pts.size() == 200);
+  for (const auto& p : pts) CHECK(CVT_2::is_in_domain_2(d.cdt, p));
+  CVT_2::insert_generators_2(d.cdt, pts);
+  try {
+    CVT_2::lloyd_optimize_2(d.cdt);
+    FAIL("no exception");
+  } catch (const CVT_2::Domain_error& e) {
+    CHECK_THAT(e.what(), Catch::Contains("do not fit in double precision"));
+  }
+}

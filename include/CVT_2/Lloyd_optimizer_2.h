@@ -140,8 +140,17 @@ class Lloyd_optimizer_2 {
         is_free = is_free && c.type != Diagram::Cell_vertex::GENERATOR;
       }
       const Cell_moments_2<Kernel> m = m_quadrature(v->point(), m_points, rho, resolution);
+      // Moments scale as the cell's size to the fourth: at extreme scales they leave double.
+      if (!(m.mass > 0) || !std::isfinite(CGAL::to_double(m.mass)) ||
+          !std::isfinite(CGAL::to_double(m.energy)) ||
+          !std::isfinite(CGAL::to_double(m.first_moment.squared_length())))
+        throw Domain_error("the cell of generator " + internal::to_string(v->point()) +
+                           " has mass " + std::to_string(CGAL::to_double(m.mass)) + " and energy " +
+                           std::to_string(CGAL::to_double(m.energy)) +
+                           ": its moments do not fit in double precision (the domain's size or the "
+                           "density's range is too extreme for Lloyd iteration)");
       m_evaluation.energy += CGAL::to_double(m.energy);
-      if (!is_free || !(m.mass > 0)) return;
+      if (!is_free) return;
       const typename Kernel::Vector_2 shift = m.first_moment / m.mass;
       const double ratio = std::sqrt(CGAL::to_double(shift.squared_length()) / squared_diameter());
       m_evaluation.max_move_ratio = std::max(m_evaluation.max_move_ratio, ratio);

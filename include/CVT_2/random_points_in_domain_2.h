@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -43,14 +44,28 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   using Point_2 = typename CDT::Point_2;
   using Triangle = std::array<Point_2, 3>;
   std::mt19937_64 rng(choose_parameter(get_parameter(np, random_seed_t()), std::uint64_t(0)));
-  const auto area = [](const Triangle& t) { return CGAL::to_double(CGAL::area(t[0], t[1], t[2])); };
   std::vector<Triangle> triangles;
-  double domain_area = 0;
+  double extent = 0;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!f->is_inside_domain()) continue;
     triangles.push_back({f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()});
-    domain_area += area(triangles.back());
+    for (int i = 1; i < 3; ++i)
+      extent = std::max({extent, std::abs(CGAL::to_double(triangles.back()[i].x() - triangles.back()[0].x())),
+                         std::abs(CGAL::to_double(triangles.back()[i].y() - triangles.back()[0].y()))});
   }
+  // Areas only weigh the triangles against each other: measured in units of 2^e, the domain's
+  // scale, they neither underflow nor overflow (a domain 1e-300 wide is not empty).
+  int e = 0;
+  if (extent > 0) std::frexp(extent, &e);
+  const auto area = [e](const Triangle& t) {
+    const double ux = std::ldexp(CGAL::to_double(t[1].x() - t[0].x()), -e);
+    const double uy = std::ldexp(CGAL::to_double(t[1].y() - t[0].y()), -e);
+    const double vx = std::ldexp(CGAL::to_double(t[2].x() - t[0].x()), -e);
+    const double vy = std::ldexp(CGAL::to_double(t[2].y() - t[0].y()), -e);
+    return (ux * vy - uy * vx) / 2;
+  };
+  double domain_area = 0;
+  for (const Triangle& t : triangles) domain_area += area(t);
   if (!(domain_area > 0)) throw Domain_error("random points: the domain is empty");
   std::vector<double> cumulative;
   double total = 0;
