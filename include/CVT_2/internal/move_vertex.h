@@ -53,20 +53,21 @@ void lawson_flips(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
 }
 
 // Restores the constrained Delaunay property of the domain after its free vertices moved:
-// every edge with a domain face on its side is examined once, then Lawson's flips.
+// every edge with a domain face on its side is tested in place, and Lawson's flips start from
+// those that fail, so the stack holds only the few edges around flips.
 template <class CDT>
 void restore_delaunay(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
-  stack.clear();
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!f->is_inside_domain()) continue;
     for (int i = 0; i < 3; ++i) {
       const auto g = f->neighbor(i);
       // each edge once: from the face with the smaller address, or the only domain face
       if (f->is_constrained(i) || (g->is_inside_domain() && &*g < &*f)) continue;
-      stack.push_back(Flip_candidate<CDT>{f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))});
+      if (!cdt.is_flipable(f, i)) continue;
+      stack.assign(1, Flip_candidate<CDT>{f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))});
+      lawson_flips(cdt, stack);
     }
   }
-  lawson_flips(cdt, stack);
 }
 
 // Moves the free vertex v toward `target`, as far as its star stays valid: every face around v
