@@ -161,14 +161,7 @@ class Bounded_voronoi_diagram_2 {
   std::size_t number_of_blinded_faces() const { return m_number_of_blinded_faces; }
 
   /// whether `v` lies in the closed domain, and so has a cell.
-  bool has_cell(Vertex_handle v) const {
-    if (m_cdt.dimension() < 2 || m_cdt.is_infinite(v)) return false;
-    auto fc = m_cdt.incident_faces(v), done = fc;
-    do
-      if (fc->is_inside_domain()) return true;
-    while (++fc != done);
-    return false;
-  }
+  bool has_cell(Vertex_handle v) const { return internal::has_domain_face(m_cdt, v); }
 
   /// whether `v` is a free generator: on no constrained edge. Free generators move under Lloyd
   /// iteration; the others stay and their cells have `v` on their boundary.

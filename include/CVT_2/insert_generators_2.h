@@ -31,13 +31,8 @@ bool locate_in_domain(const CDT& cdt, const typename CDT::Point_2& p,
       return f->is_inside_domain();
     case CDT::EDGE:
       return f->is_inside_domain() || f->neighbor(li)->is_inside_domain();
-    case CDT::VERTEX: {
-      auto fc = cdt.incident_faces(f->vertex(li)), done = fc;
-      do
-        if (fc->is_inside_domain()) return true;
-      while (++fc != done);
-      return false;
-    }
+    case CDT::VERTEX:
+      return has_domain_face(cdt, f->vertex(li));
     default:
       return false;
   }

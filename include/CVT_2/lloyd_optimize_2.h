@@ -53,9 +53,9 @@ Lloyd_result lloyd_run(CDT& cdt, const Density& rho, const NP& np) {
     throw std::invalid_argument("quadrature resolutions must satisfy 1 <= minimum (" + std::to_string(lo) +
                                 ") <= maximum (" + std::to_string(hi) + ")");
 
-  using Quadrature = std::decay_t<decltype(choose_parameter(get_parameter(np, quadrature_t()), Default_quadrature<K, Density>()))>;
-  Lloyd_optimizer_2<CDT, Density, Quadrature> optimizer(
-      cdt, rho, choose_parameter(get_parameter(np, quadrature_t()), Default_quadrature<K, Density>()));
+  const auto quadrature =
+      choose_parameter(get_parameter(np, quadrature_t()), Default_quadrature<K, Density>());
+  Lloyd_optimizer_2<CDT, Density, std::decay_t<decltype(quadrature)>> optimizer(cdt, rho, quadrature);
   Lloyd_result r;
   std::size_t resolution = lo;
   while (true) {

@@ -34,6 +34,17 @@ bool is_valid_point(const Point_2& p) {
          std::abs(y) <= max_coordinate;
 }
 
+// Whether the finite vertex v lies in the closed domain: one of its faces is in the domain.
+template <class CDT>
+bool has_domain_face(const CDT& cdt, typename CDT::Vertex_handle v) {
+  if (cdt.dimension() < 2 || cdt.is_infinite(v)) return false;
+  auto fc = cdt.incident_faces(v), done = fc;
+  do
+    if (fc->is_inside_domain()) return true;
+  while (++fc != done);
+  return false;
+}
+
 // Clears the domain flag of every face reachable from the seeds without crossing a constraint.
 template <class CDT>
 void flood_outside(const CDT& cdt, std::vector<typename CDT::Face_handle>& stack) {

@@ -175,11 +175,7 @@ void insert_poly(CDT& cdt, const Poly_data<typename CDT::Point_2>& data) {
   for (const auto& s : data.segments) on_segment[s[0]] = on_segment[s[1]] = true;
   for (std::size_t i = 0; i < data.vertices.size(); ++i) {
     if (on_segment[i]) continue;
-    bool inside = false;
-    auto fc = cdt.incident_faces(vertices[i]), done = fc;
-    do inside = inside || fc->is_inside_domain();
-    while (++fc != done);
-    if (!inside)
+    if (!internal::has_domain_face(cdt, vertices[i]))
       throw Domain_error(where(data.vertex_lines[i]) + "free vertex " +
                          internal::to_string(data.vertices[i]) + " lies outside the domain");
   }
