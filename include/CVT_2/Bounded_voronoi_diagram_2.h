@@ -11,6 +11,7 @@
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/mark_domain_2.h>
 #include <CVT_2/internal/construct_cell.h>
+#include <CVT_2/internal/prefetch.h>
 #include <CVT_2/internal/tag_blind_faces.h>
 
 #include <CGAL/Polygon_2.h>
@@ -22,17 +23,6 @@
 #include <vector>
 
 namespace CVT_2 {
-namespace internal {
-
-inline void prefetch(const void* p) {
-#if defined(__GNUC__)
-  __builtin_prefetch(p);
-#else
-  (void)p;
-#endif
-}
-
-}  // namespace internal
 
 /// \ingroup PkgCvt2Ref
 /// The bounded Voronoi diagram (BVD) of a constrained Delaunay triangulation, its pseudo-dual
@@ -181,12 +171,25 @@ class Bounded_voronoi_diagram_2 {
   void for_each_cell(Visitor visit) const {
     if (m_cdt.dimension() < 2) return;
     std::vector<Cell_vertex> c;
-    auto ahead = m_cdt.all_faces_begin();  // the fans of the next faces, fetched in advance
+    // The fans of the next faces are fetched in advance, in two steps: the neighbors of the
+    // face `prefetch_distance` ahead, then, halfway, their neighbors and vertices.
+    auto ahead = m_cdt.all_faces_begin(), halfway = ahead;
     for (int i = 0; i < prefetch_distance && ahead != m_cdt.all_faces_end(); ++i) ++ahead;
+    for (int i = 0; i < prefetch_distance / 2 && halfway != m_cdt.all_faces_end(); ++i) ++halfway;
     for (auto f = m_cdt.all_faces_begin(); f != m_cdt.all_faces_end(); ++f) {
       if (ahead != m_cdt.all_faces_end()) {
         for (int i = 0; i < 3; ++i) internal::prefetch(&*ahead->neighbor(i));
         ++ahead;
+      }
+      if (halfway != m_cdt.all_faces_end()) {
+        for (int i = 0; i < 3; ++i) {
+          const auto g = halfway->neighbor(i);
+          for (int j = 0; j < 3; ++j) {
+            internal::prefetch(&*g->neighbor(j));
+            internal::prefetch(&*g->vertex(j));
+          }
+        }
+        ++halfway;
       }
       for (int i = 0; i < 3; ++i) {
         const Vertex_handle v = f->vertex(i);

@@ -167,7 +167,26 @@ class Lloyd_optimizer_2 {
   /// Returns the number of generators that reached their centroid.
   std::size_t move() {
     std::size_t reached = 0;
-    for (const auto& [v, target] : m_moves) reached += internal::move_free_vertex(m_cdt, v, target) == 1;
+    // The stars are far apart in memory: each is prefetched in steps ahead of its move (its
+    // vertex, the vertex's face, that face's neighbors, theirs and their vertices).
+    const std::size_t n = m_moves.size(), d = 6;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (k + 4 * d < n) internal::prefetch(&*m_moves[k + 4 * d].first);
+      if (k + 3 * d < n) internal::prefetch(&*m_moves[k + 3 * d].first->face());
+      if (k + 2 * d < n) {
+        const auto f = m_moves[k + 2 * d].first->face();
+        for (int i = 0; i < 3; ++i) internal::prefetch(&*f->neighbor(i));
+      }
+      if (k + d < n) {
+        const auto f = m_moves[k + d].first->face();
+        for (int i = 0; i < 3; ++i) {
+          const auto g = f->neighbor(i);
+          internal::prefetch(&*f->vertex(i));
+          for (int j = 0; j < 3; ++j) internal::prefetch(&*g->neighbor(j));
+        }
+      }
+      reached += internal::move_free_vertex(m_cdt, m_moves[k].first, m_moves[k].second) == 1;
+    }
     m_moves.clear();
     internal::restore_delaunay(m_cdt, m_flip_stack);  // one pass: each edge tested once
     return reached;

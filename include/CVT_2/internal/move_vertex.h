@@ -3,6 +3,8 @@
 #ifndef CVT_2_INTERNAL_MOVE_VERTEX_H
 #define CVT_2_INTERNAL_MOVE_VERTEX_H
 
+#include <CVT_2/internal/prefetch.h>
+
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
 
@@ -57,7 +59,24 @@ void lawson_flips(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
 // those that fail, so the stack holds only the few edges around flips.
 template <class CDT>
 void restore_delaunay(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
+  // Faces are visited in memory order; the vertices and neighbors of a face some steps ahead,
+  // then the neighbors' vertices, are prefetched (the in-circle tests read all of them).
+  constexpr int distance = 8;
+  auto ahead = cdt.finite_faces_begin(), ahead2 = ahead;
+  for (int i = 0; i < 2 * distance && ahead != cdt.finite_faces_end(); ++i) ++ahead;
+  for (int i = 0; i < distance && ahead2 != cdt.finite_faces_end(); ++i) ++ahead2;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (ahead != cdt.finite_faces_end()) {
+      for (int i = 0; i < 3; ++i) {
+        prefetch(&*ahead->vertex(i));
+        prefetch(&*ahead->neighbor(i));
+      }
+      ++ahead;
+    }
+    if (ahead2 != cdt.finite_faces_end()) {
+      for (int i = 0; i < 3; ++i) prefetch(&*ahead2->neighbor(i)->vertex(ahead2->neighbor(i)->index(ahead2)));
+      ++ahead2;
+    }
     if (!f->is_inside_domain()) continue;
     for (int i = 0; i < 3; ++i) {
       const auto g = f->neighbor(i);
