@@ -116,6 +116,14 @@ class Lloyd_optimizer_2 {
     std::size_t resolution = 0;                 ///< the quadrature resolution used
   };
 
+  /// A free generator as the last evaluation found it: the gradient of the energy with respect
+  /// to its position is \f$2\,m\,(x - x^*)\f$ (Du, Faber, Gunzburger 1999).
+  struct Free_generator {
+    Vertex_handle vertex;  ///< the generator \f$x\f$
+    Point_2 centroid;      ///< \f$x^*\f$, the centroid of its cell
+    FT mass;               ///< \f$m = \int_V \rho\f$
+  };
+
   /// Prepares the iteration on `cdt` (nothing is computed yet).
   explicit Lloyd_optimizer_2(CDT& cdt, const Density& rho = Density(),
                              const Quadrature& quadrature = Quadrature())
@@ -155,7 +163,7 @@ class Lloyd_optimizer_2 {
       const double ratio = std::sqrt(CGAL::to_double(shift.squared_length()) / squared_diameter());
       m_evaluation.max_move_ratio = std::max(m_evaluation.max_move_ratio, ratio);
       sum_ratio += ratio;
-      m_moves.push_back({v, v->point() + shift});
+      m_moves.push_back({v, v->point() + shift, m.mass});
     });
     m_evaluation.number_of_free_generators = m_moves.size();
     if (!m_moves.empty()) m_evaluation.mean_move_ratio = sum_ratio / double(m_moves.size());
@@ -171,21 +179,21 @@ class Lloyd_optimizer_2 {
     // vertex, the vertex's face, that face's neighbors, theirs and their vertices).
     const std::size_t n = m_moves.size(), d = 6;
     for (std::size_t k = 0; k < n; ++k) {
-      if (k + 4 * d < n) internal::prefetch(&*m_moves[k + 4 * d].first);
-      if (k + 3 * d < n) internal::prefetch(&*m_moves[k + 3 * d].first->face());
+      if (k + 4 * d < n) internal::prefetch(&*m_moves[k + 4 * d].vertex);
+      if (k + 3 * d < n) internal::prefetch(&*m_moves[k + 3 * d].vertex->face());
       if (k + 2 * d < n) {
-        const auto f = m_moves[k + 2 * d].first->face();
+        const auto f = m_moves[k + 2 * d].vertex->face();
         for (int i = 0; i < 3; ++i) internal::prefetch(&*f->neighbor(i));
       }
       if (k + d < n) {
-        const auto f = m_moves[k + d].first->face();
+        const auto f = m_moves[k + d].vertex->face();
         for (int i = 0; i < 3; ++i) {
           const auto g = f->neighbor(i);
           internal::prefetch(&*f->vertex(i));
           for (int j = 0; j < 3; ++j) internal::prefetch(&*g->neighbor(j));
         }
       }
-      reached += internal::move_free_vertex(m_cdt, m_moves[k].first, m_moves[k].second) == 1;
+      reached += internal::move_free_vertex(m_cdt, m_moves[k].vertex, m_moves[k].centroid) == 1;
     }
     m_moves.clear();
     internal::restore_delaunay(m_cdt, m_flip_stack);  // one pass: each edge tested once
@@ -193,6 +201,9 @@ class Lloyd_optimizer_2 {
   }
 
   const Evaluation& last_evaluation() const { return m_evaluation; }  ///< the last evaluation
+  /// The free generators of the last evaluation, in the order the cells were visited (a
+  /// `move()` empties it).
+  const std::vector<Free_generator>& free_generators() const { return m_moves; }
   const Diagram& diagram() const { return m_diagram; }  ///< the diagram, as last evaluated
   const CDT& triangulation() const { return m_cdt; }    ///< the triangulation
 
@@ -211,7 +222,7 @@ class Lloyd_optimizer_2 {
   Diagram m_diagram;
   Evaluation m_evaluation;
   std::vector<Point_2> m_points;                          // the current cell
-  std::vector<std::pair<Vertex_handle, Point_2>> m_moves;  // free generator, centroid
+  std::vector<Free_generator> m_moves;
   std::vector<internal::Flip_candidate<CDT>> m_flip_stack;
 };
 
