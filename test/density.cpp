@@ -186,6 +186,46 @@ TEST_CASE("the boundary sizing equals a brute-force minimum over all boundary se
   CHECK(wrong == 0);
 }
 
+TEST_CASE("the boundary sizing restricted to a disk equals it bit for bit in the disk",
+          "[density][sizing]") {
+  const std::string file = GENERATE(as<std::string>{}, "earcut_dude.poly",
+                                    "us_massachusetts_counties.poly", "world_land_110m.poly");
+  const double k = GENERATE(0.1, 2.0);
+  Domain d;
+  load_domain(d, file);
+  const Sizing mu(d.cdt, k);
+  const auto rho = CVT_2::make_sizing_field_density_2<K>(mu);
+  STATIC_REQUIRE(CVT_2::has_restrict_to_disk_v<Sizing, K>);
+  STATIC_REQUIRE(CVT_2::has_restrict_to_disk_v<decltype(rho), K>);
+  STATIC_REQUIRE(!CVT_2::has_restrict_to_disk_v<Uniform, K>);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const double diag = diagonal(d.cdt);
+  std::size_t wrong = 0, kept = 0, disks = 0;
+  for (const Point& c : sample_points(d.cdt, 200, 23)) {
+    // radii from far below to far above the local size, and 0
+    for (const double r : {0.0, 1e-4 * diag, 1e-2 * diag, 0.2 * diag}) {
+      const auto local = mu.restrict_to_disk(c, r);
+      const auto local_rho = rho.restrict_to_disk(c, r);
+      kept += local.number_of_segments();
+      ++disks;
+      for (int j = 0; j < 20; ++j) {  // on the circle (the worst case) and inside
+        const double a = 2 * CGAL_PI * unit(rng), t = j < 5 ? 1.0 : std::sqrt(unit(rng));
+        const Point y(c.x() + t * r * std::cos(a), c.y() + t * r * std::sin(a));
+        if (local(y) != mu(y) || local_rho(y) != rho(y)) {
+          if (++wrong <= 3) {
+            CAPTURE(file, k, c, r, y, local.number_of_segments());
+            CHECK(local(y) == mu(y));
+          }
+        }
+      }
+    }
+  }
+  CAPTURE(file, k, double(kept) / double(disks), mu.segments().size());
+  CHECK(wrong == 0);
+  CHECK(kept < disks * mu.segments().size() / 4);  // it does restrict
+}
+
 TEST_CASE("the boundary sizing is k-Lipschitz", "[density][sizing]") {
   const std::string file =
       GENERATE(as<std::string>{}, "us_massachusetts_counties.poly", "world_land_110m.poly");

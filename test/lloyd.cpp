@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <map>
+#include <type_traits>
 
 using namespace support;
 
@@ -272,6 +273,31 @@ TEST_CASE("Lloyd with the automatic k-Lipschitz sizing refines near the boundary
   const CVT_2::Boundary_lipschitz_sizing_2<K> mu(d.cdt, 0.1);
   const auto r = CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::sizing_field(mu).number_of_iterations(40));
   CHECK(r.energy_history.back() < r.energy_history.front());
+}
+
+TEST_CASE("a density restricted to each cell's disk gives Lloyd the same bits as the whole field",
+          "[lloyd]") {
+  Domain a, b;
+  load_domain(a, "us_massachusetts_counties.poly");
+  load_domain(b, "us_massachusetts_counties.poly");
+  add_random_generators(a, 600, 3);
+  add_random_generators(b, 600, 3);
+  const CVT_2::Boundary_lipschitz_sizing_2<K> mu(a.cdt, 0.1);
+  const auto rho = CVT_2::make_sizing_field_density_2<K>(mu);
+  const auto whole = [&rho](const Point& p) { return rho(p); };  // hides restrict_to_disk
+  STATIC_REQUIRE(CVT_2::has_restrict_to_disk_v<decltype(rho), K>);
+  STATIC_REQUIRE(!CVT_2::has_restrict_to_disk_v<decltype(whole), K>);
+  CVT_2::Lloyd_optimizer_2<Cdt, std::decay_t<decltype(rho)>> la(a.cdt, rho);
+  CVT_2::Lloyd_optimizer_2<Cdt, std::decay_t<decltype(whole)>> lb(b.cdt, whole);
+  for (const std::size_t resolution : {10, 10, 10, 100, 100, 100}) {
+    const auto ea = la.evaluate(resolution);
+    const auto eb = lb.evaluate(resolution);
+    CAPTURE(resolution);
+    REQUIRE(ea.energy == eb.energy);
+    REQUIRE(ea.max_move_ratio == eb.max_move_ratio);
+    la.move();
+    lb.move();
+  }
 }
 
 TEST_CASE("extreme scales: random points work, Lloyd says clearly when moments leave double",

@@ -9,9 +9,12 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_2.h>
 #include <CVT_2/Concepts/BvdFaceBase_2.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/mark_domain_2.h>
+
+#include <boost/container/small_vector.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -57,6 +60,8 @@ namespace CVT_2 {
 /// \sa `Sizing_field_density_2`
 template <class K>
 class Boundary_lipschitz_sizing_2 {
+  struct Data;
+
   // Tells the triangulation constructor from the segment range one.
   template <class T, class = void>
   struct Is_triangulation : std::false_type {};
@@ -124,6 +129,29 @@ class Boundary_lipschitz_sizing_2 {
     initialize(std::move(s), k, size);
   }
 
+  /// The field restricted to a disk (see `restrict_to_disk()`): a model of `SizingField_2` that
+  /// evaluates only the few segments that can be the minimizing one there.
+  class Restriction {
+   public:
+    /// \f$\min_s (k\, d(x, s) + \mathrm{size}(s))\f$ over the kept segments.
+    FT operator()(const Point_2& x) const {
+      std::optional<FT> best;
+      for (const std::size_t i : m_candidates) {
+        const FT v = value(*m_data, x, i);
+        if (!best || v < *best) best = v;
+      }
+      return best ? *best : FT(std::numeric_limits<double>::quiet_NaN());
+    }
+    /// the number of segments kept
+    std::size_t number_of_segments() const { return m_candidates.size(); }
+
+   private:
+    friend class Boundary_lipschitz_sizing_2;
+    explicit Restriction(const Data& d) : m_data(&d) {}
+    const Data* m_data;
+    std::vector<std::size_t> m_candidates;
+  };
+
   /// \f$\mu(x) = \min_s (k\, d(x, s) + \mathrm{size}(s))\f$.
   /// \pre `x` has finite coordinates; otherwise the result is NaN or infinite, which
   ///      `Sizing_field_density_2` reports.
@@ -131,6 +159,26 @@ class Boundary_lipschitz_sizing_2 {
     Search search(*m_data, x);
     m_data->tree.traversal_with_priority(x, search);
     return search.best ? *search.best : FT(std::numeric_limits<double>::quiet_NaN());
+  }
+
+  /// The field near `center`, where few segments can be the minimizing one.
+  ///
+  /// The call operator of the result equals this one, bit for bit, at every point \f$y\f$ with
+  /// \f$|y - c| \le r\f$ (\f$c\f$ = `center`, \f$r\f$ = `radius`), and costs a few segment
+  /// distances instead of a walk of the tree. Since \f$\mu\f$ is \f$k\f$-Lipschitz, a segment
+  /// \f$s\f$ with \f$k\,d(c, s) + \mathrm{size}(s) > \mu(c) + 2kr\f$ is beaten at every such
+  /// \f$y\f$ by the segment that gives \f$\mu(c)\f$; the others are kept (one walk of the tree).
+  /// The Lloyd optimizer restricts the field to the disk around each generator that holds its
+  /// cell, so the many quadrature points of a cell cost about one query.
+  /// \pre `center` and `radius` are finite, `radius` \f$\ge 0\f$. The result refers to this
+  /// field's data, which must outlive it.
+  Restriction restrict_to_disk(const Point_2& center, const FT& radius) const {
+    Collect collect(*m_data, center, 2 * CGAL::to_double(m_data->k * radius));
+    m_data->tree.traversal_with_priority(center, collect);
+    Restriction r(*m_data);
+    for (const auto& [value, i] : collect.candidates)
+      if (value <= collect.best_double + collect.slack) r.m_candidates.push_back(i);
+    return r;
   }
 
   FT lipschitz_constant() const { return m_data->k; }  ///< \f$k\f$
@@ -154,6 +202,12 @@ class Boundary_lipschitz_sizing_2 {
     Tree tree;
   };
 
+  // The value of segment i at x: all evaluations go through here, so a restriction gives the
+  // same bits as the whole tree.
+  static FT value(const Data& data, const Point_2& x, std::size_t i) {
+    return data.k * CGAL::sqrt(CGAL::squared_distance(x, data.segments[i])) + data.sizes[i];
+  }
+
   // The branch and bound walk of the tree, nearer boxes first (CGAL's priority traversal,
   // which its ray queries use). A box cannot beat `best` if k d_xy(x, box) + z_min >= best:
   // each segment in it has d(x, s) >= d_xy(x, box) and size(s) >= z_min.
@@ -162,25 +216,27 @@ class Boundary_lipschitz_sizing_2 {
     const Data& data;
     const Point_2& x;
     const double xd, yd, k;
-    const typename K::Compute_squared_distance_2 squared_distance;
     std::optional<FT> best;  // none until a segment is evaluated
     double best_double = std::numeric_limits<double>::infinity();
+    // A bound and a value are both rounded: a box is skipped only when its bound beats the best
+    // value by more than rounding, so the segments that tie with the minimum are all seen and the
+    // result is the minimum of the formula over all segments, whatever the walk.
+    static constexpr double tolerance = 1 + 1e-12;
 
     Search(const Data& d, const Point_2& p)
         : data(d),
           x(p),
           xd(CGAL::to_double(p.x())),
           yd(CGAL::to_double(p.y())),
-          k(CGAL::to_double(d.k)),
-          squared_distance(K().compute_squared_distance_2_object()) {}
+          k(CGAL::to_double(d.k)) {}
 
     bool go_further() const { return true; }
     void intersection(const Point_2&, const Primitive& primitive) {
       const std::size_t i = static_cast<std::size_t>(primitive.id() - data.lifted.begin());
-      const FT value = data.k * CGAL::sqrt(squared_distance(x, data.segments[i])) + data.sizes[i];
-      if (!best || value < *best) {
-        best = value;
-        best_double = CGAL::to_double(value);
+      const FT v = value(data, x, i);
+      if (!best || v < *best) {
+        best = v;
+        best_double = CGAL::to_double(v);
       }
     }
     double lower_bound(const CGAL::Bbox_3& b) const {
@@ -190,12 +246,46 @@ class Boundary_lipschitz_sizing_2 {
     }
     template <class Node>
     bool do_intersect(const Point_2&, const Node& node) const {
-      return lower_bound(node.bbox()) < best_double;
+      return lower_bound(node.bbox()) <= best_double * tolerance;
     }
     template <class Node>
     std::pair<bool, Priority> do_intersect_with_priority(const Point_2&, const Node& node) const {
       const double b = lower_bound(node.bbox());
-      return {b < best_double, -b};
+      return {b <= best_double * tolerance, -b};
+    }
+  };
+
+  // The same walk with the bound raised by `margin` = 2kr: it keeps every segment whose value
+  // at x may come within the margin of the minimum (a superset: the bound only falls).
+  struct Collect : Search {
+    double margin, slack;
+    boost::container::small_vector<std::pair<double, std::size_t>, 16> candidates;
+
+    Collect(const Data& d, const Point_2& p, double m)
+        : Search(d, p),
+          margin(m),
+          // rounding of the values and bounds, and of quadrature points near the disk's edge
+          slack(m * 1e-6 + 1e-12 * (std::abs(this->xd) + std::abs(this->yd) + m)) {}
+
+    void intersection(const Point_2& p, const Primitive& primitive) {
+      const std::size_t i = static_cast<std::size_t>(primitive.id() - this->data.lifted.begin());
+      const FT v = value(this->data, this->x, i);
+      if (!this->best || v < *this->best) {
+        this->best = v;
+        this->best_double = CGAL::to_double(v);
+      }
+      (void)p;
+      if (CGAL::to_double(v) <= this->best_double + margin + slack)
+        candidates.emplace_back(CGAL::to_double(v) - margin, i);
+    }
+    template <class Node>
+    bool do_intersect(const Point_2&, const Node& node) const {
+      return this->lower_bound(node.bbox()) <= this->best_double + margin + slack;
+    }
+    template <class Node>
+    std::pair<bool, double> do_intersect_with_priority(const Point_2&, const Node& node) const {
+      const double b = this->lower_bound(node.bbox());
+      return {b <= this->best_double + margin + slack, -b};
     }
   };
 

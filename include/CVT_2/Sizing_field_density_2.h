@@ -5,6 +5,7 @@
 #define CVT_2_SIZING_FIELD_DENSITY_2_H
 
 #include <CGAL/number_utils.h>
+#include <CVT_2/Concepts/DensityFunction_2.h>
 #include <CVT_2/Concepts/SizingField_2.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/mark_domain_2.h>
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 namespace CVT_2 {
@@ -57,6 +59,14 @@ class Sizing_field_density_2 {
     const double r = CGAL::to_double(rho);
     if (!(r > 0) || !std::isfinite(r)) throw error(p, mu, "1/size^4 leaves the range of double");
     return rho;
+  }
+
+  /// The density of the sizing field's restriction to the disk (see
+  /// `DensityFunction_2::restrict_to_disk()`); only if `Sizing` has one.
+  template <class S = Sizing, std::enable_if_t<has_restrict_to_disk_v<S, K>, int> = 0>
+  auto restrict_to_disk(const Point_2& center, const FT& radius) const {
+    using Restriction = decltype(m_sizing.restrict_to_disk(center, radius));
+    return Sizing_field_density_2<K, Restriction>(m_sizing.restrict_to_disk(center, radius));
   }
 
   const Sizing& sizing() const { return m_sizing; }  ///< the sizing field \f$\mu\f$

@@ -29,6 +29,15 @@ class DensityFunction_2 {
  public:
   /// the density \f$\rho(p)\f$, positive and finite.
   FT operator()(const Point_2& p) const;
+
+  /// Optional: a model of `DensityFunction_2` equal to this one (bit for bit) at every point
+  /// within distance `radius` of `center`, and cheaper to evaluate there. The Lloyd optimizer
+  /// asks for it once a cell, with the disk around the generator that holds the cell, when
+  /// `CVT_2::has_restrict_to_disk` says it exists; the quadrature then evaluates the
+  /// restriction. `CVT_2::Boundary_lipschitz_sizing_2` (through
+  /// `CVT_2::Sizing_field_density_2`) provides one: near a point only a few boundary segments
+  /// can be the nearest.
+  Restriction restrict_to_disk(const Point_2& center, const FT& radius) const;
 };
 #endif  // DOXYGEN_RUNNING
 
@@ -59,6 +68,27 @@ struct is_density_function_2<D, K, std::void_t<internal::Density_function_2_resu
 /// `is_density_function_2<D, K>::value`.
 template <class D, class K>
 inline constexpr bool is_density_function_2_v = is_density_function_2<D, K>::value;
+
+/// \ingroup PkgCvt2Concepts
+/// Whether the density function or sizing field `F` has the optional member of
+/// `DensityFunction_2` and `SizingField_2`:
+/// `restrict_to_disk(const K::Point_2& center, const K::FT& radius) const`. A
+/// `std::true_type` or `std::false_type`.
+template <class F, class K, class = void>
+struct has_restrict_to_disk : std::false_type {};
+
+/// \cond SKIP_IN_MANUAL
+template <class F, class K>
+struct has_restrict_to_disk<F, K,
+                            std::void_t<decltype(std::declval<const F&>().restrict_to_disk(
+                                std::declval<const typename K::Point_2&>(),
+                                std::declval<const typename K::FT&>()))>> : std::true_type {};
+/// \endcond
+
+/// \ingroup PkgCvt2Concepts
+/// `has_restrict_to_disk<F, K>::value`.
+template <class F, class K>
+inline constexpr bool has_restrict_to_disk_v = has_restrict_to_disk<F, K>::value;
 
 }  // namespace CVT_2
 

@@ -27,6 +27,11 @@ class SizingField_2 {
  public:
   /// the size \f$\mu(p)\f$, positive and finite.
   FT operator()(const Point_2& p) const;
+
+  /// Optional: a model of `SizingField_2` equal to this one (bit for bit) within distance
+  /// `radius` of `center`, and cheaper there; `CVT_2::Sizing_field_density_2` then offers the
+  /// same for its density (see `DensityFunction_2::restrict_to_disk()`).
+  Restriction restrict_to_disk(const Point_2& center, const FT& radius) const;
 };
 #endif  // DOXYGEN_RUNNING
 
