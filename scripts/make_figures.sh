@@ -1,30 +1,73 @@
 #!/bin/sh
-# Rebuilds the README's figures (doc/fig/*.png) from the examples; needs rsvg-convert
-# (Debian: librsvg2-bin) and python3.
+# Rebuilds the README's figures (doc/fig/*.png) from the examples, each run with its defaults;
+# needs rsvg-convert (Debian: librsvg2-bin), pngquant and python3. Takes about 2 minutes once
+# built. CVT_2_BUILD_DIR: the build directory (default build); JOBS: parallel compile jobs (2).
 set -e
 root=$(cd "$(dirname "$0")/.." && pwd)
-"$root/scripts/install_dependencies.sh" librsvg2-bin
-cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build "$root/build" --target bvd_cells lloyd_four_clusters -j 2
+build=${CVT_2_BUILD_DIR:-$root/build}
+"$root/scripts/install_dependencies.sh" librsvg2-bin pngquant
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
+cmake --build "$build" -j "${JOBS:-2}" --target bvd_cells lloyd_four_clusters lloyd_uniform \
+  custom_density lloyd_adaptive lloyd_france lloyd_world lloyd_curved_hole
+ex="$build/examples"
+data="$root/examples/data"
+fig="$root/doc/fig"
 tmp=$(mktemp -d)
-"$root/build/examples/bvd_cells" "$root/examples/data/four_clusters.poly" \
-  "$root/examples/data/four_clusters_points.txt" "$tmp/bvd.svg" > /dev/null
-rsvg-convert -w 700 "$tmp/bvd.svg" -o "$root/doc/fig/bvd_four_clusters.png"
-(cd "$tmp" && "$root/build/examples/lloyd_four_clusters" "$root/examples/data/four_clusters.poly" lloyd)
-python3 - "$tmp" <<'PY'
+
+# png WIDTH IN.svg OUT.png: rendered WIDTH pixels wide, in 64 colours (a third of the bytes).
+png() {
+  rsvg-convert -w "$1" "$2" -o "$tmp/render.png"
+  pngquant --force --output "$3" 64 "$tmp/render.png"
+}
+# combine row|column OUT.svg IN.svg...: the pictures side by side or one above the other.
+combine() {
+  python3 - "$@" <<'PY'
 import re, sys
-d = sys.argv[1]
-out, x, h = [], 0, 0
-for name in ("lloyd_0.svg", "lloyd_10.svg", "lloyd_converged.svg"):  # side by side
-    s = open(f"{d}/{name}").read()
-    w = float(re.search(r'width="([0-9.]+)"', s).group(1))
-    h = float(re.search(r'height="([0-9.]+)"', s).group(1))
-    out.append(re.sub(r"<svg ", f'<svg x="{x}" y="0" ', s, count=1))
-    x += w + 20
-open(f"{d}/fig.svg", "w").write(
-    f'<svg xmlns="http://www.w3.org/2000/svg" width="{x - 20}" height="{h}">'
-    '<rect width="100%" height="100%" fill="white"/>' + "".join(out) + "</svg>")
+layout, out, inputs = sys.argv[1], sys.argv[2], sys.argv[3:]
+parts, x, y, w, h = [], 0, 0, 0, 0
+for name in inputs:
+    s = open(name).read()
+    pw = float(re.search(r'width="([0-9.]+)"', s).group(1))
+    ph = float(re.search(r'height="([0-9.]+)"', s).group(1))
+    parts.append(re.sub(r"<svg ", f'<svg x="{x}" y="{y}" ', s, count=1))
+    w, h = max(w, x + pw), max(h, y + ph)
+    if layout == "row":
+        x += pw + 20
+    else:
+        y += ph + 20
+open(out, "w").write(
+    f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}">'
+    '<rect width="100%" height="100%" fill="white"/>' + "".join(parts) + "</svg>")
 PY
-rsvg-convert -w 1200 "$tmp/fig.svg" -o "$root/doc/fig/lloyd_four_clusters.png"
+}
+
+cd "$tmp"
+"$ex/bvd_cells" "$data/four_clusters.poly" "$data/four_clusters_points.txt" bvd.svg > /dev/null
+png 700 bvd.svg "$fig/bvd_four_clusters.png"
+
+"$ex/lloyd_four_clusters" "$data/four_clusters.poly" lloyd
+combine row fig.svg lloyd_0.svg lloyd_10.svg lloyd_converged.svg
+png 1200 fig.svg "$fig/lloyd_four_clusters.png"
+
+"$ex/lloyd_uniform"
+"$ex/custom_density"
+combine row fig.svg lloyd_uniform.svg custom_density.svg
+png 1200 fig.svg "$fig/lloyd_uniform_custom_density.png"
+
+"$ex/lloyd_adaptive"
+png 1200 lloyd_adaptive.svg "$fig/lloyd_adaptive.png"
+
+"$ex/lloyd_france" | grep -v '^ '
+png 1000 lloyd_france.svg "$fig/lloyd_france.png"
+
+"$ex/lloyd_world"
+combine column fig.svg lloyd_world_uniform.svg lloyd_world_adaptive.svg
+png 1200 fig.svg "$fig/lloyd_world.png"
+
+"$ex/lloyd_curved_hole"
+combine row fig.svg lloyd_curved_hole_uniform.svg lloyd_curved_hole_adaptive.svg
+png 1200 fig.svg "$fig/lloyd_curved_hole.png"
+
+cd "$root"
 rm -r "$tmp"
-echo "figures in $root/doc/fig"
+ls -l "$fig"
