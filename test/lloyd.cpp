@@ -10,7 +10,9 @@
 
 #include <cmath>
 #include <map>
+#include <string>
 #include <type_traits>
+#include <vector>
 
 using namespace support;
 
@@ -298,6 +300,60 @@ TEST_CASE("a density restricted to each cell's disk gives Lloyd the same bits as
     la.move();
     lb.move();
   }
+}
+
+TEST_CASE("Lloyd gives the same bits whatever the number of threads and from run to run", "[lloyd]") {
+  // Enough generators for many chunks of cells, a domain with holes and inner constraints, and
+  // a density evaluated at many points (midpoint quadrature).
+  const auto rho = [](const Point& p) { return 1.0 + 4.0 * std::exp(-p.x() * p.x() / 4000); };
+  std::vector<std::vector<double>> energies;
+  std::vector<std::vector<Point>> finals;
+  for (const unsigned threads : {1u, 2u, 3u, 2u}) {
+    Domain d;
+    load_domain(d, "us_massachusetts_counties.poly");
+    add_random_generators(d, 20000, 4);
+    CVT_2::Lloyd_optimizer_2<Cdt, decltype(rho)> lloyd(d.cdt, rho);
+    lloyd.set_number_of_threads(threads);
+    REQUIRE(lloyd.diagram().number_of_chunks() > 4);
+    std::vector<double> e;
+    for (int it = 0; it < 4; ++it) {
+      const auto& ev = lloyd.evaluate(10);
+      e.push_back(ev.energy);
+      e.push_back(ev.max_move_ratio);
+      e.push_back(ev.mean_move_ratio);
+      lloyd.move();
+    }
+    std::vector<Point> points;
+    for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v)
+      points.push_back(v->point());
+    energies.push_back(e);
+    finals.push_back(points);
+  }
+  for (std::size_t i = 1; i < energies.size(); ++i) {
+    CAPTURE(i);
+    CHECK(energies[i] == energies[0]);
+    CHECK(finals[i] == finals[0]);
+  }
+}
+
+TEST_CASE("a density error from a worker thread is the one a serial run reports", "[lloyd]") {
+  const auto rho = [](const Point& p) { return p.x() < 0.5 || p.y() < 0.5 ? 1.0 : -1.0; };
+  std::vector<std::string> messages;
+  for (const unsigned threads : {1u, 2u}) {
+    Domain d;
+    load_square(d);
+    add_random_generators(d, 30000, 9);
+    CVT_2::Lloyd_optimizer_2<Cdt, decltype(rho)> lloyd(d.cdt, rho);
+    lloyd.set_number_of_threads(threads);
+    try {
+      lloyd.evaluate(10);
+      messages.push_back("no exception");
+    } catch (const CVT_2::Domain_error& e) {
+      messages.push_back(e.what());
+    }
+  }
+  CHECK_THAT(messages[0], Catch::Contains("the density is -1"));
+  CHECK(messages[1] == messages[0]);
 }
 
 TEST_CASE("extreme scales: random points work, Lloyd says clearly when moments leave double",

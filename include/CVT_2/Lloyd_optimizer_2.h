@@ -13,6 +13,8 @@
 #include <CVT_2/exceptions.h>
 #include <CVT_2/internal/move_vertex.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -135,39 +137,59 @@ class Lloyd_optimizer_2 {
   /// point where it is evaluated.
   const Evaluation& evaluate(std::size_t resolution) {
     m_diagram.update();
-    m_moves.clear();
     m_evaluation = Evaluation();
     m_evaluation.resolution = resolution;
+    // Cells in the diagram's chunks, on several threads; each chunk sums its own cells in
+    // order, then the chunks are summed in order: the same bits whatever the threads.
+    m_chunks.resize(m_diagram.number_of_chunks());
+    for (Chunk& c : m_chunks) c = Chunk();
+    m_diagram.for_each_cell_in_chunks(
+        [&](std::size_t chunk, Vertex_handle v, const auto& cell) {
+          Chunk& out = m_chunks[chunk];
+          Cell_points points;
+          bool is_free = true;  // a constrained generator is a vertex of its own cell
+          for (const auto& c : cell) {
+            points.push_back(c.point);
+            is_free = is_free && c.type != Diagram::Cell_vertex::GENERATOR;
+          }
+          const Cell_moments_2<Kernel> m = moments(v->point(), points, resolution);
+          // Moments scale as the cell's size to the fourth: at extreme scales they leave double.
+          if (!(m.mass > 0) || !std::isfinite(CGAL::to_double(m.mass)) ||
+              !std::isfinite(CGAL::to_double(m.energy)) ||
+              !std::isfinite(CGAL::to_double(m.first_moment.squared_length())))
+            throw Domain_error("the cell of generator " + internal::to_string(v->point()) +
+                               " has mass " + std::to_string(CGAL::to_double(m.mass)) +
+                               " and energy " + std::to_string(CGAL::to_double(m.energy)) +
+                               ": its moments do not fit in double precision (the domain's size "
+                               "or the density's range is too extreme for Lloyd iteration)");
+          out.energy += CGAL::to_double(m.energy);
+          if (!is_free) return;
+          const typename Kernel::Vector_2 shift = m.first_moment / m.mass;
+          const double ratio =
+              std::sqrt(CGAL::to_double(shift.squared_length()) / squared_diameter(points));
+          out.max_move_ratio = std::max(out.max_move_ratio, ratio);
+          out.sum_move_ratio += ratio;
+          out.moves.push_back({v, v->point() + shift, m.mass});
+        },
+        m_number_of_threads);
+    m_moves.clear();
     double sum_ratio = 0;
-    m_diagram.for_each_cell([&](Vertex_handle v, const auto& cell) {
-      m_points.clear();
-      bool is_free = true;  // a constrained generator is a vertex of its own cell
-      for (const auto& c : cell) {
-        m_points.push_back(c.point);
-        is_free = is_free && c.type != Diagram::Cell_vertex::GENERATOR;
-      }
-      const Cell_moments_2<Kernel> m = moments(v->point(), resolution);
-      // Moments scale as the cell's size to the fourth: at extreme scales they leave double.
-      if (!(m.mass > 0) || !std::isfinite(CGAL::to_double(m.mass)) ||
-          !std::isfinite(CGAL::to_double(m.energy)) ||
-          !std::isfinite(CGAL::to_double(m.first_moment.squared_length())))
-        throw Domain_error("the cell of generator " + internal::to_string(v->point()) +
-                           " has mass " + std::to_string(CGAL::to_double(m.mass)) + " and energy " +
-                           std::to_string(CGAL::to_double(m.energy)) +
-                           ": its moments do not fit in double precision (the domain's size or the "
-                           "density's range is too extreme for Lloyd iteration)");
-      m_evaluation.energy += CGAL::to_double(m.energy);
-      if (!is_free) return;
-      const typename Kernel::Vector_2 shift = m.first_moment / m.mass;
-      const double ratio = std::sqrt(CGAL::to_double(shift.squared_length()) / squared_diameter());
-      m_evaluation.max_move_ratio = std::max(m_evaluation.max_move_ratio, ratio);
-      sum_ratio += ratio;
-      m_moves.push_back({v, v->point() + shift, m.mass});
-    });
+    for (Chunk& c : m_chunks) {
+      m_evaluation.energy += c.energy;
+      m_evaluation.max_move_ratio = std::max(m_evaluation.max_move_ratio, c.max_move_ratio);
+      sum_ratio += c.sum_move_ratio;
+      m_moves.insert(m_moves.end(), c.moves.begin(), c.moves.end());
+      std::vector<Free_generator>().swap(c.moves);  // one copy of the moves at a time
+    }
     m_evaluation.number_of_free_generators = m_moves.size();
     if (!m_moves.empty()) m_evaluation.mean_move_ratio = sum_ratio / double(m_moves.size());
     return m_evaluation;
   }
+
+  /// The number of threads that `evaluate()` builds cells and integrates them on; 0 (the
+  /// default) means one per core. The results are the same, bit for bit, whatever the number.
+  void set_number_of_threads(unsigned n) { m_number_of_threads = n; }
+  unsigned number_of_threads() const { return m_number_of_threads; }  ///< as set; 0: one per core
 
   /// Moves every free generator to the centroid that the last `evaluate()` computed (or as
   /// far toward it as its star allows), then restores the constrained Delaunay property.
@@ -207,29 +229,38 @@ class Lloyd_optimizer_2 {
   const CDT& triangulation() const { return m_cdt; }    ///< the triangulation
 
  private:
-  // The moments of the cell in m_points, under the density restricted to the disk around x
+  using Cell_points = boost::container::small_vector<Point_2, 32>;
+
+  // What a chunk of cells adds up to, in the order of its cells.
+  struct Chunk {
+    double energy = 0, max_move_ratio = 0, sum_move_ratio = 0;
+    std::vector<Free_generator> moves;
+  };
+
+  // The moments of the cell `points` of x, under the density restricted to the disk around x
   // that holds the cell if the density offers that (the same values, found faster).
-  Cell_moments_2<Kernel> moments(const Point_2& x, std::size_t resolution) const {
+  Cell_moments_2<Kernel> moments(const Point_2& x, const Cell_points& points,
+                                 std::size_t resolution) const {
     if constexpr (has_restrict_to_disk_v<Density, Kernel>) {
       double r2 = 0;
-      for (const Point_2& p : m_points) r2 = std::max(r2, CGAL::to_double(CGAL::squared_distance(x, p)));
+      for (const Point_2& p : points) r2 = std::max(r2, CGAL::to_double(CGAL::squared_distance(x, p)));
       // quadrature points are convex combinations of x and the cell's vertices, up to rounding
       const double r = std::sqrt(r2) * (1 + 1e-9) +
                        1e-12 * (std::abs(CGAL::to_double(x.x())) + std::abs(CGAL::to_double(x.y())));
       const auto local = m_rho.restrict_to_disk(x, FT(r));
       const internal::Checked_density<decltype(local), Point_2> rho{local};
-      return m_quadrature(x, m_points, rho, resolution);
+      return m_quadrature(x, points, rho, resolution);
     } else {
       const internal::Checked_density<Density, Point_2> rho{m_rho};
-      return m_quadrature(x, m_points, rho, resolution);
+      return m_quadrature(x, points, rho, resolution);
     }
   }
 
-  double squared_diameter() const {
+  static double squared_diameter(const Cell_points& points) {
     double d = 0;
-    for (std::size_t i = 0; i < m_points.size(); ++i)
-      for (std::size_t j = i + 1; j < m_points.size(); ++j)
-        d = std::max(d, CGAL::to_double(CGAL::squared_distance(m_points[i], m_points[j])));
+    for (std::size_t i = 0; i < points.size(); ++i)
+      for (std::size_t j = i + 1; j < points.size(); ++j)
+        d = std::max(d, CGAL::to_double(CGAL::squared_distance(points[i], points[j])));
     return d;
   }
 
@@ -238,7 +269,8 @@ class Lloyd_optimizer_2 {
   Quadrature m_quadrature;
   Diagram m_diagram;
   Evaluation m_evaluation;
-  std::vector<Point_2> m_points;                          // the current cell
+  unsigned m_number_of_threads = 0;
+  std::vector<Chunk> m_chunks;
   std::vector<Free_generator> m_moves;
   std::vector<internal::Flip_candidate<CDT>> m_flip_stack;
 };

@@ -80,8 +80,14 @@ void restore_delaunay(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
     if (!f->is_inside_domain()) continue;
     for (int i = 0; i < 3; ++i) {
       const auto g = f->neighbor(i);
-      // each edge once: from the face with the smaller address, or the only domain face
-      if (f->is_constrained(i) || (g->is_inside_domain() && &*g < &*f)) continue;
+      // Each edge once: from the only domain face, or from the face whose vertex opposite the
+      // edge comes first in (x, y) order. Not by address: the flips, hence the faces' layout
+      // and all sums over them, must be the same from run to run.
+      if (f->is_constrained(i)) continue;
+      if (g->is_inside_domain() && !cdt.is_infinite(g) &&
+          cdt.geom_traits().less_xy_2_object()(g->vertex(g->index(f))->point(),
+                                               f->vertex(i)->point()))
+        continue;
       if (!cdt.is_flipable(f, i)) continue;
       stack.assign(1, Flip_candidate<CDT>{f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))});
       lawson_flips(cdt, stack);
