@@ -153,6 +153,7 @@ TEST_CASE("the stopping rule stops where it should, and the result describes the
   load_domain(d2, "four_clusters.poly");
   const auto r2 = CVT_2::lloyd_optimize_2(d2.cdt, CVT_2::parameters::number_of_iterations(7).move_ratio_bound(0));
   CHECK(r2.stop_reason == CVT_2::MAX_ITERATIONS_REACHED);
+  CHECK(std::string(CVT_2::to_string(r2.stop_reason)) == "max_iterations");
   CHECK(r2.number_of_iterations == 7);
   CHECK(r2.energy_history.size() == 8);
   // A callback stops it.
@@ -161,6 +162,7 @@ TEST_CASE("the stopping rule stops where it should, and the result describes the
   const auto r3 = CVT_2::lloyd_optimize_2(
       d3.cdt, CVT_2::parameters::callback([](const CVT_2::Lloyd_result& p) { return p.number_of_iterations < 3; }));
   CHECK(r3.stop_reason == CVT_2::CALLBACK_REQUESTED_STOP);
+  CHECK(std::string(CVT_2::to_string(r3.stop_reason)) == "callback");
   CHECK(r3.number_of_iterations == 3);
 }
 

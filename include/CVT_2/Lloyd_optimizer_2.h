@@ -36,6 +36,20 @@ enum Lloyd_stop_reason {
 };
 
 /// \ingroup PkgCvt2Ref
+/// A short name of `reason` for messages and logs: `converged`, `max_iterations`,
+/// `time_limit`, `callback` or `no_free_generator`.
+inline const char* to_string(Lloyd_stop_reason reason) {
+  switch (reason) {
+    case CONVERGED: return "converged";
+    case MAX_ITERATIONS_REACHED: return "max_iterations";
+    case TIME_LIMIT_REACHED: return "time_limit";
+    case CALLBACK_REQUESTED_STOP: return "callback";
+    case NO_FREE_GENERATOR: return "no_free_generator";
+  }
+  return "unknown";
+}
+
+/// \ingroup PkgCvt2Ref
 /// What an optimization did. The figures describe the generators as they are at the end:
 /// an independent evaluation of the final points finds the same energy and move ratios.
 struct Lloyd_result {
