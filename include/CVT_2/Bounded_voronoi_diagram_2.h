@@ -145,11 +145,11 @@ class Bounded_voronoi_diagram_2 {
 
   /// Tags the blind faces again, after the triangulation or its domain changed.
   void update() {
-    m_number_of_blinded_faces = internal::tag_blind_faces(m_cdt, m_traits);
     m_chunks.clear();
     std::size_t i = 0;
-    for (auto f = m_cdt.all_faces_begin(); f != m_cdt.all_faces_end(); ++f, ++i)
-      if (i % chunk_size == 0) m_chunks.push_back(f);
+    m_number_of_blinded_faces = internal::tag_blind_faces(m_cdt, m_traits, [&](auto f) {
+      if (i++ % chunk_size == 0) m_chunks.push_back(f);
+    });
   }
 
   const CDT& triangulation() const { return m_cdt; }         ///< the triangulation

@@ -25,15 +25,19 @@ bool is_same_constraint(const typename CDT::Edge& e1, const typename CDT::Edge& 
 // several nested constraints; it keeps the first one met on the way to its circumcenter, which
 // is where Algorithm 2 must clip. The walk therefore goes on through faces tagged by another
 // constraint, and remembers them in `elsewhere` so as to visit each face once per walk.
-// Returns the number of blinded faces.
-template <class CDT, class Traits>
-std::size_t tag_blind_faces(const CDT& cdt, const Traits& traits) {
+// Returns the number of blinded faces. `on_face(f)` is called for every face in memory order
+// as its tag is cleared, first of all (the caller's chance to pass over the faces for free).
+template <class CDT, class Traits, class OnFace>
+std::size_t tag_blind_faces(const CDT& cdt, const Traits& traits, const OnFace& on_face) {
   using Face_handle = typename CDT::Face_handle;
   using Edge = typename CDT::Edge;
   const auto is_blinded = traits.is_blinded_2_object();
   const auto compare = traits.compare_blinding_distance_2_object();
 
-  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->clear_blinding();
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) {
+    f->clear_blinding();
+    on_face(f);
+  }
   if (cdt.dimension() < 2) return 0;
 
   std::size_t count = 0;
