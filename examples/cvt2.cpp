@@ -5,6 +5,7 @@
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/IO/read_points.h>
 #include <CVT_2/IO/read_poly.h>
+#include <CVT_2/IO/read_wkt.h>
 #include <CVT_2/IO/write_svg.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
@@ -12,7 +13,6 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/WKT.h>
 #include <CGAL/Polygon_with_holes_2.h>
 
 #include <unistd.h>
@@ -225,22 +225,14 @@ double domain_area(const CDT& cdt) {
   return a;
 }
 
-// The domain as read: how to mark it again after insertions, and its free vertices.
+// The domain as read.
 struct Domain {
-  std::vector<Point_2> holes;                           // .poly: hole seeds
-  std::vector<CGAL::Polygon_with_holes_2<K>> polygons;  // WKT: the polygons' structure
-  std::vector<Point_2> free_points;                     // WKT: the points, inserted last
-  std::vector<std::size_t> free_point_lines;
   std::string source;
-  std::size_t free_vertices = 0;
+  std::size_t free_vertices = 0;  // generators that came with the domain file
 };
 
 bool has_suffix(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-void insert_generators(CDT& cdt, const std::vector<Point_2>& points, const Domain&) {
-  CVT_2::insert_generators_2(cdt, points);  // keeps the marking, from seeds or polygons
 }
 
 Domain load_poly(const std::string& file, CDT& cdt) {
@@ -250,125 +242,18 @@ Domain load_poly(const std::string& file, CDT& cdt) {
   for (const auto& s : poly.segments) on_segment[s[0]] = on_segment[s[1]] = true;
   Domain d;
   d.source = file;
-  d.holes = poly.holes;
   for (const bool b : on_segment) d.free_vertices += b ? 0 : 1;
   return d;
 }
 
-// Silences std::cerr: CGAL's WKT reader prints "error." on some malformed lines.
-class Silenced_cerr {
- public:
-  Silenced_cerr() : m_old(std::cerr.rdbuf(nullptr)) {}
-  ~Silenced_cerr() { std::cerr.rdbuf(m_old); }
-
- private:
-  std::streambuf* m_old;
-};
-
-struct Wkt_data {
-  std::vector<CGAL::Polygon_with_holes_2<K>> polygons;
-  std::vector<std::size_t> polygon_lines;
-  std::vector<std::vector<Point_2>> polylines;
-  std::vector<std::size_t> polyline_lines;
-};
-
-// One geometry a line, read by CGAL line by line so that errors can name the line.
-Wkt_data read_wkt(const std::string& file, Domain& d) {
-  std::ifstream is(file);
-  Wkt_data w;
-  std::string line;
-  for (std::size_t number = 1; std::getline(is, line); ++number) {
-    std::size_t b = line.find_first_not_of(" \t\r");
-    if (b == std::string::npos) continue;
-    std::size_t e = b;
-    while (e < line.size() && std::isalpha(static_cast<unsigned char>(line[e]))) ++e;
-    std::string type = line.substr(b, e - b);
-    for (char& c : type) c = char(std::toupper(static_cast<unsigned char>(c)));
-    std::vector<Point_2> points;
-    std::vector<std::vector<Point_2>> polylines;
-    std::vector<CGAL::Polygon_with_holes_2<K>> polygons;
-    std::istringstream iss(type + line.substr(e));  // CGAL reads upper-case keywords only
-    bool ok = false;
-    {
-      const Silenced_cerr silence;
-      if (type == "POINT") {
-        Point_2 p;
-        ok = CGAL::IO::read_point_WKT(iss, p), points.push_back(p);
-      } else if (type == "MULTIPOINT") {
-        ok = CGAL::IO::read_multi_point_WKT(iss, points);
-      } else if (type == "LINESTRING") {
-        polylines.emplace_back();
-        ok = CGAL::IO::read_linestring_WKT(iss, polylines.back());
-      } else if (type == "MULTILINESTRING") {
-        ok = CGAL::IO::read_multi_linestring_WKT(iss, polylines);
-      } else if (type == "POLYGON") {
-        polygons.emplace_back();
-        ok = CGAL::IO::read_polygon_WKT(iss, polygons.back());
-      } else if (type == "MULTIPOLYGON") {
-        ok = CGAL::IO::read_multi_polygon_WKT(iss, polygons);
-      } else {
-        throw CVT_2::IO::Parse_error(file, number, "expected a WKT POLYGON, MULTIPOLYGON, "
-                                     "LINESTRING, MULTILINESTRING, POINT or MULTIPOINT", type);
-      }
-    }
-    if (!ok) throw CVT_2::IO::Parse_error(file, number, "malformed " + type, type);
-    const auto check = [&](const Point_2& p) {
-      if (!CVT_2::internal::is_valid_point(p))
-        throw CVT_2::IO::Parse_error(file, number, "point " + CVT_2::internal::to_string(p) +
-                                     " is not finite or exceeds 1e300 in magnitude");
-    };
-    for (const auto& p : points) check(p), d.free_points.push_back(p), d.free_point_lines.push_back(number);
-    for (auto& l : polylines) {
-      for (const auto& p : l) check(p);
-      if (l.size() < 2) throw CVT_2::IO::Parse_error(file, number, "a LINESTRING needs 2 points");
-      w.polylines.push_back(std::move(l)), w.polyline_lines.push_back(number);
-    }
-    for (auto& pwh : polygons) {
-      std::vector<const CGAL::Polygon_2<K>*> rings{&pwh.outer_boundary()};
-      for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) rings.push_back(&*h);
-      for (const auto* r : rings) {
-        for (const auto& p : *r) check(p);
-        if (r->size() < 3) throw CVT_2::IO::Parse_error(file, number, "a ring needs 3 distinct points");
-      }
-      w.polygons.push_back(std::move(pwh)), w.polygon_lines.push_back(number);
-    }
-  }
-  if (w.polygons.empty()) throw CVT_2::IO::Parse_error(file, 0, "no POLYGON or MULTIPOLYGON");
-  return w;
-}
-
-// Polygon rings and linestrings as constraints, then the domain marked from the polygons.
+// Polygon rings and linestrings as constraints, the domain marked from the polygons, then the
+// points as generators.
 Domain load_wkt(const std::string& file, CDT& cdt) {
+  const auto w = CVT_2::IO::read_wkt<K>(file);
+  CVT_2::IO::insert_wkt(cdt, w);
   Domain d;
   d.source = file;
-  const Wkt_data w = read_wkt(file, d);
-  const auto constrain = [&](auto begin, auto end, bool closed, std::size_t line) {
-    try {
-      cdt.insert_constraint(begin, end, closed);
-    } catch (const CDT::Intersection_of_constraints_exception&) {
-      throw CVT_2::Domain_error(file + ":" + std::to_string(line) +
-                                ": this geometry crosses itself or an earlier one");
-    }
-  };
-  for (std::size_t i = 0; i < w.polygons.size(); ++i) {
-    const auto& pwh = w.polygons[i];
-    constrain(pwh.outer_boundary().begin(), pwh.outer_boundary().end(), true, w.polygon_lines[i]);
-    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h)
-      constrain(h->begin(), h->end(), true, w.polygon_lines[i]);
-  }
-  for (std::size_t i = 0; i < w.polylines.size(); ++i)
-    constrain(w.polylines[i].begin(), w.polylines[i].end(), false, w.polyline_lines[i]);
-  d.polygons = w.polygons;
-  CVT_2::mark_domain_from_polygons_2(cdt, d.polygons);
-  if (!(domain_area(cdt) > 0)) throw CVT_2::Domain_error(file + ": the domain is empty");
-  try {
-    insert_generators(cdt, d.free_points, d);
-  } catch (const CVT_2::Domain_error& e) {
-    if (e.index() >= d.free_point_lines.size()) throw;
-    throw CVT_2::Domain_error(file + ":" + std::to_string(d.free_point_lines[e.index()]) + ": " +
-                              e.what());
-  }
-  d.free_vertices = d.free_points.size();
+  d.free_vertices = w.points.size();
   return d;
 }
 
@@ -380,11 +265,11 @@ Domain load_domain(const std::string& file, CDT& cdt) {
 }
 
 // The generators of --points-in, with errors that name the file and line.
-void insert_points_file(const std::string& file, CDT& cdt, const Domain& domain) {
+void insert_points_file(const std::string& file, CDT& cdt) {
   if (!std::ifstream(file)) throw std::runtime_error("cannot open the points file '" + file + "'");
   const auto points = CVT_2::IO::read_points<Point_2>(file);
   try {
-    insert_generators(cdt, points.points, domain);
+    CVT_2::insert_generators_2(cdt, points.points);  // keeps the domain's marking
   } catch (const CVT_2::Domain_error& e) {
     if (e.index() >= points.lines.size()) throw;
     throw CVT_2::Domain_error(points.source + ":" + std::to_string(points.lines[e.index()]) + ": " +
@@ -393,7 +278,7 @@ void insert_points_file(const std::string& file, CDT& cdt, const Domain& domain)
 }
 
 void insert_random_points(std::size_t n, const Options& o, const std::optional<Sizing>& sizing,
-                          CDT& cdt, const Domain& domain) {
+                          CDT& cdt) {
   if (n == 0) return;
   std::vector<Point_2> points;
   if (sizing) {  // a CVT of density 1/mu^4 has about 1/mu^2 points per unit area
@@ -406,7 +291,7 @@ void insert_random_points(std::size_t n, const Options& o, const std::optional<S
   } else {
     points = CVT_2::random_points_in_domain_2(cdt, n, CVT_2::parameters::random_seed(o.seed));
   }
-  insert_generators(cdt, points, domain);
+  CVT_2::insert_generators_2(cdt, points);
 }
 
 // --- optimization ------------------------------------------------------------------------------
@@ -633,10 +518,10 @@ int run(const Options& o) {
   if (o.lipschitz)
     sizing.emplace(cdt, o.lipschitz_k,
                    o.boundary_size ? std::optional<K::FT>(*o.boundary_size) : std::nullopt);
-  if (!o.points_in.empty()) insert_points_file(o.points_in, cdt, domain);
+  if (!o.points_in.empty()) insert_points_file(o.points_in, cdt);
   const std::size_t n =
       o.points ? *o.points : (domain.free_vertices == 0 && o.points_in.empty() ? 1000 : 0);
-  insert_random_points(n, o, sizing, cdt, domain);
+  insert_random_points(n, o, sizing, cdt);
   const CVT_2::Lloyd_result r = optimize(cdt, o, sizing);
   const BVD bvd(cdt);
   write_outputs(o, cdt, bvd);

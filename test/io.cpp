@@ -3,6 +3,7 @@
 #include "support/support.h"
 
 #include <CVT_2/IO/read_points.h>
+#include <CVT_2/IO/read_wkt.h>
 
 #include <CGAL/IO/WKT.h>
 #include <CGAL/Polygon_with_holes_2.h>
@@ -200,4 +201,73 @@ TEST_CASE("inserting generators keeps a domain marked from polygons, holes inclu
   CHECK(domain_area(cdt) == Approx(64).epsilon(1e-14));
   const Bvd bvd(cdt);
   CHECK(total_cell_area(bvd) == Approx(64).epsilon(1e-10));
+}
+
+namespace {
+
+CVT_2::IO::Wkt_data<K> parse_wkt(const std::string& text) {
+  std::istringstream is(text);
+  return CVT_2::IO::read_wkt<K>(is, "t.wkt");
+}
+
+}  // namespace
+
+TEST_CASE("WKT: polygons, linestrings and points, each with its line", "[io][wkt]") {
+  const auto w = parse_wkt(
+      "polygon((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 2, 2 1, 1 1))\n"
+      "\n"
+      "LINESTRING(2.5 0.5, 2.5 3.5)\n"
+      "MULTIPOINT((3 3), (0.5 0.5))\n"
+      "POINT(2.5 2)\n");
+  REQUIRE(w.polygons.size() == 1);
+  CHECK(w.polygons[0].number_of_holes() == 1);
+  CHECK(w.polygon_lines == std::vector<std::size_t>{1});
+  CHECK(w.polyline_lines == std::vector<std::size_t>{3});
+  CHECK(w.point_lines == std::vector<std::size_t>{4, 4, 5});
+  Cdt cdt;
+  CVT_2::IO::insert_wkt(cdt, w);
+  double area = 0;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (f->is_inside_domain()) area += cdt.triangle(f).area();
+  CHECK(area == Approx(15));
+  CHECK(cdt.number_of_vertices() == 4 + 4 + 2 + 3);
+  Cdt::Locate_type lt;
+  int li;
+  const auto f = cdt.locate(Point(2.5, 2), lt, li);
+  REQUIRE(lt == Cdt::VERTEX);
+  CHECK(cdt.are_there_incident_constraints(f->vertex(li)));  // on the linestring: a constrained vertex
+}
+
+TEST_CASE("bad WKT gives an error that names the line and what is wrong", "[io][wkt]") {
+  using CVT_2::IO::Parse_error;
+  const auto parse_error = [](const std::string& text) {
+    return message_of<Parse_error>([&] { parse_wkt(text); });
+  };
+  CHECK_THAT(parse_error("POLYGON((0 0, 1 0, 1 1, 0 1))\n"),
+             Catch::Contains("t.wkt:1: a ring is not closed: it starts at (0 0) and ends at (0 1)"));
+  CHECK_THAT(parse_error("\nPOLYGON((0 0, 4 0, 4 4, 0 0), (1 1, 2 1, 2 2))\n"),
+             Catch::Contains("t.wkt:2: a ring is not closed"));
+  CHECK_THAT(parse_error("MULTIPOLYGON(((0 0, 1 0, 1 1, 0 0)), ((5 5, 6 5, 6 6)))\n"),
+             Catch::Contains("a ring is not closed"));
+  CHECK_THAT(parse_error("POLYGON((0 0, 1 0, 0 0))\n"), Catch::Contains("3 distinct points"));
+  CHECK_THAT(parse_error("POLYGON((0 0, 1 0, 1 1, 0 0)\n"), Catch::Contains("t.wkt:1: malformed POLYGON"));
+  CHECK_THAT(parse_error("POLYGON((0 0, 1 0, nan 1, 0 0))\n"), Catch::Contains("t.wkt:1"));
+  CHECK_THAT(parse_error("POLYGON((0 0, 1e301 0, 1 1, 0 0))\n"), Catch::Contains("exceeds 1e300"));
+  CHECK_THAT(parse_error("CIRCLE(0 0, 1)\n"), Catch::Contains("t.wkt:1: expected a WKT POLYGON"));
+  CHECK_THAT(parse_error("LINESTRING(0 0, 1 1)\n"), Catch::Contains("no POLYGON"));
+  CHECK_THAT(parse_error(""), Catch::Contains("no POLYGON"));
+
+  const auto domain_error = [](const std::string& text) {
+    return message_of<CVT_2::Domain_error>([&] {
+      Cdt cdt;
+      CVT_2::IO::insert_wkt(cdt, parse_wkt(text));
+    });
+  };
+  CHECK_THAT(domain_error("POLYGON((0 0, 1 0, 1 1, 0 1, 0 0))\nLINESTRING(-1 0.5, 0.5 0.5)\n"),
+             Catch::Contains("t.wkt:2: this geometry crosses itself or an earlier one"));
+  CHECK_THAT(domain_error("POLYGON((0 0, 1 0, 0 1, 1 1, 0 0))\n"), Catch::Contains("t.wkt:1: this geometry crosses itself"));
+  CHECK_THAT(domain_error("POLYGON((0 0, 1 0, 1 1, 0 1, 0 0))\nPOINT(0.5 0.5)\nPOINT(3 3)\n"),
+             Catch::Contains("t.wkt:3: generator (3, 3) lies outside the domain"));
+  // a repeated point in a row counts once
+  CHECK(domain_error("POLYGON((0 0, 1 0, 1 0, 1 1, 0 1, 0 0))\n").empty());
 }

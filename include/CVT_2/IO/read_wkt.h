@@ -1,0 +1,234 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Reading a domain from WKT, one geometry a line, with errors that name the line.
+#ifndef CVT_2_IO_READ_WKT_H
+#define CVT_2_IO_READ_WKT_H
+
+#include <CVT_2/exceptions.h>
+#include <CVT_2/insert_generators_2.h>
+#include <CVT_2/internal/line_reader.h>
+#include <CVT_2/mark_domain_2.h>
+
+#include <CGAL/IO/WKT.h>
+#include <CGAL/Polygon_with_holes_2.h>
+
+#include <cctype>
+#include <cstddef>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CVT_2 {
+namespace IO {
+
+/// \ingroup PkgCvt2IO
+/// A domain read from WKT: polygons with holes (their union is the domain), linestrings (inner
+/// constraints) and points (generators), each with the line it was on.
+/// \tparam K a CGAL kernel.
+template <class K>
+struct Wkt_data {
+  using Point_2 = typename K::Point_2;                  ///< the point type
+  using Polygon_with_holes_2 = CGAL::Polygon_with_holes_2<K>;  ///< a polygon
+  std::string source;                                   ///< file name, for messages
+  std::vector<Polygon_with_holes_2> polygons;           ///< from POLYGON and MULTIPOLYGON
+  std::vector<std::size_t> polygon_lines;               ///< the line of each polygon
+  std::vector<std::vector<Point_2>> polylines;          ///< from LINESTRING, MULTILINESTRING
+  std::vector<std::size_t> polyline_lines;              ///< the line of each polyline
+  std::vector<Point_2> points;                          ///< from POINT and MULTIPOINT
+  std::vector<std::size_t> point_lines;                 ///< the line of each point
+};
+
+namespace internal {
+
+// Silences std::cerr: CGAL's WKT reader prints "error." on some malformed lines.
+class Silenced_cerr {
+ public:
+  Silenced_cerr() : m_old(std::cerr.rdbuf(nullptr)) {}
+  ~Silenced_cerr() { std::cerr.rdbuf(m_old); }
+  Silenced_cerr(const Silenced_cerr&) = delete;
+  Silenced_cerr& operator=(const Silenced_cerr&) = delete;
+
+ private:
+  std::streambuf* m_old;
+};
+
+// WKT rings repeat their first point last; CGAL's reader accepts a ring that does not and
+// closes it silently, so the text is checked first: each innermost parenthesized list of a
+// POLYGON or MULTIPOLYGON is a ring whose first and last coordinates must be equal.
+inline void check_rings_closed(const std::string& text, const std::string& source,
+                               std::size_t line) {
+  std::size_t open = std::string::npos;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '(') {
+      open = i;
+    } else if (text[i] == ')' && open != std::string::npos) {
+      const std::string ring = text.substr(open + 1, i - open - 1);
+      open = std::string::npos;
+      const std::size_t first_comma = ring.find(','), last_comma = ring.rfind(',');
+      if (first_comma == std::string::npos) continue;  // one point: CGAL's reader fails it
+      const std::string first = ring.substr(0, first_comma), last = ring.substr(last_comma + 1);
+      double x0, y0, x1, y1;
+      std::istringstream a(first), b(last);
+      if (!(a >> x0 >> y0) || !(b >> x1 >> y1)) continue;  // malformed: CGAL's reader says so
+      if (x0 != x1 || y0 != y1) {
+        const auto trim = [](std::string t) {
+          t.erase(0, t.find_first_not_of(" \t\r"));
+          t.erase(t.find_last_not_of(" \t\r") + 1);
+          return t;
+        };
+        throw Parse_error(source, line,
+                          "a ring is not closed: it starts at (" + trim(first) + ") and ends at (" +
+                              trim(last) + "); a WKT ring repeats its first point last");
+      }
+    }
+  }
+}
+
+}  // namespace internal
+
+/// \ingroup PkgCvt2IO
+/// Reads WKT, one geometry a line: `POLYGON` and `MULTIPOLYGON` (the domain),
+/// `LINESTRING` and `MULTILINESTRING` (inner constraints), `POINT` and `MULTIPOINT` (initial
+/// generators); keywords in any case, blank lines skipped. CGAL's WKT reader parses each line.
+/// \throws Parse_error naming the line: an unknown or malformed geometry, a ring that is not
+///         closed or has fewer than 3 distinct points, a linestring of fewer than 2 points, a
+///         coordinate that is not finite or exceeds 1e300 in magnitude, or no polygon at all.
+template <class K>
+Wkt_data<K> read_wkt(std::istream& is, const std::string& source = "<wkt>") {
+  using Point_2 = typename K::Point_2;
+  Wkt_data<K> w;
+  w.source = source;
+  std::string line;
+  for (std::size_t number = 1; std::getline(is, line); ++number) {
+    const std::size_t b = line.find_first_not_of(" \t\r");
+    if (b == std::string::npos) continue;
+    std::size_t e = b;
+    while (e < line.size() && std::isalpha(static_cast<unsigned char>(line[e]))) ++e;
+    std::string type = line.substr(b, e - b);
+    for (char& c : type) c = char(std::toupper(static_cast<unsigned char>(c)));
+    std::vector<Point_2> points;
+    std::vector<std::vector<Point_2>> polylines;
+    std::vector<CGAL::Polygon_with_holes_2<K>> polygons;
+    std::istringstream iss(type + line.substr(e));  // CGAL reads upper-case keywords only
+    bool ok = false;
+    {
+      const internal::Silenced_cerr silence;
+      if (type == "POINT") {
+        Point_2 p;
+        ok = CGAL::IO::read_point_WKT(iss, p);
+        points.push_back(p);
+      } else if (type == "MULTIPOINT") {
+        ok = CGAL::IO::read_multi_point_WKT(iss, points);
+      } else if (type == "LINESTRING") {
+        polylines.emplace_back();
+        ok = CGAL::IO::read_linestring_WKT(iss, polylines.back());
+      } else if (type == "MULTILINESTRING") {
+        ok = CGAL::IO::read_multi_linestring_WKT(iss, polylines);
+      } else if (type == "POLYGON" || type == "MULTIPOLYGON") {
+        internal::check_rings_closed(line, source, number);
+        if (type == "POLYGON") {
+          polygons.emplace_back();
+          ok = CGAL::IO::read_polygon_WKT(iss, polygons.back());
+        } else {
+          ok = CGAL::IO::read_multi_polygon_WKT(iss, polygons);
+        }
+      } else {
+        throw Parse_error(source, number,
+                          "expected a WKT POLYGON, MULTIPOLYGON, LINESTRING, MULTILINESTRING, "
+                          "POINT or MULTIPOINT",
+                          type.empty() ? line.substr(b, 20) : type);
+      }
+    }
+    if (!ok) throw Parse_error(source, number, "malformed " + type, type);
+    const auto check = [&](const Point_2& p) {
+      if (!CVT_2::internal::is_valid_point(p))
+        throw Parse_error(source, number, "point " + CVT_2::internal::to_string(p) +
+                                              " is not finite or exceeds 1e300 in magnitude");
+    };
+    for (const Point_2& p : points) {
+      check(p);
+      w.points.push_back(p);
+      w.point_lines.push_back(number);
+    }
+    for (auto& l : polylines) {
+      for (const Point_2& p : l) check(p);
+      if (l.size() < 2) throw Parse_error(source, number, "a LINESTRING needs 2 points");
+      w.polylines.push_back(std::move(l));
+      w.polyline_lines.push_back(number);
+    }
+    for (auto& pwh : polygons) {
+      std::vector<const CGAL::Polygon_2<K>*> rings{&pwh.outer_boundary()};
+      for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) rings.push_back(&*h);
+      for (const auto* r : rings) {
+        for (const Point_2& p : *r) check(p);
+        std::size_t distinct = 0;
+        for (std::size_t i = 0; i < r->size(); ++i)
+          distinct += (*r)[i] != (*r)[(i + 1) % r->size()] ? 1 : 0;
+        if (distinct < 3) throw Parse_error(source, number, "a ring needs 3 distinct points");
+      }
+      w.polygons.push_back(std::move(pwh));
+      w.polygon_lines.push_back(number);
+    }
+  }
+  if (w.polygons.empty()) throw Parse_error(source, 0, "no POLYGON or MULTIPOLYGON");
+  return w;
+}
+
+/// \ingroup PkgCvt2IO
+/// Reads the WKT file `filename`. \throws Parse_error, also when it cannot be opened.
+template <class K>
+Wkt_data<K> read_wkt(const std::string& filename) {
+  std::ifstream is = CVT_2::internal::open_input(filename);
+  return read_wkt<K>(is, filename);
+}
+
+/// \ingroup PkgCvt2IO
+/// Inserts a WKT domain into `cdt`: the rings of the polygons and the linestrings as
+/// constraints (a point repeated in a row counts once), the domain marked from the polygons
+/// (`mark_domain_from_polygons_2()`: the union of the polygons minus their holes), then the
+/// points as generators (`insert_generators_2()`; a point on a constraint becomes a constrained
+/// vertex).
+/// \throws Domain_error naming the file and line: a geometry that crosses itself or an earlier
+///         one (with a triangulation that does not compute intersections), an empty domain,
+///         or a point outside the domain.
+template <class CDT>
+void insert_wkt(CDT& cdt, const Wkt_data<typename CDT::Geom_traits>& w) {
+  using Point_2 = typename CDT::Point_2;
+  const auto where = [&w](std::size_t line) { return w.source + ":" + std::to_string(line) + ": "; };
+  const auto constrain = [&](const auto& points, bool closed, std::size_t line) {
+    std::vector<Point_2> p;
+    for (const Point_2& q : points)
+      if (p.empty() || q != p.back()) p.push_back(q);
+    if (closed && p.size() > 1 && p.front() == p.back()) p.pop_back();
+    try {
+      cdt.insert_constraint(p.begin(), p.end(), closed);
+    } catch (const typename CDT::Intersection_of_constraints_exception&) {
+      throw Domain_error(where(line) + "this geometry crosses itself or an earlier one");
+    }
+  };
+  for (std::size_t i = 0; i < w.polygons.size(); ++i) {
+    const auto& pwh = w.polygons[i];
+    constrain(pwh.outer_boundary(), true, w.polygon_lines[i]);
+    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) constrain(*h, true, w.polygon_lines[i]);
+  }
+  for (std::size_t i = 0; i < w.polylines.size(); ++i)
+    constrain(w.polylines[i], false, w.polyline_lines[i]);
+  mark_domain_from_polygons_2(cdt, w.polygons);
+  bool empty = true;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end() && empty; ++f)
+    empty = !f->is_inside_domain();
+  if (empty) throw Domain_error(w.source + ": the domain is empty: no polygon has an area");
+  try {
+    insert_generators_2(cdt, w.points);
+  } catch (const Domain_error& e) {
+    if (e.index() >= w.point_lines.size()) throw;
+    throw Domain_error(where(w.point_lines[e.index()]) + e.what(), e.index());
+  }
+}
+
+}  // namespace IO
+}  // namespace CVT_2
+
+#endif  // CVT_2_IO_READ_WKT_H
