@@ -49,7 +49,7 @@ int main(int argc, char* argv[]) {
       const std::string svg = prefix + (adaptive ? "_adaptive.svg" : "_uniform.svg");
       std::cout << "lloyd_world: " << (adaptive ? "adaptive, k = 0.1: " : "uniform: ") << n
                 << " generators, " << r.number_of_iterations << " iterations, "
-                << (r.stop_reason == CVT_2::CONVERGED ? "converged" : "not converged")
+                << "stopped: " << CVT_2::to_string(r.stop_reason)
                 << ", energy " << r.energy << ", largest move ratio " << r.max_move_ratio << ", "
                 << r.seconds << " s -> " << svg << '\n';
       if (!CVT_2::IO::write_svg(svg, CVT_2::Bounded_voronoi_diagram_2<CDT>(cdt), 1800))
