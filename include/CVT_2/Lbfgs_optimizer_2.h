@@ -1,0 +1,338 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Lbfgs_optimizer_2: L-BFGS on the CVT energy, preconditioned by Lloyd's step, one step at a time.
+#ifndef CVT_2_LBFGS_OPTIMIZER_2_H
+#define CVT_2_LBFGS_OPTIMIZER_2_H
+
+#include <CVT_2/Lloyd_optimizer_2.h>
+#include <CVT_2/internal/move_generators.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CVT_2 {
+
+/// \ingroup PkgCvt2Ref
+/// L-BFGS on the CVT energy (Liu, Wang, Lévy, Yan, Lu, Yang 2009, *On centroidal Voronoi
+/// tessellation — energy smoothness and fast computation*), usable step by step.
+///
+/// The energy \f$E(x) = \sum_i \int_{V_i} \rho(y)\|y - x_i\|^2 dy\f$ of the bounded Voronoi
+/// diagram is \f$C^2\f$ almost everywhere, and its gradient for a free generator is
+/// \f$\nabla_i E = 2\,m_i\,(x_i - x_i^*)\f$, with \f$m_i\f$ the mass and \f$x_i^*\f$ the
+/// centroid of its cell: one `Lloyd_optimizer_2::evaluate()` gives both. Constrained
+/// generators are fixed. The quasi-Newton direction comes from the last `memory` pairs of
+/// position and gradient differences, with the Lloyd step as preconditioner: the initial
+/// inverse Hessian is \f$\mathrm{diag}(1/(2m_i))\f$, so a step without memory (the first, and
+/// every restart) is exactly a Lloyd step \f$x_i \to x_i^*\f$.
+///
+/// A step moves the generators in place, as Lloyd iteration does: each free generator moves
+/// toward its target within its star (it crosses no edge, so no constraint), then edge flips
+/// restore the constrained Delaunay property, and the generators that have not arrived go on,
+/// for a few passes; the positions reached are the trial point. A backtracking line search
+/// (Armijo's condition on the energy, with the displacement actually done) halves the step
+/// twice at most; if the energy still does not decrease enough, the generators go back to where
+/// the step started and take a Lloyd step, and the memory is cleared. Pairs with
+/// \f$s \cdot y \le 0\f$ are skipped. With an exact quadrature (`Exact_quadrature_2`, uniform
+/// density) the energy never rises (unless a generator cannot get back to where a failed step
+/// started, which the tests have not met: the moves back are those of the step, reversed).
+///
+/// With an approximate quadrature (`Midpoint_quadrature_2`) the energy and the centroids, and so
+/// the gradient, are approximations, whose error changes as the cells change shape and as the
+/// resolution rises: the line search compares computed energies, and when their error hides
+/// the decrease it fails and the step falls back to a Lloyd step. So the iteration goes on
+/// where a line search on approximate energies gets stuck, at the cost of the failed trials
+/// (`number_of_fallbacks()`; none in the tests and benchmarks with smooth densities).
+///
+/// The free generators are numbered once, in the order of the first evaluation, so that the
+/// vectors, and so the result, do not depend on the order in which cells are visited: the same
+/// input gives the same bits.
+///
+/// \tparam CDT as for `Bounded_voronoi_diagram_2`, with its domain marked.
+/// \tparam Density a model of `DensityFunction_2`.
+/// \tparam Quadrature a model of `CellQuadrature_2`; by default exact formulas for a uniform
+///         density, the paper's midpoint rule otherwise.
+/// \sa `lbfgs_optimize_2()`, which drives it with the paper's stopping rule; `Lloyd_optimizer_2`.
+template <class CDT, class Density = Uniform_density_2<typename CDT::Geom_traits>,
+          class Quadrature = internal::Default_quadrature<typename CDT::Geom_traits, Density>>
+class Lbfgs_optimizer_2 {
+ public:
+  using Triangulation = CDT;                          ///< the triangulation type
+  using Kernel = typename CDT::Geom_traits;           ///< its kernel
+  using FT = typename Kernel::FT;                     ///< number type
+  using Point_2 = typename Kernel::Point_2;           ///< point type
+  using Vertex_handle = typename CDT::Vertex_handle;  ///< a generator
+  using Density_function = Density;                   ///< the density policy
+  using Cell_quadrature = Quadrature;                 ///< the quadrature policy
+  /// the evaluator of energy, centroids and move ratios
+  using Lloyd_optimizer = Lloyd_optimizer_2<CDT, Density, Quadrature>;
+  using Evaluation = typename Lloyd_optimizer::Evaluation;  ///< what an evaluation found
+  using Diagram = typename Lloyd_optimizer::Diagram;        ///< the diagram it iterates on
+
+  /// Prepares the optimization of `cdt` with at most `memory` curvature pairs (0: every step is
+  /// a Lloyd step). Nothing is computed yet.
+  explicit Lbfgs_optimizer_2(CDT& cdt, const Density& rho = Density(),
+                             const Quadrature& quadrature = Quadrature(), std::size_t memory = 7)
+      : m_cdt(cdt), m_lloyd(cdt, rho, quadrature), m_memory(memory) {}
+
+  /// Evaluates the generators where they are (diagram, energy, centroids, move ratios, and so
+  /// the gradient), with `resolution` sub-triangles a cell. The memory is kept if they are where
+  /// the last `evaluate()` or `step()` left them (a new evaluation at a higher resolution, say),
+  /// and cleared otherwise. \throws Domain_error as `Lloyd_optimizer_2::evaluate()`.
+  const Evaluation& evaluate(std::size_t resolution) {
+    m_lloyd.evaluate(resolution);
+    ++m_evaluations;
+    if (!gather(m_trial)) {  // other generators than before: number them again
+      number_generators();
+      gather(m_trial);
+    } else if (m_has_current && m_trial.points != m_current.points) {
+      clear_memory();
+    }
+    std::swap(m_current, m_trial);
+    m_has_current = true;
+    return m_current.evaluation;
+  }
+
+  /// One step from the last evaluated point: the L-BFGS direction (a Lloyd step without
+  /// memory), the line search, or a Lloyd step if it fails; every evaluation integrates with
+  /// `resolution` sub-triangles a cell. Returns the evaluation of the new point.
+  /// \pre `evaluate()` was called, and the generators have not moved since the last
+  ///      `evaluate()` or `step()`.
+  const Evaluation& step(std::size_t resolution) {
+    CGAL_precondition(m_has_current);
+    ++m_steps;
+    if (m_vertices.empty()) return evaluate(resolution);
+    if (m_pairs == 0 || !quasi_newton_direction()) {
+      clear_memory();
+      lloyd_step(resolution);
+    } else if (!line_search(resolution)) {
+      ++m_fallbacks;
+      clear_memory();
+      // Back to the start of the step, by the same moves with more passes (few generators are
+      // still on their way after the first ones); if one cannot get there to the bit, the
+      // Lloyd step starts from an evaluation of where they are.
+      m_targets = m_current.points;
+      if (internal::move_free_vertices(m_cdt, m_vertices, m_targets, m_order, 4 * max_passes,
+                                       m_flip_stack) > 0)
+        evaluate(resolution);
+      lloyd_step(resolution);
+    }
+    return m_current.evaluation;
+  }
+
+  /// The number of threads that evaluations build cells and integrate them on; 0 (the default)
+  /// means one per core. The results are the same, bit for bit, whatever the number.
+  void set_number_of_threads(unsigned n) { m_lloyd.set_number_of_threads(n); }
+  unsigned number_of_threads() const { return m_lloyd.number_of_threads(); }  ///< as set
+
+  const Evaluation& last_evaluation() const { return m_current.evaluation; }  ///< of the current point
+  std::size_t number_of_evaluations() const { return m_evaluations; }  ///< done so far
+  std::size_t number_of_steps() const { return m_steps; }              ///< done so far
+  /// the steps whose line search failed and that were Lloyd steps instead
+  std::size_t number_of_fallbacks() const { return m_fallbacks; }
+  std::size_t memory() const { return m_memory; }  ///< the most curvature pairs kept
+  std::size_t number_of_curvature_pairs() const { return m_pairs; }  ///< kept now
+  const Diagram& diagram() const { return m_lloyd.diagram(); }  ///< as last evaluated
+  const CDT& triangulation() const { return m_cdt; }           ///< the triangulation
+
+ private:
+  static constexpr std::size_t max_passes = 8;    // of moves and flips toward the targets
+  static constexpr std::size_t max_halvings = 2;  // of the step, before a Lloyd step instead
+  static constexpr double armijo = 1e-4;          // sufficient decrease: a fraction of g.s
+
+  // A point of the iteration, generators in their fixed order: positions, centroids, the
+  // coordinates x, the gradient g (both 2 per generator) and the preconditioner 1/(2 m).
+  struct Iterate {
+    std::vector<Point_2> points, centroids;
+    std::vector<double> x, g, h;
+    Evaluation evaluation;
+  };
+
+  static double dot(const std::vector<double>& a, const std::vector<double>& b) {
+    double s = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
+    return s;
+  }
+
+  void number_generators() {
+    m_vertices.clear();
+    m_index.clear();
+    m_order.clear();
+    for (const auto& f : m_lloyd.free_generators()) {
+      m_index.emplace(f.vertex, m_vertices.size());
+      m_vertices.push_back(f.vertex);
+    }
+    clear_memory();
+  }
+
+  // The last evaluation into `it`, by number; false if the free generators are not those numbered.
+  // Records the visit order, the order of the next moves.
+  bool gather(Iterate& it) {
+    const auto& generators = m_lloyd.free_generators();
+    const std::size_t n = m_vertices.size();
+    if (generators.size() != n) return false;
+    it.points.resize(n);
+    it.centroids.resize(n);
+    it.x.resize(2 * n);
+    it.g.resize(2 * n);
+    it.h.resize(n);
+    // The visit order changes little from one evaluation to the next: each generator is first
+    // looked for after the previous one in the last order, and by its handle if not there.
+    m_previous_order.swap(m_order);
+    m_position.resize(n);
+    for (std::size_t k = 0; k < m_previous_order.size(); ++k) m_position[m_previous_order[k]] = k;
+    m_order.clear();
+    std::size_t next = 0;
+    for (const auto& f : generators) {
+      std::size_t i;
+      if (next < m_previous_order.size() && m_vertices[m_previous_order[next]] == f.vertex) {
+        i = m_previous_order[next];
+      } else {
+        const auto found = m_index.find(f.vertex);
+        if (found == m_index.end()) return false;
+        i = found->second;
+        if (m_previous_order.size() == n) next = m_position[i];
+      }
+      ++next;
+      m_order.push_back(i);
+      const Point_2& p = f.vertex->point();
+      const double m = CGAL::to_double(f.mass);
+      it.points[i] = p;
+      it.centroids[i] = f.centroid;
+      it.x[2 * i] = CGAL::to_double(p.x());
+      it.x[2 * i + 1] = CGAL::to_double(p.y());
+      it.g[2 * i] = 2 * m * CGAL::to_double(p.x() - f.centroid.x());
+      it.g[2 * i + 1] = 2 * m * CGAL::to_double(p.y() - f.centroid.y());
+      it.h[i] = 1 / (2 * m);
+    }
+    it.evaluation = m_lloyd.last_evaluation();
+    return true;
+  }
+
+  void evaluate_trial(std::size_t resolution) {
+    m_lloyd.evaluate(resolution);
+    ++m_evaluations;
+    const bool same = gather(m_trial);  // moves neither add nor remove generators
+    CGAL_assertion(same);
+    CGAL_USE(same);
+  }
+
+  void clear_memory() { m_pairs = 0; }
+
+  // The trial point becomes the current one; its pair of differences joins the memory if its
+  // curvature is positive.
+  void accept() {
+    if (m_memory > 0) {
+      if (m_s.size() < m_memory) {
+        m_s.resize(m_memory);
+        m_y.resize(m_memory);
+        m_rho.resize(m_memory);
+      }
+      const std::size_t k = (m_first + m_pairs) % m_memory;
+      std::vector<double>& s = m_s[k];
+      std::vector<double>& y = m_y[k];
+      const std::size_t n = m_current.x.size();
+      s.resize(n);
+      y.resize(n);
+      for (std::size_t j = 0; j < n; ++j) {
+        s[j] = m_trial.x[j] - m_current.x[j];
+        y[j] = m_trial.g[j] - m_current.g[j];
+      }
+      const double sy = dot(s, y);
+      if (sy > 1e-10 * std::sqrt(dot(s, s) * dot(y, y))) {
+        m_rho[k] = 1 / sy;
+        if (m_pairs < m_memory) {
+          ++m_pairs;
+        } else {
+          m_first = (m_first + 1) % m_memory;
+        }
+      }
+    }
+    std::swap(m_current, m_trial);
+  }
+
+  // Two-loop recursion (Nocedal and Wright, Alg. 7.4) with H0 = diag(1/(2m)): the direction in
+  // m_direction; false if it does not go downhill.
+  bool quasi_newton_direction() {
+    std::vector<double>& q = m_direction;
+    q = m_current.g;
+    m_alpha.resize(m_pairs);
+    for (std::size_t t = m_pairs; t-- > 0;) {
+      const std::size_t k = (m_first + t) % m_memory;
+      m_alpha[t] = m_rho[k] * dot(m_s[k], q);
+      for (std::size_t j = 0; j < q.size(); ++j) q[j] -= m_alpha[t] * m_y[k][j];
+    }
+    // H0 = gamma diag(1/(2m)), scaled by the newest pair as in Nocedal and Wright (7.20)
+    const std::size_t newest = (m_first + m_pairs - 1) % m_memory;
+    double yhy = 0;
+    for (std::size_t i = 0; i < m_current.h.size(); ++i)
+      yhy += m_current.h[i] * (m_y[newest][2 * i] * m_y[newest][2 * i] +
+                               m_y[newest][2 * i + 1] * m_y[newest][2 * i + 1]);
+    const double gamma = 1 / (m_rho[newest] * yhy);
+    for (std::size_t i = 0; i < m_current.h.size(); ++i) {
+      q[2 * i] *= gamma * m_current.h[i];
+      q[2 * i + 1] *= gamma * m_current.h[i];
+    }
+    for (std::size_t t = 0; t < m_pairs; ++t) {
+      const std::size_t k = (m_first + t) % m_memory;
+      const double beta = m_rho[k] * dot(m_y[k], q);
+      for (std::size_t j = 0; j < q.size(); ++j) q[j] += (m_alpha[t] - beta) * m_s[k][j];
+    }
+    for (double& v : q) v = -v;
+    const double slope = dot(m_current.g, q);
+    return slope < 0 && std::isfinite(slope);
+  }
+
+  // Every free generator to its centroid (as far as the passes go), evaluated and accepted.
+  void lloyd_step(std::size_t resolution) {
+    m_targets = m_current.centroids;
+    internal::move_free_vertices(m_cdt, m_vertices, m_targets, m_order, max_passes, m_flip_stack);
+    evaluate_trial(resolution);
+    accept();
+  }
+
+  // Backtracking from the full quasi-Newton step; true if a trial point was accepted.
+  bool line_search(std::size_t resolution) {
+    const double e0 = m_current.evaluation.energy;
+    const std::size_t n = m_vertices.size();
+    double step = 1;
+    for (std::size_t attempt = 0; attempt <= max_halvings; ++attempt, step /= 2) {
+      m_targets.resize(n);
+      for (std::size_t i = 0; i < n; ++i)
+        m_targets[i] = Point_2(FT(m_current.x[2 * i] + step * m_direction[2 * i]),
+                               FT(m_current.x[2 * i + 1] + step * m_direction[2 * i + 1]));
+      internal::move_free_vertices(m_cdt, m_vertices, m_targets, m_order, max_passes, m_flip_stack);
+      evaluate_trial(resolution);
+      double slope = 0;  // g . s, with the displacement done
+      for (std::size_t j = 0; j < 2 * n; ++j) slope += m_current.g[j] * (m_trial.x[j] - m_current.x[j]);
+      if (m_trial.evaluation.energy <= e0 + armijo * std::min(slope, 0.0)) {
+        accept();
+        return true;
+      }
+    }
+    return false;
+  }
+
+  CDT& m_cdt;
+  Lloyd_optimizer m_lloyd;
+  std::size_t m_memory;
+  std::vector<Vertex_handle> m_vertices;                   // the free generators, by number
+  std::unordered_map<Vertex_handle, std::size_t> m_index;  // and their numbers (lookup only)
+  Iterate m_current, m_trial;
+  bool m_has_current = false;
+  std::vector<std::vector<double>> m_s, m_y;  // curvature pairs, a ring of m_memory
+  std::vector<double> m_rho;                  // 1 / (s . y)
+  std::size_t m_first = 0, m_pairs = 0;
+  std::vector<double> m_direction, m_alpha;
+  std::vector<Point_2> m_targets;
+  std::vector<std::size_t> m_order;  // the numbers in the last evaluation's visit order
+  std::vector<std::size_t> m_previous_order, m_position;  // the one before, and its inverse
+  std::vector<internal::Flip_candidate<CDT>> m_flip_stack;
+  std::size_t m_evaluations = 0, m_steps = 0, m_fallbacks = 0;
+};
+
+}  // namespace CVT_2
+
+#endif  // CVT_2_LBFGS_OPTIMIZER_2_H
