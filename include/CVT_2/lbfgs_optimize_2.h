@@ -24,13 +24,14 @@ namespace CVT_2 {
 /// the last evaluation below `move_ratio_bound` (confirmed at the maximum quadrature
 /// resolution), or another limit. Constrained vertices stay; a free generator never crosses
 /// a constraint. With an exact quadrature the energy never rises; with the midpoint rule the
-/// gradient is approximate and the line search tolerates a small rise (see
-/// `Lbfgs_optimizer_2`).
+/// energy and the gradient are approximate, and a line search that their error makes fail
+/// ends in a Lloyd step (see `Lbfgs_optimizer_2`).
 ///
 /// The result describes the generators as they are at the end. An iteration is one step,
 /// its line search included; `energy_history` and the move ratio histories have one entry a
 /// step (the point it accepted), the first before any move. A step costs one evaluation when
-/// its first trial point is accepted, which is the rule; `Lbfgs_optimizer_2` counts them.
+/// its first trial point is accepted, which is the rule; `Lbfgs_optimizer_2` counts
+/// evaluations (`Lloyd_result` has no field for them).
 ///
 /// \param cdt a constrained Delaunay triangulation with its domain marked (see
 ///        `Bounded_voronoi_diagram_2`); its free vertices are moved in place.

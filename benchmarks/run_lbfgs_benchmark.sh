@@ -1,0 +1,11 @@
+#!/bin/sh
+# Configures and builds the benchmarks (Release) in build-bench, or in $CVT_2_BENCH_BUILD, and runs
+# the L-BFGS one (about 3 minutes); the table comes last. Extra arguments go to Google Benchmark,
+# e.g. --benchmark_filter=unit_square
+set -e
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${CVT_2_BENCH_BUILD:-$root/build-bench}
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCVT_2_BUILD_BENCHMARKS=ON \
+      -DCVT_2_BUILD_TESTS=OFF -DCVT_2_BUILD_EXAMPLES=OFF > /dev/null
+cmake --build "$build" --target lbfgs_benchmark -j 1
+"$build/benchmarks/lbfgs_benchmark" "$@"
