@@ -338,6 +338,24 @@ TEST_CASE("Lloyd gives the same bits whatever the number of threads and from run
   }
 }
 
+TEST_CASE("lloyd_optimize_2 takes number_of_threads and gives the same result with any", "[lloyd]") {
+  std::vector<std::vector<double>> histories;
+  for (const int threads : {1, 2, 0}) {
+    Domain d;
+    load_domain(d, "earcut_dude.poly");
+    add_random_generators(d, 20000, 2);
+    const auto r = CVT_2::lloyd_optimize_2(
+        d.cdt, CVT_2::parameters::number_of_iterations(3).move_ratio_bound(0).number_of_threads(threads));
+    histories.push_back(r.energy_history);
+  }
+  CHECK(histories[1] == histories[0]);
+  CHECK(histories[2] == histories[0]);
+  Domain d;
+  load_square(d);
+  CHECK_THROWS_AS(CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::number_of_threads(-1)),
+                  std::invalid_argument);
+}
+
 TEST_CASE("a density error from a worker thread is the one a serial run reports", "[lloyd]") {
   const auto rho = [](const Point& p) { return p.x() < 0.5 || p.y() < 0.5 ? 1.0 : -1.0; };
   std::vector<std::string> messages;

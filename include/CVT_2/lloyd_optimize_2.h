@@ -38,6 +38,8 @@ namespace CVT_2 {
 ///   - `callback(f)`: `bool f(const Lloyd_result&)`, called after each evaluation with the
 ///     figures so far; returning `false` stops.
 ///   - `verbose(b)`: a line a iteration on `std::clog`; default `false`.
+///   - `number_of_threads(n)`: threads that build and integrate the cells; default 0, one per
+///     core. The result is the same, bit for bit, whatever `n`.
 /// \throws std::invalid_argument for a bad parameter value, naming it; Domain_error if the
 ///         density is not positive and finite at a point where it is evaluated.
 template <class CDT, class NP = No_named_parameters>
@@ -50,6 +52,7 @@ Lloyd_result lloyd_optimize_2(CDT& cdt, const NP& np = parameters::default_value
   return internal::with_density_and_quadrature<K>(np, [&](const auto& rho, const auto& quadrature) {
     Lloyd_optimizer_2<CDT, std::decay_t<decltype(rho)>, std::decay_t<decltype(quadrature)>> lloyd(
         cdt, rho, quadrature);
+    lloyd.set_number_of_threads(options.threads);
     internal::Lloyd_steps<decltype(lloyd)> steps{lloyd};
     return internal::run_optimization(steps, options, "lloyd");
   });

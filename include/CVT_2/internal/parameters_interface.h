@@ -13,5 +13,6 @@ CVT_2_add_named_parameter(maximum_quadrature_resolution_t, maximum_quadrature_re
 CVT_2_add_named_parameter(lbfgs_memory_t, lbfgs_memory)
 CVT_2_add_named_parameter(callback_t, callback)
 CVT_2_add_named_parameter(verbose_t, verbose)
+CVT_2_add_named_parameter(number_of_threads_t, number_of_threads)
 CVT_2_add_named_parameter(random_seed_t, random_seed)
 CVT_2_add_named_parameter(geom_traits_t, geom_traits)

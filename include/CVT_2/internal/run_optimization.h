@@ -40,6 +40,7 @@ struct Run_options {
   double bound = 0.01;
   std::size_t lo = 10, hi = 100;
   bool verbose = false;
+  unsigned threads = 0;  // 0: one per core
   std::function<bool(const Lloyd_result&)> callback;
 };
 
@@ -54,6 +55,10 @@ Run_options read_run_options(const NP& np) {
   o.lo = choose_parameter(get_parameter(np, minimum_quadrature_resolution_t()), std::size_t(10));
   o.hi = choose_parameter(get_parameter(np, maximum_quadrature_resolution_t()), std::size_t(100));
   o.verbose = choose_parameter(get_parameter(np, verbose_t()), false);
+  const auto threads = choose_parameter(get_parameter(np, number_of_threads_t()), 0);
+  if constexpr (std::is_signed_v<std::decay_t<decltype(threads)>>)
+    if (threads < 0) throw std::invalid_argument("number_of_threads must be >= 0, not " + std::to_string(threads));
+  o.threads = static_cast<unsigned>(threads);
   o.callback =
       choose_parameter(get_parameter(np, callback_t()), std::function<bool(const Lloyd_result&)>());
   if (!(o.bound >= 0)) throw std::invalid_argument("move_ratio_bound must be >= 0, not " + std::to_string(o.bound));
