@@ -223,6 +223,13 @@ TEST_CASE("L-BFGS runs twice on the same input give the same bits", "[lbfgs]") {
     return std::make_pair(energies, vertex_points(d.cdt));
   };
   CHECK(steps(1) == steps(3));
+  Domain d;
+  load_domain(d, "square_inner_constraints.poly");
+  CVT_2::insert_generators_2(d.cdt, random_generators(d, 1500, 4));
+  const auto one = CVT_2::lbfgs_optimize_2(
+      d.cdt, CVT_2::parameters::number_of_iterations(40).number_of_threads(1));
+  CHECK(one.energy_history == a.first);
+  CHECK(vertex_points(d.cdt) == a.second);
 }
 
 TEST_CASE("L-BFGS reaches Lloyd's 1% stop in fewer evaluations than Lloyd", "[lbfgs]") {

@@ -39,7 +39,7 @@ namespace CVT_2 {
 ///        `sizing_field`, `quadrature`, `minimum_quadrature_resolution`,
 ///        `maximum_quadrature_resolution`, `move_ratio_bound`, `number_of_iterations` (at most
 ///        that many steps), `maximum_running_time`, `callback` (called after each step),
-///        `verbose`), with the same meanings and defaults, and
+///        `verbose`, `number_of_threads`), with the same meanings and defaults, and
 ///   - `lbfgs_memory(m)`: the number of curvature pairs kept, an integer \f$\ge 0\f$;
 ///     default 7; 0 makes every step a Lloyd step.
 /// \throws std::invalid_argument for a bad parameter value, naming it; Domain_error if the
@@ -60,6 +60,7 @@ Lloyd_result lbfgs_optimize_2(CDT& cdt, const NP& np = parameters::default_value
   return internal::with_density_and_quadrature<K>(np, [&](const auto& rho, const auto& quadrature) {
     Lbfgs_optimizer_2<CDT, std::decay_t<decltype(rho)>, std::decay_t<decltype(quadrature)>> lbfgs(
         cdt, rho, quadrature, static_cast<std::size_t>(memory));
+    lbfgs.set_number_of_threads(options.threads);
     return internal::run_optimization(lbfgs, options, "lbfgs");
   });
 }
