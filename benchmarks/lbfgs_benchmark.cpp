@@ -1,7 +1,6 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // lbfgs_benchmark: L-BFGS against Lloyd iteration from the same random points: evaluations and
 // time to the 1% stop, and evaluations L-BFGS needs to reach the energy of K Lloyd iterations.
-#include <CVT_2/Exact_quadrature_2.h>
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/lbfgs_optimize_2.h>
@@ -13,14 +12,12 @@
 
 #include <benchmark/benchmark.h>
 
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 #include <functional>
 #include <limits>
 #include <map>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -73,30 +70,6 @@ void build(CDT& cdt, const Domain& d, std::size_t n) {
   CVT_2::insert_generators_2(cdt, CVT_2::random_points_in_domain_2(d.cdt, n, CVT_2::parameters::random_seed(1)));
 }
 
-// The exact quadrature, counting evaluations: each integrates every cell once, that of a
-// constrained vertex (which never moves) included, so the calls for that cell count them.
-struct Counting_quadrature {
-  Point sentinel;
-  std::shared_ptr<std::atomic<std::size_t>> evaluations = std::make_shared<std::atomic<std::size_t>>(0);
-  template <class Density, class PointRange>
-  CVT_2::Cell_moments_2<K> operator()(const Point& x, const PointRange& cell, const Density& rho,
-                                      std::size_t resolution) const {
-    if (x == sentinel) ++*evaluations;
-    return CVT_2::Exact_quadrature_2<K>()(x, cell, rho, resolution);
-  }
-};
-
-Counting_quadrature counting_quadrature(const CDT& cdt) {
-  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
-    if (!cdt.are_there_incident_constraints(v)) continue;
-    auto f = cdt.incident_faces(v), done = f;
-    do {
-      if (!cdt.is_infinite(f) && f->is_inside_domain()) return Counting_quadrature{v->point()};
-    } while (++f != done);
-  }
-  throw std::runtime_error("no constrained vertex with a cell");
-}
-
 struct Run {
   std::size_t iterations = 0, evaluations = 0;
   double seconds = nan, energy = nan;
@@ -115,11 +88,10 @@ template <class Optimize>
 Run run_to_stop(const Domain& d, std::size_t n, Optimize optimize, std::size_t& cells) {
   CDT cdt;
   build(cdt, d, n);
-  const Counting_quadrature q = counting_quadrature(cdt);
-  const CVT_2::Lloyd_result r = optimize(cdt, CVT_2::parameters::quadrature(q));
+  const CVT_2::Lloyd_result r = optimize(cdt, CVT_2::parameters::default_values());
   Run run;
   run.iterations = r.number_of_iterations;
-  run.evaluations = *q.evaluations;
+  run.evaluations = r.number_of_evaluations;
   run.seconds = r.seconds;
   run.energy = r.energy;
   run.stop = CVT_2::to_string(r.stop_reason);
@@ -168,16 +140,15 @@ void bm_energy(benchmark::State& state, const std::string& name) {
       }
       CDT cdt;
       build(cdt, d, n);
-      const Counting_quadrature q = counting_quadrature(cdt);
       std::size_t* reached = row.lbfgs_evaluations_to;
       const double* targets = row.lloyd_energy_after;
       const auto record = [&](const CVT_2::Lloyd_result& r) {
         for (int k = 0; k < 3; ++k)
-          if (reached[k] == 0 && r.energy <= targets[k]) reached[k] = *q.evaluations;
-        return reached[2] == 0 && *q.evaluations < 4 * lloyd_iterations[2];
+          if (reached[k] == 0 && r.energy <= targets[k]) reached[k] = r.number_of_evaluations;
+        return reached[2] == 0 && r.number_of_evaluations < 4 * lloyd_iterations[2];
       };
       const auto r = CVT_2::lbfgs_optimize_2(
-          cdt, CVT_2::parameters::quadrature(q).move_ratio_bound(0).callback(
+          cdt, CVT_2::parameters::move_ratio_bound(0).callback(
                    std::function<bool(const CVT_2::Lloyd_result&)>(record)));
       record(r);  // the last evaluation, if a limit stopped it before the callback saw it
       seconds += r.seconds;

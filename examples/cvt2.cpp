@@ -7,8 +7,6 @@
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/IO/read_wkt.h>
 #include <CVT_2/IO/write_svg.h>
-#include <CVT_2/Exact_quadrature_2.h>
-#include <CVT_2/Midpoint_quadrature_2.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
@@ -21,7 +19,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -35,7 +32,6 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
-#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -344,58 +340,23 @@ class Progress {
   bool m_quiet, m_terminal, m_line_open = false;
 };
 
-// The library's quadrature, counting evaluations. Every evaluation integrates every cell once,
-// that of a constrained vertex (which never moves) included: the calls for that one cell count
-// the evaluations. (Lloyd_result has no count of evaluations.)
-template <class Quadrature>
-struct Counting_quadrature {
-  Quadrature quadrature;
-  Point_2 sentinel;
-  std::shared_ptr<std::atomic<std::size_t>> evaluations =
-      std::make_shared<std::atomic<std::size_t>>(0);
-  template <class Density, class PointRange>
-  CVT_2::Cell_moments_2<K> operator()(const Point_2& x, const PointRange& cell, const Density& rho,
-                                      std::size_t resolution) const {
-    if (x == sentinel) ++*evaluations;
-    return quadrature(x, cell, rho, resolution);
-  }
-};
-
-// A constrained vertex with a cell: on a constraint, next to a domain face.
-std::optional<Point_2> constrained_vertex_with_cell(const CDT& cdt) {
-  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
-    if (!cdt.are_there_incident_constraints(v)) continue;
-    auto f = cdt.incident_faces(v), done = f;
-    do {
-      if (!cdt.is_infinite(f) && f->is_inside_domain()) return v->point();
-    } while (++f != done);
-  }
-  return std::nullopt;
-}
-
-// The optimization, and the number of evaluations it did.
-std::pair<CVT_2::Lloyd_result, std::size_t> optimize(CDT& cdt, const Options& o,
-                                                     const std::optional<Sizing>& sizing) {
+// The optimization, with progress on standard error; Ctrl-C ends it early.
+CVT_2::Lloyd_result optimize(CDT& cdt, const Options& o, const std::optional<Sizing>& sizing) {
   Progress progress(o.quiet);
   const std::function<bool(const CVT_2::Lloyd_result&)> callback = std::ref(progress);
   const auto np = CVT_2::parameters::number_of_iterations(o.iterations)
                       .move_ratio_bound(o.move_ratio)
                       .maximum_running_time(o.time_limit)
                       .callback(callback);
-  // The quadratures the library would choose: exact for uniform density, midpoint otherwise.
-  const Point_2 sentinel = constrained_vertex_with_cell(cdt).value_or(Point_2(HUGE_VAL, HUGE_VAL));
-  const Counting_quadrature<CVT_2::Exact_quadrature_2<K>> exact{{}, sentinel};
-  const Counting_quadrature<CVT_2::Midpoint_quadrature_2<K>> midpoint{{}, sentinel};
   const auto run = [&o](CDT& t, const auto& parameters) {
     return o.lbfgs ? CVT_2::lbfgs_optimize_2(t, parameters) : CVT_2::lloyd_optimize_2(t, parameters);
   };
   std::signal(SIGINT, on_interrupt);
   try {
-    const CVT_2::Lloyd_result r = sizing ? run(cdt, np.sizing_field(*sizing).quadrature(midpoint))
-                                         : run(cdt, np.quadrature(exact));
+    const CVT_2::Lloyd_result r = sizing ? run(cdt, np.sizing_field(*sizing)) : run(cdt, np);
     progress.finish();
     std::signal(SIGINT, SIG_DFL);
-    return {r, *exact.evaluations + *midpoint.evaluations};
+    return r;
   } catch (...) {
     progress.finish();
     throw;
@@ -550,15 +511,14 @@ void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd) {
   out.commit();
 }
 
-void print_summary(const Options& o, const CVT_2::Lloyd_result& r, std::size_t evaluations,
-                   const BVD& bvd, double area) {
+void print_summary(const Options& o, const CVT_2::Lloyd_result& r, const BVD& bvd, double area) {
   std::size_t generators = 0;
   bvd.for_each_cell([&](CDT::Vertex_handle, const auto&) { ++generators; });
   // E N / A^2 over its value for the regular hexagonal tiling, 5 / (18 sqrt 3) (Gersho).
   const double hexagon = 5 / (18 * std::sqrt(3.0));
   const double normalized = r.energy * double(generators) / (area * area) / hexagon;
   std::cout << std::setprecision(8) << "algorithm=" << (o.lbfgs ? "lbfgs" : "lloyd")
-            << " iterations=" << r.number_of_iterations << " evaluations=" << evaluations
+            << " iterations=" << r.number_of_iterations << " evaluations=" << r.number_of_evaluations
             << " stop=" << stop_name(r.stop_reason) << " energy=" << r.energy
             << " normalized_energy=" << normalized << " max_move_ratio=" << r.max_move_ratio
             << " mean_move_ratio=" << r.mean_move_ratio << " generators=" << generators
@@ -577,10 +537,10 @@ int run(const Options& o) {
   const std::size_t n =
       o.points ? *o.points : (domain.free_vertices == 0 && o.points_in.empty() ? 1000 : 0);
   insert_random_points(n, o, sizing, cdt);
-  const auto [r, evaluations] = optimize(cdt, o, sizing);
+  const CVT_2::Lloyd_result r = optimize(cdt, o, sizing);
   const BVD bvd(cdt);
   write_outputs(o, cdt, bvd);
-  print_summary(o, r, evaluations, bvd, domain_area(cdt));
+  print_summary(o, r, bvd, domain_area(cdt));
   return EXIT_SUCCESS;
 }
 

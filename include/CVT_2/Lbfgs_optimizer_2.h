@@ -83,7 +83,6 @@ class Lbfgs_optimizer_2 {
   /// and cleared otherwise. \throws Domain_error as `Lloyd_optimizer_2::evaluate()`.
   const Evaluation& evaluate(std::size_t resolution) {
     m_lloyd.evaluate(resolution);
-    ++m_evaluations;
     if (!gather(m_trial)) {  // other generators than before: number them again
       number_generators();
       gather(m_trial);
@@ -128,7 +127,8 @@ class Lbfgs_optimizer_2 {
   unsigned number_of_threads() const { return m_lloyd.number_of_threads(); }  ///< as set
 
   const Evaluation& last_evaluation() const { return m_current.evaluation; }  ///< of the current point
-  std::size_t number_of_evaluations() const { return m_evaluations; }  ///< done so far
+  /// evaluations done so far
+  std::size_t number_of_evaluations() const { return m_lloyd.number_of_evaluations(); }
   std::size_t number_of_steps() const { return m_steps; }              ///< done so far
   /// the steps whose line search failed and that were Lloyd steps instead
   std::size_t number_of_fallbacks() const { return m_fallbacks; }
@@ -213,7 +213,6 @@ class Lbfgs_optimizer_2 {
 
   void evaluate_trial(std::size_t resolution) {
     m_lloyd.evaluate(resolution);
-    ++m_evaluations;
     const bool same = gather(m_trial);  // moves neither add nor remove generators
     CGAL_assertion(same);
     CGAL_USE(same);
@@ -330,7 +329,7 @@ class Lbfgs_optimizer_2 {
   std::vector<std::size_t> m_order;  // the numbers in the last evaluation's visit order
   std::vector<std::size_t> m_previous_order, m_position;  // the one before, and its inverse
   std::vector<internal::Flip_candidate<CDT>> m_flip_stack;
-  std::size_t m_evaluations = 0, m_steps = 0, m_fallbacks = 0;
+  std::size_t m_steps = 0, m_fallbacks = 0;
 };
 
 }  // namespace CVT_2

@@ -54,6 +54,10 @@ inline const char* to_string(Lloyd_stop_reason reason) {
 /// an independent evaluation of the final points finds the same energy and move ratios.
 struct Lloyd_result {
   std::size_t number_of_iterations = 0;  ///< moves of all free generators done
+  /// evaluations of the diagram, energy and centroids done (one per Lloyd iteration, plus the
+  /// first and a confirmation at the highest quadrature resolution; L-BFGS adds its line
+  /// searches)
+  std::size_t number_of_evaluations = 0;
   Lloyd_stop_reason stop_reason = MAX_ITERATIONS_REACHED;  ///< why it stopped
   double energy = 0;           ///< \f$E = \sum_i \int_{V_i} \rho(y)\|y - x_i\|^2 dy\f$, all cells
   double max_move_ratio = 0;   ///< \f$\max_i mr(x_i)\f$ over free generators
@@ -150,6 +154,7 @@ class Lloyd_optimizer_2 {
   /// `CellQuadrature_2`). \throws Domain_error if the density is not positive and finite at a
   /// point where it is evaluated.
   const Evaluation& evaluate(std::size_t resolution) {
+    ++m_number_of_evaluations;
     m_diagram.update();
     m_evaluation = Evaluation();
     m_evaluation.resolution = resolution;
@@ -236,6 +241,8 @@ class Lloyd_optimizer_2 {
   }
 
   const Evaluation& last_evaluation() const { return m_evaluation; }  ///< the last evaluation
+  /// the number of calls of `evaluate()` so far
+  std::size_t number_of_evaluations() const { return m_number_of_evaluations; }
   /// The free generators of the last evaluation, in the order the cells were visited (a
   /// `move()` empties it).
   const std::vector<Free_generator>& free_generators() const { return m_moves; }
@@ -284,6 +291,7 @@ class Lloyd_optimizer_2 {
   Diagram m_diagram;
   Evaluation m_evaluation;
   unsigned m_number_of_threads = 0;
+  std::size_t m_number_of_evaluations = 0;
   std::vector<Chunk> m_chunks;
   std::vector<Free_generator> m_moves;
   std::vector<internal::Flip_candidate<CDT>> m_flip_stack;

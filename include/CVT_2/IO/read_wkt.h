@@ -40,6 +40,8 @@ struct Wkt_data {
   std::vector<std::size_t> point_lines;                 ///< the line of each point
 };
 
+}  // namespace IO
+
 namespace internal {
 
 // Silences std::cerr: CGAL's WKT reader prints "error." on some malformed lines.
@@ -78,7 +80,7 @@ inline void check_rings_closed(const std::string& text, const std::string& sourc
           t.erase(t.find_last_not_of(" \t\r") + 1);
           return t;
         };
-        throw Parse_error(source, line,
+        throw IO::Parse_error(source, line,
                           "a ring is not closed: it starts at (" + trim(first) + ") and ends at (" +
                               trim(last) + "); a WKT ring repeats its first point last");
       }
@@ -87,6 +89,8 @@ inline void check_rings_closed(const std::string& text, const std::string& sourc
 }
 
 }  // namespace internal
+
+namespace IO {
 
 /// \ingroup PkgCvt2IO
 /// Reads WKT, one geometry a line: `POLYGON` and `MULTIPOLYGON` (the domain),
@@ -180,7 +184,7 @@ Wkt_data<K> read_wkt(std::istream& is, const std::string& source = "<wkt>") {
 /// Reads the WKT file `filename`. \throws Parse_error, also when it cannot be opened.
 template <class K>
 Wkt_data<K> read_wkt(const std::string& filename) {
-  std::ifstream is = CVT_2::internal::open_input(filename);
+  std::ifstream is = internal::open_input(filename);
   return read_wkt<K>(is, filename);
 }
 

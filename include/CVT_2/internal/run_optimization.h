@@ -96,11 +96,12 @@ struct Lloyd_steps {
     lloyd.move();
     return lloyd.evaluate(resolution);
   }
+  std::size_t number_of_evaluations() const { return lloyd.number_of_evaluations(); }
 };
 
 // The loop both optimizers run. `Optimizer` has evaluate(resolution), which evaluates the
 // generators where they are, and step(resolution), which moves them and evaluates them there;
-// both return a Lloyd_optimizer_2 Evaluation. It stops by the paper's rule (every move ratio of
+// both return a Lloyd_optimizer_2 Evaluation; number_of_evaluations() counts them. It stops by the paper's rule (every move ratio of
 // the last evaluation below the bound, confirmed at the highest resolution) or a limit, and
 // returns the figures of the final points.
 template <class Optimizer>
@@ -123,6 +124,7 @@ Lloyd_result run_optimization(Optimizer& optimizer, const Run_options& o, const 
     r.max_move_ratio_history.push_back(e.max_move_ratio);
     r.mean_move_ratio_history.push_back(e.mean_move_ratio);
     r.seconds = seconds;
+    r.number_of_evaluations = optimizer.number_of_evaluations();
     if (o.verbose)
       std::clog << name << ": iteration " << r.number_of_iterations << " energy " << e.energy
                 << " max move ratio " << e.max_move_ratio << " resolution " << resolution << " "
