@@ -197,16 +197,6 @@ const char* to_string(CGAL::Mesh_optimization_return_code c) {
   }
 }
 
-const char* to_string(CVT_2::Lloyd_stop_reason r) {
-  switch (r) {
-    case CVT_2::CONVERGED: return "converged";
-    case CVT_2::MAX_ITERATIONS_REACHED: return "max_iterations";
-    case CVT_2::TIME_LIMIT_REACHED: return "time";
-    case CVT_2::CALLBACK_REQUESTED_STOP: return "callback";
-    default: return "no_free_generator";
-  }
-}
-
 struct Row {
   std::size_t k = 0, cells = 0;
   double build = nan, ours = nan, cgal = nan, cgal_uniform = nan;
@@ -350,7 +340,7 @@ void bm_converge(benchmark::State& state, const std::string& name) {
                       : CVT_2::lloyd_optimize_2(cdt);
       r.ours_conv_it = res.number_of_iterations;
       r.ours_conv_s = res.seconds;
-      r.ours_stop = to_string(res.stop_reason);
+      r.ours_stop = CVT_2::to_string(res.stop_reason);
       seconds += res.seconds;
       r.ours_conv = measure(cdt, d);
     }
