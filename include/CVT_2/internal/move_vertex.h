@@ -62,6 +62,7 @@ void restore_delaunay(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
   // Faces are visited in memory order; the vertices and neighbors of a face some steps ahead,
   // then the neighbors' vertices, are prefetched (the in-circle tests read all of them).
   constexpr int distance = 8;
+  const auto less_xy = cdt.geom_traits().less_xy_2_object();
   auto ahead = cdt.finite_faces_begin(), ahead2 = ahead;
   for (int i = 0; i < 2 * distance && ahead != cdt.finite_faces_end(); ++i) ++ahead;
   for (int i = 0; i < distance && ahead2 != cdt.finite_faces_end(); ++i) ++ahead2;
@@ -80,13 +81,13 @@ void restore_delaunay(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
     if (!f->is_inside_domain()) continue;
     for (int i = 0; i < 3; ++i) {
       const auto g = f->neighbor(i);
-      // Each edge once: from the only domain face, or from the face whose vertex opposite the
-      // edge comes first in (x, y) order. Not by address: the flips, hence the faces' layout
+      // Each edge once: from the only domain face, or from the face that sees the edge's
+      // smaller endpoint in (x, y) order first, counterclockwise (the other face sees the
+      // endpoints the other way round). Not by address: the flips, hence the faces' layout
       // and all sums over them, must be the same from run to run.
       if (f->is_constrained(i)) continue;
       if (g->is_inside_domain() && !cdt.is_infinite(g) &&
-          cdt.geom_traits().less_xy_2_object()(g->vertex(g->index(f))->point(),
-                                               f->vertex(i)->point()))
+          less_xy(f->vertex(CDT::cw(i))->point(), f->vertex(CDT::ccw(i))->point()))
         continue;
       if (!cdt.is_flipable(f, i)) continue;
       stack.assign(1, Flip_candidate<CDT>{f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))});
