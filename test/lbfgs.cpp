@@ -211,15 +211,16 @@ TEST_CASE("L-BFGS runs twice on the same input give the same bits", "[lbfgs]") {
   const auto b = run();
   CHECK(a.first == b.first);
   CHECK(a.second == b.second);
-  // And on one thread or three.
+  // And on one thread or three (enough generators for the cells to be split among them).
   const auto steps = [](unsigned threads) {
     Domain d;
     load_domain(d, "square_inner_constraints.poly");
-    CVT_2::insert_generators_2(d.cdt, random_generators(d, 1500, 4));
+    CVT_2::insert_generators_2(d.cdt, random_generators(d, 30000, 4));
     CVT_2::Lbfgs_optimizer_2<Cdt> lbfgs(d.cdt);
     lbfgs.set_number_of_threads(threads);
+    REQUIRE(lbfgs.diagram().number_of_chunks() >= 12);
     std::vector<double> energies{lbfgs.evaluate(10).energy};
-    for (int it = 0; it < 20; ++it) energies.push_back(lbfgs.step(10).energy);
+    for (int it = 0; it < 6; ++it) energies.push_back(lbfgs.step(10).energy);
     return std::make_pair(energies, vertex_points(d.cdt));
   };
   CHECK(steps(1) == steps(3));
