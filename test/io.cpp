@@ -271,3 +271,62 @@ TEST_CASE("bad WKT gives an error that names the line and what is wrong", "[io][
   // a repeated point in a row counts once
   CHECK(domain_error("POLYGON((0 0, 1 0, 1 0, 1 1, 0 1, 0 0))\n").empty());
 }
+
+// Found by fuzz/fuzz_pipeline (libFuzzer), minimized: vertices 1 and 2 at the same point and a
+// segment between them, which CGAL's insert_constraint() may not be given; and a segment
+// marker 'p' that the reader did not check.
+TEST_CASE("regression: a segment between two vertices at the same point is a domain error",
+          "[io][regression]") {
+  const std::string fuzzed =
+      "18\n1 1 0\n2 1 0\n3 0 0\n4 0 0\n5 2 2\n6 5 3\n7 5 1\n8 7 4\n9 5 6\n10 8 5\n11 1 5\n"
+      "12 3 8\n13 8 8\n14 5 6\n15 5 2\n16 4 5\n17 2 9\n18 8 6\n6 1\n1 4 1 3\n1 1 2 p\n1 1 4 3\n"
+      "1 1 5 3\n1 1 6 1\n1 4 8 3";
+  CHECK_THAT(message_of<CVT_2::IO::Parse_error>([&] { parse(fuzzed); }),
+             Catch::Contains("t.poly:22: not an integer (near 'p')"));
+  std::string marked = fuzzed;
+  marked.replace(marked.find("1 1 2 p"), 7, "1 1 2 1");
+  const std::string m = message_of<CVT_2::Domain_error>([&] {
+    Cdt cdt;
+    CVT_2::IO::insert_poly(cdt, parse(marked));
+  });
+  CHECK_THAT(m, Catch::Contains("t.poly:22: segment (1, 0) - (1, 0) has zero length"));
+}
+
+// Found by fuzz/fuzz_pipeline: strtod() stops at a NUL byte, so "1<NUL>junk" was read as 1;
+// likewise a segment index "8/2" and vertex attributes and markers were never checked.
+TEST_CASE("regression: numbers, indices, attributes and markers are checked in full",
+          "[io][regression]") {
+  using namespace std::string_literals;  // "..."s keeps the NUL bytes
+  using E = CVT_2::IO::Parse_error;
+  const auto err = [](const std::string& text) { return message_of<E>([&] { parse(text); }); };
+  CHECK_THAT(err("3 2 0 0\n1 1 0\n2 1\0\0\0\0 0\n3 0 1\n"s),
+             Catch::Contains("t.poly:3: not a number (near '1????')"));
+  CHECK_THAT(err("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2\0 3\n"s),
+             Catch::Contains("t.poly:7: not an integer (near '2?')"));
+  CHECK_THAT(err("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 1\n1 1 2 1\n8/2 2 3 1\n3 3 1 1\n"),
+             Catch::Contains("t.poly:7: not an integer (near '8/2')"));
+  CHECK_THAT(err("3 2 1 1\n1 0 0 0.5 1\n2 1 0 x 1\n"), Catch::Contains("t.poly:3: not a number (near 'x')"));
+  CHECK_THAT(err("3 2 1 1\n1 0 0 0.5 1\n2 1 0 0.5 1.5\n"),
+             Catch::Contains("t.poly:3: not an integer (near '1.5')"));
+  std::istringstream points("0.5 0.5\n0.25\0 0.75\n"s);
+  CHECK_THAT(message_of<E>([&] { CVT_2::IO::read_points<Point>(points, "p.txt"); }),
+             Catch::Contains("p.txt:2: not a number (near '0.25?')"));
+  // attributes and markers that are numbers are still read and ignored
+  CHECK(parse("3 2 1 1\n1 0 0 0.5 1\n2 1 0 -2e3 0\n3 0 1 7 2\n3 1\n1 1 2 1\n2 2 3 1\n3 3 1 2\n")
+            .segments.size() == 3);
+}
+
+// Found by fuzz/fuzz_read_points (UndefinedBehaviorSanitizer): an empty points file gave
+// insert_generators_2 an empty range, and it took the address of the first point.
+TEST_CASE("regression: inserting no generators (an empty points file) changes nothing",
+          "[io][regression]") {
+  std::istringstream empty("");
+  const auto points = CVT_2::IO::read_points<Point>(empty, "p.txt");
+  REQUIRE(points.points.empty());
+  Cdt cdt;
+  CVT_2::IO::insert_poly(cdt, parse(square));
+  const std::size_t n = cdt.number_of_vertices();
+  CVT_2::insert_generators_2(cdt, points.points);
+  CHECK(cdt.number_of_vertices() == n);
+  CHECK(total_cell_area(Bvd(cdt)) == Approx(1.0).epsilon(1e-12));
+}

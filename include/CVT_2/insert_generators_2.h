@@ -63,6 +63,7 @@ void insert_generators_2(CDT& cdt, const PointRange& points) {
   using Point_2 = typename CDT::Point_2;
   using Face_handle = typename CDT::Face_handle;
   const std::vector<Point_2> pts(std::begin(points), std::end(points));
+  if (pts.empty()) return;  // make_property_map() would take the address of pts[0]
   for (std::size_t i = 0; i < pts.size(); ++i)
     if (!internal::is_valid_point(pts[i]))
       throw Domain_error("generator " + internal::to_string(pts[i]) +

@@ -32,10 +32,11 @@ struct Poly_data {
 /// \ingroup PkgCvt2IO
 /// Reads Triangle's `.poly` format: vertices (2D, any attributes and markers, numbered from 0
 /// or from 1 as the first vertex says), segments (optional marker), holes, and an optional
-/// regional-attributes section, which is read and ignored. `#` starts a comment anywhere.
+/// regional-attributes section. Attributes, markers and regions are checked and ignored. `#`
+/// starts a comment anywhere.
 /// \throws Parse_error with the file, line and token on any malformed entry: wrong counts,
-///         indices out of range, numbers that are not finite, a segment of one vertex,
-///         content after the last section.
+///         indices out of range, numbers that are not finite, an index or marker that is not
+///         an integer, a segment of one vertex, content after the last section.
 template <class Point_2>
 Poly_data<Point_2> read_poly(std::istream& is, const std::string& source = "<poly>") {
   internal::Line_reader in(is, source);
@@ -68,6 +69,8 @@ Poly_data<Point_2> read_poly(std::istream& is, const std::string& source = "<pol
               t[0]);
     }
     data.vertices.emplace_back(in.real(t[1]), in.real(t[2]));
+    for (std::size_t f = 3; f < 3 + nattr; ++f) in.real(t[f]);
+    if (nmark) in.integer(t[3 + nattr]);
     data.vertex_lines.push_back(in.line());
   }
 
@@ -81,6 +84,7 @@ Poly_data<Point_2> read_poly(std::istream& is, const std::string& source = "<pol
     if (t.size() != 3 + smark)
       in.fail("expected '<index> <vertex> <vertex>'" + std::string(smark ? " <marker>" : ""),
               t.back());
+    in.integer(t[0]);
     std::array<std::size_t, 2> s{};
     for (int k = 0; k < 2; ++k) {
       const long long v = in.integer(t[1 + k]);
@@ -91,6 +95,7 @@ Poly_data<Point_2> read_poly(std::istream& is, const std::string& source = "<pol
       s[k] = static_cast<std::size_t>(v - first);
     }
     if (s[0] == s[1]) in.fail("a segment needs two different vertices", t[2]);
+    if (smark) in.integer(t[3]);
     data.segments.push_back(s);
     data.segment_lines.push_back(in.line());
   }
@@ -130,9 +135,10 @@ Poly_data<Point_2> read_poly(const std::string& filename) {
 /// Inserts a `.poly` graph into `cdt` and marks its domain by Triangle's rule: vertices, then
 /// segments as constraints, then the faces reachable from outside or from a hole point without
 /// crossing a segment are left out. Vertices on no segment are free generators, as in Triangle.
-/// \throws Domain_error naming the file and line of the offending item: two segments that cross
-///         (with a triangulation that does not compute intersections), a free vertex outside the
-///         domain, a hole point on a segment, or an empty domain.
+/// \throws Domain_error naming the file and line of the offending item: a segment whose two
+///         vertices lie at the same point, two segments that cross (with a triangulation that
+///         does not compute intersections), a free vertex outside the domain, a hole point on a
+///         segment, or an empty domain.
 template <class CDT>
 void insert_poly(CDT& cdt, const Poly_data<typename CDT::Point_2>& data) {
   const auto where = [&data](std::size_t line) {
@@ -152,6 +158,11 @@ void insert_poly(CDT& cdt, const Poly_data<typename CDT::Point_2>& data) {
   }
   for (std::size_t j = 0; j < data.segments.size(); ++j) {
     const auto& s = data.segments[j];
+    if (vertices[s[0]] == vertices[s[1]])  // two vertices of the file at the same point
+      throw Domain_error(where(data.segment_lines[j]) + "segment " +
+                         internal::to_string(data.vertices[s[0]]) + " - " +
+                         internal::to_string(data.vertices[s[1]]) +
+                         " has zero length: its vertices coincide");
     try {
       cdt.insert_constraint(vertices[s[0]], vertices[s[1]]);
     } catch (const typename CDT::Intersection_of_constraints_exception&) {

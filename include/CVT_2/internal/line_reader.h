@@ -54,7 +54,8 @@ class Line_reader {
     char* e = nullptr;
     errno = 0;
     const double x = std::strtod(b, &e);
-    if (e == b || *e != '\0') fail("not a number", t);
+    // The whole token: a NUL byte inside it would otherwise end it early ("1\0junk" read as 1).
+    if (e == b || e != b + t.size()) fail("not a number", t);
     if (!std::isfinite(x) || (errno == ERANGE && std::fabs(x) > 1)) fail("number not finite or too large", t);
     return x;
   }
@@ -63,7 +64,7 @@ class Line_reader {
     char* e = nullptr;
     errno = 0;
     const long long x = std::strtoll(b, &e, 10);
-    if (e == b || *e != '\0' || errno == ERANGE) fail("not an integer", t);
+    if (e == b || e != b + t.size() || errno == ERANGE) fail("not an integer", t);
     return x;
   }
   std::size_t count(const std::string& t, const std::string& what) const {
