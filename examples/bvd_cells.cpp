@@ -3,11 +3,11 @@
 // vertices and of the points, one line per vertex of the closed domain on standard output:
 //   x y c k x1 y1 ... xk yk      (c = 1 for a constrained vertex; the cell, counterclockwise)
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/Cvt_triangulation_2.h>
 #include <CVT_2/IO/read_points.h>
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/IO/write_svg.h>
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cstdlib>
@@ -16,11 +16,7 @@
 #include <vector>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_2<K>;
-using Fb = CVT_2::Bvd_face_base_2<K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using CDT = CGAL::Constrained_Delaunay_triangulation_2<
-    K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
+using CDT = CVT_2::Cvt_triangulation_2<K>;  // CGAL's CDT with Bvd_face_base_2 faces
 using BVD = CVT_2::Bounded_voronoi_diagram_2<CDT>;
 
 int main(int argc, char* argv[]) {

@@ -3,16 +3,16 @@
 // Lloyd iteration, with pictures and cells out (SVG, text, GeoJSON, VTK, Triangle mesh). `cvt2 --help`.
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/Cvt_triangulation_2.h>
+#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/IO/read_points.h>
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/IO/read_wkt.h>
 #include <CVT_2/IO/write_svg.h>
-#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_with_holes_2.h>
 
@@ -40,11 +40,7 @@
 #include <vector>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_2<K>;
-using Fb = CVT_2::Bvd_face_base_2<K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using CDT = CGAL::Constrained_Delaunay_triangulation_2<
-    K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
+using CDT = CVT_2::Cvt_triangulation_2<K>;  // CGAL's CDT with Bvd_face_base_2 faces
 using BVD = CVT_2::Bounded_voronoi_diagram_2<CDT>;
 using Point_2 = K::Point_2;
 using Sizing = CVT_2::Boundary_lipschitz_sizing_2<K>;

@@ -1,11 +1,11 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // lloyd_four_clusters [DOMAIN.poly] [PREFIX]: the paper's Fig. 7, Lloyd iteration step by step
 // from clustered generators, a picture after 1, 5, 10 and 100 iterations and at convergence.
+#include <CVT_2/Cvt_triangulation_2.h>
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/IO/write_svg.h>
 #include <CVT_2/Lloyd_optimizer_2.h>
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cstdlib>
@@ -13,11 +13,7 @@
 #include <string>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_2<K>;
-using Fb = CVT_2::Bvd_face_base_2<K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using CDT = CGAL::Constrained_Delaunay_triangulation_2<
-    K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
+using CDT = CVT_2::Cvt_triangulation_2<K>;  // CGAL's CDT with Bvd_face_base_2 faces
 
 int main(int argc, char* argv[]) {
   const std::string domain = argc > 1 ? argv[1] : CVT_2_DATA_DIR "/four_clusters.poly";

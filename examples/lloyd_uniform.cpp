@@ -2,13 +2,13 @@
 // lloyd_uniform [DOMAIN.poly] [OUT.svg] [N] [ITERATIONS]: a centroidal Voronoi tessellation of
 // uniform density from N random generators, by lloyd_optimize_2() with named parameters.
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/Cvt_triangulation_2.h>
+#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/IO/write_svg.h>
-#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cstdlib>
@@ -17,11 +17,7 @@
 #include <string>
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_2<K>;
-using Fb = CVT_2::Bvd_face_base_2<K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using CDT = CGAL::Constrained_Delaunay_triangulation_2<
-    K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
+using CDT = CVT_2::Cvt_triangulation_2<K>;  // CGAL's CDT with Bvd_face_base_2 faces
 
 int main(int argc, char* argv[]) {
   const std::string domain = argc > 1 ? argv[1] : CVT_2_DATA_DIR "/square_inner_constraints.poly";

@@ -3,6 +3,8 @@
 #include "support/random_domain.h"
 #include "support/support.h"
 
+#include <CVT_2/Cvt_triangulation_2.h>
+
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
@@ -433,4 +435,15 @@ TEST_CASE("random domains on a grid: holes, touching polylines, points on constr
     const Bvd bvd(cdt);
     check_diagram(bvd, 300, seed);
   }
+}
+
+TEST_CASE("Cvt_triangulation_2 is the triangulation the tests spell out", "[bvd]") {
+  STATIC_REQUIRE(std::is_same<CVT_2::Cvt_triangulation_2<K>, Cdt>::value);
+  CVT_2::Cvt_triangulation_2<K> cdt;
+  cdt.insert_constraint(Point(0, 0), Point(1, 0));
+  cdt.insert_constraint(Point(1, 0), Point(0, 1));
+  cdt.insert_constraint(Point(0, 1), Point(0, 0));
+  CVT_2::mark_domain_2(cdt, std::vector<Point>{});
+  CHECK(CVT_2::Bounded_voronoi_diagram_2<CVT_2::Cvt_triangulation_2<K>>(cdt).has_cell(
+      cdt.finite_vertices_begin()));
 }
