@@ -1,0 +1,25 @@
+#!/bin/sh
+# Runs the whole pipeline once under valgrind's memcheck on small cases (the examples of the
+# Release build that scripts/run_tests.sh makes, built here if missing): any error or leak
+# fails the run.
+set -e
+root=$(cd "$(dirname "$0")/.." && pwd)
+"$root/scripts/install_dependencies.sh" valgrind
+if [ ! -x "$root/build/examples/cvt2" ] || [ ! -x "$root/build/examples/bvd_cells" ]; then
+  cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release > /dev/null
+  cmake --build "$root/build" --target cvt2 bvd_cells -j 2
+fi
+data="$root/examples/data"
+out=$(mktemp -d)
+check() {
+  valgrind --quiet --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite,indirect "$@"
+}
+check "$root/build/examples/bvd_cells" "$data/four_clusters.poly" "$data/four_clusters_points.txt" \
+  "$out/bvd.svg" > /dev/null
+check "$root/build/examples/cvt2" "$data/four_clusters.poly" --iterations 10 --quiet \
+  --svg "$out/a.svg" --geojson "$out/a.geojson" --vtk "$out/a.vtk" --mesh-out "$out/a"
+check "$root/build/examples/cvt2" "$data/earcut_dude.poly" -n 300 --density lipschitz \
+  --iterations 5 --quiet --algorithm lloyd
+check "$root/build/examples/cvt2" "$data/four_clusters.wkt" -n 20000 --iterations 3 --quiet  # threads
+rm -r "$out"
+echo "valgrind: no error, no leak"
