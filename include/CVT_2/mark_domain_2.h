@@ -45,6 +45,14 @@ bool has_domain_face(const CDT& cdt, typename CDT::Vertex_handle v) {
   return false;
 }
 
+// Whether some face of the triangulation is in the domain.
+template <class CDT>
+bool has_domain_face(const CDT& cdt) {
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (f->is_inside_domain()) return true;
+  return false;
+}
+
 // Clears the domain flag of every face reachable from the seeds without crossing a constraint.
 template <class CDT>
 void flood_outside(const CDT& cdt, std::vector<typename CDT::Face_handle>& stack) {

@@ -177,10 +177,7 @@ void insert_poly(CDT& cdt, const Poly_data<typename CDT::Point_2>& data) {
   } catch (const Domain_error& e) {
     throw Domain_error(data.source + ": " + e.what());
   }
-  bool empty = true;
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end() && empty; ++f)
-    empty = !f->is_inside_domain();
-  if (empty)
+  if (!internal::has_domain_face(cdt))
     throw Domain_error(data.source + ": the domain is empty: no region is enclosed by segments");
   std::vector<bool> on_segment(data.vertices.size(), false);
   for (const auto& s : data.segments) on_segment[s[0]] = on_segment[s[1]] = true;

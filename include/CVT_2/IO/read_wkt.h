@@ -220,10 +220,7 @@ void insert_wkt(CDT& cdt, const Wkt_data<typename CDT::Geom_traits>& w) {
   for (std::size_t i = 0; i < w.polylines.size(); ++i)
     constrain(w.polylines[i], false, w.polyline_lines[i]);
   mark_domain_from_polygons_2(cdt, w.polygons);
-  bool empty = true;
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end() && empty; ++f)
-    empty = !f->is_inside_domain();
-  if (empty) throw Domain_error(w.source + ": the domain is empty: no polygon has an area");
+  if (!internal::has_domain_face(cdt)) throw Domain_error(w.source + ": the domain is empty: no polygon has an area");
   try {
     insert_generators_2(cdt, w.points);
   } catch (const Domain_error& e) {
