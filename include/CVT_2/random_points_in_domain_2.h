@@ -54,14 +54,26 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
                          std::abs(CGAL::to_double(triangles.back()[i].y() - triangles.back()[0].y()))});
   }
   // Areas only weigh the triangles against each other: measured in units of 2^e, the domain's
-  // scale, they neither underflow nor overflow (a domain 1e-300 wide is not empty).
+  // scale, they neither underflow nor overflow (a domain 1e-300 wide is not empty). They are
+  // taken from the vertex opposite the longest edge: from the tip of a needle, the two long
+  // edges' cross product would cancel to zero.
   int e = 0;
   if (extent > 0) std::frexp(extent, &e);
   const auto area = [e](const Triangle& t) {
-    const double ux = std::ldexp(CGAL::to_double(t[1].x() - t[0].x()), -e);
-    const double uy = std::ldexp(CGAL::to_double(t[1].y() - t[0].y()), -e);
-    const double vx = std::ldexp(CGAL::to_double(t[2].x() - t[0].x()), -e);
-    const double vy = std::ldexp(CGAL::to_double(t[2].y() - t[0].y()), -e);
+    int o = 0;  // the vertex opposite the longest edge
+    double longest = -1;
+    for (int i = 0; i < 3; ++i) {
+      const double dx = std::ldexp(CGAL::to_double(t[(i + 2) % 3].x() - t[(i + 1) % 3].x()), -e);
+      const double dy = std::ldexp(CGAL::to_double(t[(i + 2) % 3].y() - t[(i + 1) % 3].y()), -e);
+      if (dx * dx + dy * dy > longest) longest = dx * dx + dy * dy, o = i;
+    }
+    const Point_2& a = t[o];
+    const Point_2& b = t[(o + 1) % 3];
+    const Point_2& c = t[(o + 2) % 3];
+    const double ux = std::ldexp(CGAL::to_double(b.x() - a.x()), -e);
+    const double uy = std::ldexp(CGAL::to_double(b.y() - a.y()), -e);
+    const double vx = std::ldexp(CGAL::to_double(c.x() - a.x()), -e);
+    const double vy = std::ldexp(CGAL::to_double(c.y() - a.y()), -e);
     return (ux * vy - uy * vx) / 2;
   };
   double domain_area = 0;
@@ -69,17 +81,20 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   if (!(domain_area > 0)) throw Domain_error("random points: the domain is empty");
   std::vector<double> cumulative;
   double total = 0;
+  std::vector<Triangle> faces;        // with a density: the domain faces, cut into `triangles`
+  std::vector<std::size_t> face_of;   // the face each piece was cut from
   if constexpr (has_parameter<NP, density_t>) {
     const auto& rho = get_parameter(np, density_t());
     const double small = domain_area / double(std::max<std::size_t>(n, 10000));
     std::vector<Triangle> pieces, stack;
-    for (const Triangle& t : triangles) {
-      stack.assign(1, t);
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
+      stack.assign(1, triangles[f]);
       while (!stack.empty()) {
         const Triangle u = stack.back();
         stack.pop_back();
         if (area(u) <= small) {
           pieces.push_back(u);
+          face_of.push_back(f);
           continue;
         }
         int k = 0;  // the vertex opposite the longest edge
@@ -93,6 +108,7 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
         stack.push_back({u[k], m, u[(k + 2) % 3]});
       }
     }
+    faces.swap(triangles);
     triangles.swap(pieces);
     for (const Triangle& t : triangles) {
       double s = 0;
@@ -105,6 +121,7 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   }
   std::vector<Point_2> points;
   points.reserve(n);
+  std::size_t misses = 0;  // draws in a row that fell outside their face
   while (points.size() < n) {
     const double u = internal::uniform01(rng) * total;
     const std::size_t k = std::min<std::size_t>(
@@ -112,16 +129,27 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
         triangles.size() - 1);
     double s = internal::uniform01(rng), t = internal::uniform01(rng);
     if (s + t > 1) s = 1 - s, t = 1 - t;
-    const Point_2& a = triangles[k][0];
-    const Point_2& b = triangles[k][1];
-    const Point_2& c = triangles[k][2];
-    const Point_2 p(a.x() + s * (b.x() - a.x()) + t * (c.x() - a.x()),
-                    a.y() + s * (b.y() - a.y()) + t * (c.y() - a.y()));
-    // Rounding may put a point drawn by a boundary edge just outside: draw again.
+    const Triangle& piece = triangles[k];
+    const Point_2& o = piece[0];
+    Point_2 p(o.x() + s * (piece[1].x() - o.x()) + t * (piece[2].x() - o.x()),
+              o.y() + s * (piece[1].y() - o.y()) + t * (piece[2].y() - o.y()));
+    // Rounding may put a point drawn by a boundary edge just outside: draw again. The test is
+    // against the domain face (a piece's cut points are rounded). A needle thinner than double
+    // precision can resolve (a vertex at 1e124 among vertices at 10) holds almost no double
+    // point and would reject draws forever: after 64 misses in a row, the vertex of the face
+    // nearest to the draw is taken instead.
+    const Triangle& face = face_of.empty() ? piece : faces[face_of[k]];
+    const Point_2& a = face[0];
+    const Point_2& b = face[1];
+    const Point_2& c = face[2];
     if (CGAL::orientation(a, b, p) == CGAL::RIGHT_TURN ||
         CGAL::orientation(b, c, p) == CGAL::RIGHT_TURN ||
-        CGAL::orientation(c, a, p) == CGAL::RIGHT_TURN)
-      continue;
+        CGAL::orientation(c, a, p) == CGAL::RIGHT_TURN) {
+      if (++misses < 64) continue;
+      const Point_2& ab = CGAL::compare_distance_to_point(p, a, b) == CGAL::LARGER ? b : a;
+      p = CGAL::compare_distance_to_point(p, ab, c) == CGAL::LARGER ? c : ab;
+    }
+    misses = 0;
     points.push_back(p);
   }
   return points;
