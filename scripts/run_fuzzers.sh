@@ -48,7 +48,8 @@ for spec in fuzz_read_poly:16384 fuzz_read_points:8192 fuzz_pipeline:8192; do
   log="$build/logs/$target.log"
   # One process at a time; a hang is an input that takes over 10 s.
   if "$build/fuzz/$target" "$build/corpus/$target" -max_total_time="$seconds" -max_len="$max_len" \
-       -timeout=10 -print_final_stats=1 -artifact_prefix="$build/findings/$target/" > "$log" 2>&1; then
+       -timeout=10 -dict="$root/fuzz/numbers.dict" -print_final_stats=1 \
+       -artifact_prefix="$build/findings/$target/" > "$log" 2>&1; then
     result="no finding"
   else
     result="FINDING (see $log and $build/findings/$target/)"
