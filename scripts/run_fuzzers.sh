@@ -46,18 +46,21 @@ for spec in fuzz_read_poly:16384 fuzz_read_points:8192 fuzz_pipeline:8192; do
   target=${spec%%:*} max_len=${spec#*:}
   echo "running $target for $seconds s"
   log="$build/logs/$target.log"
+  start=$(date +%s)
   # One process at a time; a hang is an input that takes over 10 s.
   if "$build/fuzz/$target" "$build/corpus/$target" -max_total_time="$seconds" -max_len="$max_len" \
        -timeout=10 -dict="$root/fuzz/numbers.dict" -print_final_stats=1 \
        -artifact_prefix="$build/findings/$target/" > "$log" 2>&1; then
     result="no finding"
   else
-    result="FINDING (see $log and $build/findings/$target/)"
+    what=$(grep -m 1 -E 'ORACLE VIOLATED|ERROR: |runtime error|CGAL ERROR' "$log" || true)
+    result="FINDING: $what (see $log and $build/findings/$target/)"
     status=1
   fi
+  elapsed=$(( $(date +%s) - start ))
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
   corpus=$(find "$build/corpus/$target" -type f | wc -l)
-  summary="$summary$target: ${runs:-?} executions in $seconds s, corpus $corpus files, $result
+  summary="$summary$target: ${runs:-?} executions in $elapsed s, corpus $corpus files, $result
 "
 done
 printf '%s' "$summary"
