@@ -30,8 +30,10 @@ const Case cases[] = {
 };
 
 // Checks partition, convexity and the nearest-visible-generator oracle; returns the samples
-// that were decided (not within rounding of a tie).
-std::size_t check_diagram(const Bvd& bvd, std::size_t samples, unsigned seed) {
+// that were decided (not within rounding of a tie). Cells have positive area, or with
+// subnormal_cells, non-negative: a cell of area below 1e-323 may round to 0.
+std::size_t check_diagram(const Bvd& bvd, std::size_t samples, unsigned seed,
+                          bool subnormal_cells = false) {
   const Cdt& cdt = bvd.triangulation();
   const double area = domain_area(cdt);
   REQUIRE(area > 0);
@@ -44,7 +46,7 @@ std::size_t check_diagram(const Bvd& bvd, std::size_t samples, unsigned seed) {
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
     bvd.cell(v, c);
     if (c.empty()) continue;
-    if (!(signed_area(c) > 0)) ++not_positive;
+    if (!(signed_area(c) > 0) && !(subnormal_cells && signed_area(c) == 0)) ++not_positive;
     if (!bvd.is_free(v)) continue;
     double size = 0;
     for (const auto& x : c) size = std::max(size, std::sqrt(CGAL::squared_distance(x.point, v->point())));
@@ -417,6 +419,56 @@ TEST_CASE("extreme scales: a power-of-two scaling scales every cell exactly", "[
   }
   CHECK(cells > 300);
   CHECK(differ == 0);
+}
+
+TEST_CASE("degenerate input: generators closer to each other than double spacing at their "
+          "neighbors, and at the edge of underflow", "[bvd][degenerate]") {
+  // Found by fuzz_read_points on four_clusters.poly. Relative to a far vertex, the two near
+  // ones' differences round alike, CGAL's circumcenter formula divides by 0 and the cells were
+  // NaN; the traits now build such circumcenters exactly.
+  const std::vector<Point> pts = GENERATE(
+      std::vector<Point>{{0, .000000000000000006}}, std::vector<Point>{{.000000000000000005, .7}, {0, .7}},
+      std::vector<Point>{{.000000000000000005, .78567}, {0, .78567}},
+      std::vector<Point>{{1e-323, 0}}, std::vector<Point>{{1, 4.9e-324}},
+      std::vector<Point>{{4.9e-324, 4.9e-324}}, std::vector<Point>{{0.5, 1e-320}});
+  CAPTURE(pts);
+  Domain d;
+  load_domain(d, "four_clusters.poly");
+  CVT_2::insert_generators_2(d.cdt, pts);
+  const Bvd bvd(d.cdt);
+  Cell c;
+  for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v) {
+    bvd.cell(v, c);
+    for (const auto& x : c) REQUIRE((std::isfinite(x.point.x()) && std::isfinite(x.point.y())));
+  }
+  const bool subnormal = std::any_of(pts.begin(), pts.end(), [](const Point& p) {
+    return std::fpclassify(p.x()) == FP_SUBNORMAL || std::fpclassify(p.y()) == FP_SUBNORMAL;
+  });
+  check_diagram(bvd, 2000, 37, subnormal);
+}
+
+TEST_CASE("the circumcenter is CGAL's where CGAL's is accurate, and exact where it cancels",
+          "[bvd][degenerate]") {
+  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+  const CVT_2::Bvd_traits_2<K> traits;
+  const auto circumcenter = traits.construct_circumcenter_2_object();
+  const auto exact = [](const Point& p, const Point& q, const Point& r) {
+    const EK::Point_2 c = CGAL::circumcenter(EK::Point_2(p.x(), p.y()), EK::Point_2(q.x(), q.y()),
+                                             EK::Point_2(r.x(), r.y()));
+    return std::pair<EK::FT, EK::FT>(c.x(), c.y());
+  };
+  // A well-shaped triangle: CGAL's bits.
+  const Point p(0.1, 0.2), q(1.3, 0.25), r(0.7, 1.1);
+  CHECK(circumcenter(p, q, r) == K().construct_circumcenter_2_object()(p, q, r));
+  // q and r 5e-18 apart, 0.7 from p: the nearest double to the exact circumcenter.
+  const Point a(0, 0), b(5e-18, 0.7), c2(0, 0.7);
+  const Point got = circumcenter(a, b, c2);
+  const auto [ex, ey] = exact(a, b, c2);
+  CHECK(std::abs(CGAL::to_double(ex - EK::FT(got.x()))) <= std::nextafter(got.x(), 1.0) - got.x());
+  CHECK(std::abs(CGAL::to_double(ey - EK::FT(got.y()))) <= std::nextafter(got.y(), 1.0) - got.y());
+  // A subnormal side (2^-1073): the circumcenter is exact, (2^-1074, 0.5).
+  const Point s = circumcenter(Point(0, 0), Point(std::ldexp(1.0, -1073), 0), Point(0, 1));
+  CHECK(s == Point(std::ldexp(1.0, -1074), 0.5));
 }
 
 TEST_CASE("random domains on a grid: holes, touching polylines, points on constraints",

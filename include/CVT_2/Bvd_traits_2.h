@@ -15,6 +15,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <type_traits>
+#include <utility>
 
 namespace CVT_2 {
 namespace internal {
@@ -40,6 +41,32 @@ FT scaled(const FT& x, int e) {  // x 2^e; ldexp is a library call, skipped in t
     return e == 0 ? x : std::ldexp(x, e);
   else
     return x;
+}
+
+// The double nearest to the exact number x (ties to the lower bound): to_interval is tight, so
+// one exact comparison decides.
+template <class ENT>
+double nearest_double(const ENT& x) {
+  const std::pair<double, double> i = CGAL::to_interval(x);
+  if (i.first == i.second || !std::isfinite(i.first) || !std::isfinite(i.second))
+    return std::isfinite(i.first) ? i.first : i.second;
+  return x - ENT(i.first) <= ENT(i.second) - x ? i.first : i.second;
+}
+
+// Forward error filter of the constructions' quotients x = nx / den, y = ny / den, computed in
+// double from rounded differences (relative error 2^-53 each) of magnitude about 1: sx, sy, sd
+// are the sums of the absolute values of the terms of nx, ny and den. True when x and y are
+// within 2^-30 of sqrt(length2), the feature size, of their exact values; NaN and infinities
+// fail. A slack of 2^-1020 covers products that fall below the normal range.
+inline bool accurate_quotients(double x, double y, double sx, double sy, double den, double sd,
+                               double length2) {
+  constexpr double u = 0x1.0p-53, slack = 0x1.0p-1020;
+  const double dden = 8 * u * sd + slack;   // |den - exact den| <= dden
+  const double low = std::abs(den) - dden;  // <= |exact den|
+  const double m = std::max(std::abs(x), std::abs(y));
+  // error * low, without dividing
+  const double err = 16 * u * std::max(sx, sy) + slack + m * (dden + 2 * u * low);
+  return low > 3 * dden && err * err <= 0x1.0p-60 * length2 * (low * low);
 }
 
 }  // namespace internal
@@ -85,6 +112,9 @@ struct Bvd_traits_2 : K {
   /// The circumcenter of pqr, as CGAL computes it (relative to p), on differences rescaled by
   /// a power of two: exact, so the result is CGAL's to the bit whenever CGAL's does not
   /// overflow or underflow, and still right where it would (feature sizes from 1e-300 to 1e300).
+  /// Where the formula's forward error bound exceeds 2^-30 of the triangle's shortest side (a
+  /// sliver, or q and r far closer to each other than to p, where |q - p|² no longer holds
+  /// their difference), the circumcenter is built exactly and rounded to the nearest.
   struct Construct_circumcenter_2 {
     /// \pre p, q, r are not collinear.
     Point_2 operator()(const Point_2& p, const Point_2& q, const Point_2& r) const {
@@ -95,13 +125,31 @@ struct Bvd_traits_2 : K {
       const FT r2 = rx * rx + ry * ry, q2 = qx * qx + qy * qy;
       const FT den = FT(2) * (qx * ry - qy * rx);
       const FT cx = (ry * q2 - qy * r2) / den, cy = -(rx * q2 - qx * r2) / den;
+      if constexpr (std::is_same_v<FT, double>) {
+        const double sx = std::abs(ry) * q2 + std::abs(qy) * r2,
+                     sy = std::abs(rx) * q2 + std::abs(qx) * r2,
+                     sd = std::abs(qx * ry) + std::abs(qy * rx);
+        const double dx = qx - rx, dy = qy - ry;
+        const double shortest2 = std::min({q2, r2, dx * dx + dy * dy});
+        if (!internal::accurate_quotients(cx, cy, sx, sy, den, sd, shortest2)) return exact(p, q, r);
+      }
       return Point_2(p.x() + internal::scaled(cx, e), p.y() + internal::scaled(cy, e));
+    }
+
+   private:
+    [[gnu::noinline]] static Point_2 exact(const Point_2& p, const Point_2& q, const Point_2& r) {
+      using EK = typename Exact::Exact_kernel;
+      const typename Exact::C2E to_exact;
+      const typename EK::Point_2 c =
+          EK().construct_circumcenter_2_object()(to_exact(p), to_exact(q), to_exact(r));
+      return Point_2(internal::nearest_double(c.x()), internal::nearest_double(c.y()));
     }
   };
 
   /// The point of the line ab at equal distance from v and w: where the Voronoi edge dual to vw
   /// meets ab. Relative to v and rescaled like the circumcenter:
-  /// y = a + t (b - a) with 2 (y - v).(w - v) = |w - v|².
+  /// y = a + t (b - a) with 2 (y - v).(w - v) = |w - v|². Exact, like the circumcenter, where
+  /// the error bound exceeds 2^-30 of |w - v| or |b - a|.
   struct Construct_clip_point_2 {
     /// \pre the bisector of v and w is not parallel to ab.
     Point_2 operator()(const Point_2& v, const Point_2& w, const Point_2& a,
@@ -111,10 +159,35 @@ struct Bvd_traits_2 : K {
       const int e = internal::scale_exponent<FT>({wx, wy, ax, ay, dx, dy});
       wx = internal::scaled(wx, -e), wy = internal::scaled(wy, -e), ax = internal::scaled(ax, -e);
       ay = internal::scaled(ay, -e), dx = internal::scaled(dx, -e), dy = internal::scaled(dy, -e);
+      const FT w2 = wx * wx + wy * wy, d2 = dx * dx + dy * dy;
       const FT denom = FT(2) * (dx * wx + dy * wy);
-      if (denom == FT(0)) return CGAL::midpoint(a, b);  // bisector parallel to ab: never asked
-      const FT t = (wx * wx + wy * wy - FT(2) * (ax * wx + ay * wy)) / denom;
+      const FT t = (w2 - FT(2) * (ax * wx + ay * wy)) / denom;
+      if constexpr (std::is_same_v<FT, double>) {
+        // t times |b - a| is the length to bound.
+        const double st = w2 + 2 * (std::abs(ax * wx) + std::abs(ay * wy)),
+                     sd = std::abs(dx * wx) + std::abs(dy * wy);
+        const double scale = std::sqrt(d2);
+        if (!internal::accurate_quotients(t * scale, 0.0, st * scale, 0.0, denom, sd,
+                                          std::min(w2, d2)))
+          return exact(v, w, a, b);
+      } else if (denom == FT(0)) {
+        return CGAL::midpoint(a, b);  // bisector parallel to ab: never asked
+      }
       return Point_2(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()));
+    }
+
+   private:
+    [[gnu::noinline]] static Point_2 exact(const Point_2& v, const Point_2& w, const Point_2& a,
+                                           const Point_2& b) {
+      using ENT = typename Exact::Exact_nt;
+      const ENT vx(v.x()), vy(v.y()), wx = ENT(w.x()) - vx, wy = ENT(w.y()) - vy;
+      const ENT ax = ENT(a.x()) - vx, ay = ENT(a.y()) - vy;
+      const ENT dx = ENT(b.x()) - ENT(a.x()), dy = ENT(b.y()) - ENT(a.y());
+      const ENT denom = ENT(2) * (dx * wx + dy * wy);
+      if (CGAL::is_zero(denom)) return CGAL::midpoint(a, b);  // parallel: never asked
+      const ENT t = (wx * wx + wy * wy - ENT(2) * (ax * wx + ay * wy)) / denom;
+      return Point_2(internal::nearest_double(ENT(ENT(a.x()) + t * dx)),
+                     internal::nearest_double(ENT(ENT(a.y()) + t * dy)));
     }
   };
 
