@@ -3,6 +3,7 @@
 #include "support/support.h"
 
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
+#include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 
@@ -394,4 +395,28 @@ TEST_CASE("extreme scales: random points work, Lloyd says clearly when moments l
   } catch (const CVT_2::Domain_error& e) {
     CHECK_THAT(e.what(), Catch::Contains("do not fit in double precision"));
   }
+}
+
+TEST_CASE("a cell whose mass underflows stays put; Lloyd and L-BFGS go on around it",
+          "[lloyd][degenerate]") {
+  // Two free generators one ulp apart, and two 1e-310 from a corner: their cells' masses are
+  // subnormal or 0 (before, 0 / 0 centroids, or an error that blamed the domain's size).
+  const std::vector<Point> extra = GENERATE(
+      std::vector<Point>{{0.3, 0.3}, {0.3, std::nextafter(0.3, 1.0)}},
+      std::vector<Point>{{1e-310, 1e-310}, {2e-310, 1e-310}},
+      std::vector<Point>{{1e-323, 0}, {0.5, 4.9e-324}});
+  const bool lbfgs = GENERATE(false, true);
+  CAPTURE(extra, lbfgs);
+  Domain d;
+  load_domain(d, "four_clusters.poly");
+  insert_random_points(d, 100, 3);
+  CVT_2::insert_generators_2(d.cdt, extra);
+  const auto np = CVT_2::parameters::number_of_iterations(40).move_ratio_bound(0);
+  const CVT_2::Lloyd_result r = lbfgs ? CVT_2::lbfgs_optimize_2(d.cdt, np) : CVT_2::lloyd_optimize_2(d.cdt, np);
+  CHECK(r.number_of_iterations == 40);
+  CHECK(std::isfinite(r.energy));
+  CHECK(r.energy > 0);
+  CHECK(r.energy < r.energy_history.front());
+  for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v)
+    CHECK(CVT_2::is_in_domain_2(d.cdt, v->point()));
 }

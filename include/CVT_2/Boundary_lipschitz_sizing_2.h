@@ -12,6 +12,7 @@
 #include <CGAL/squared_distance_2.h>
 #include <CVT_2/Concepts/BvdFaceBase_2.h>
 #include <CVT_2/exceptions.h>
+#include <CVT_2/internal/to_string.h>
 #include <CVT_2/mark_domain_2.h>
 
 #include <boost/container/small_vector.hpp>
@@ -23,7 +24,6 @@
 #include <limits>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -289,21 +289,14 @@ class Boundary_lipschitz_sizing_2 {
     }
   };
 
-  static std::string number_to_string(const FT& x) {
-    std::ostringstream os;
-    os.precision(17);
-    os << CGAL::to_double(x);
-    return os.str();
-  }
-
   static bool is_positive_finite(const FT& x) { return x > 0 && std::isfinite(CGAL::to_double(x)); }
 
   void initialize(std::vector<Segment_2> segments, const FT& k, const std::optional<FT>& size) {
     if (!is_positive_finite(k))
-      throw std::invalid_argument("Boundary_lipschitz_sizing_2: k = " + number_to_string(k) +
+      throw std::invalid_argument("Boundary_lipschitz_sizing_2: k = " + internal::number_to_string(k) +
                                   " must be positive and finite");
     if (size && !is_positive_finite(*size))
-      throw std::invalid_argument("Boundary_lipschitz_sizing_2: size = " + number_to_string(*size) +
+      throw std::invalid_argument("Boundary_lipschitz_sizing_2: size = " + internal::number_to_string(*size) +
                                   " must be positive and finite");
     if (segments.empty()) throw Domain_error("Boundary_lipschitz_sizing_2: no boundary segment");
     auto data = std::make_shared<Data>();
@@ -320,7 +313,7 @@ class Boundary_lipschitz_sizing_2 {
         throw Domain_error(where() + " is not finite or exceeds 1e300 in magnitude", i);
       const FT si = size ? *size : CGAL::sqrt(s.squared_length());
       if (!is_positive_finite(si))
-        throw Domain_error(where() + " has length " + number_to_string(si) +
+        throw Domain_error(where() + " has length " + internal::number_to_string(si) +
                                ": its size must be positive and finite",
                            i);
       data->sizes.push_back(si);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -198,7 +199,8 @@ class Lbfgs_optimizer_2 {
       ++next;
       m_order.push_back(i);
       const Point_2& p = f.vertex->point();
-      const double m = CGAL::to_double(f.mass);
+      // A mass that underflowed to 0 would make the preconditioner infinite.
+      const double m = std::max(CGAL::to_double(f.mass), std::numeric_limits<double>::min());
       it.points[i] = p;
       it.centroids[i] = f.centroid;
       it.x[2 * i] = CGAL::to_double(p.x());

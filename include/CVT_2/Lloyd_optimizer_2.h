@@ -11,6 +11,7 @@
 #include <CVT_2/Midpoint_quadrature_2.h>
 #include <CVT_2/Uniform_density_2.h>
 #include <CVT_2/exceptions.h>
+#include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/move_vertex.h>
 
 #include <boost/container/small_vector.hpp>
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -152,7 +154,7 @@ class Lloyd_optimizer_2 {
   /// Builds the diagram of the current generators and computes the energy, the centroids and
   /// the move ratios, integrating with `resolution` sub-triangles a cell (see
   /// `CellQuadrature_2`). \throws Domain_error if the density is not positive and finite at a
-  /// point where it is evaluated.
+  /// point where it is evaluated, or if the moments overflow or the domain's underflow.
   const Evaluation& evaluate(std::size_t resolution) {
     ++m_number_of_evaluations;
     m_diagram.update();
@@ -172,34 +174,41 @@ class Lloyd_optimizer_2 {
             is_free = is_free && c.type != Diagram::Cell_vertex::GENERATOR;
           }
           const Cell_moments_2<Kernel> m = moments(v->point(), points, resolution);
-          // Moments scale as the cell's size to the fourth: at extreme scales they leave double.
-          if (!(m.mass > 0) || !std::isfinite(CGAL::to_double(m.mass)) ||
-              !std::isfinite(CGAL::to_double(m.energy)) ||
+          const double mass = CGAL::to_double(m.mass), energy = CGAL::to_double(m.energy);
+          if (!(mass >= 0) || !std::isfinite(mass) || !std::isfinite(energy) ||
               !std::isfinite(CGAL::to_double(m.first_moment.squared_length())))
-            throw Domain_error("the cell of generator " + internal::to_string(v->point()) +
-                               " has mass " + std::to_string(CGAL::to_double(m.mass)) +
-                               " and energy " + std::to_string(CGAL::to_double(m.energy)) +
-                               ": its moments do not fit in double precision (the domain's size "
-                               "or the density's range is too extreme for Lloyd iteration)");
-          out.energy += CGAL::to_double(m.energy);
+            throw Domain_error(bad_moments_message(v->point(), points, mass, energy));
+          out.mass += mass;
+          out.energy += energy;
           if (!is_free) return;
-          const typename Kernel::Vector_2 shift = m.first_moment / m.mass;
+          // A cell whose mass underflows to 0 (a generator 1e-320 from another) stays put.
+          const typename Kernel::Vector_2 shift =
+              mass > 0 ? m.first_moment / m.mass : typename Kernel::Vector_2(CGAL::NULL_VECTOR);
+          const double diameter2 = squared_diameter(points);
           const double ratio =
-              std::sqrt(CGAL::to_double(shift.squared_length()) / squared_diameter(points));
+              diameter2 > 0 ? std::sqrt(CGAL::to_double(shift.squared_length()) / diameter2) : 0;
           out.max_move_ratio = std::max(out.max_move_ratio, ratio);
           out.sum_move_ratio += ratio;
           out.moves.push_back({v, v->point() + shift, m.mass});
         },
         m_number_of_threads);
     m_moves.clear();
-    double sum_ratio = 0;
+    double sum_ratio = 0, mass = 0;
     for (Chunk& c : m_chunks) {
+      mass += c.mass;
       m_evaluation.energy += c.energy;
       m_evaluation.max_move_ratio = std::max(m_evaluation.max_move_ratio, c.max_move_ratio);
       sum_ratio += c.sum_move_ratio;
       m_moves.insert(m_moves.end(), c.moves.begin(), c.moves.end());
       std::vector<Free_generator>().swap(c.moves);  // one copy of the moves at a time
     }
+    // One cell may underflow (a generator 1e-320 from another: it stays put), not the domain.
+    if (!(mass >= std::numeric_limits<double>::min()) || !(m_evaluation.energy > 0))
+      throw Domain_error("the domain's mass " + internal::number_to_string(mass) +
+                         " and energy " + internal::number_to_string(m_evaluation.energy) +
+                         " underflow: the moments do not fit in double precision (the "
+                         "domain's size or the density's range is too extreme for Lloyd "
+                         "iteration)");
     m_evaluation.number_of_free_generators = m_moves.size();
     if (!m_moves.empty()) m_evaluation.mean_move_ratio = sum_ratio / double(m_moves.size());
     return m_evaluation;
@@ -254,7 +263,7 @@ class Lloyd_optimizer_2 {
 
   // What a chunk of cells adds up to, in the order of its cells.
   struct Chunk {
-    double energy = 0, max_move_ratio = 0, sum_move_ratio = 0;
+    double mass = 0, energy = 0, max_move_ratio = 0, sum_move_ratio = 0;
     std::vector<Free_generator> moves;
   };
 
@@ -275,6 +284,23 @@ class Lloyd_optimizer_2 {
       const internal::Checked_density<Density, Point_2> rho{m_rho};
       return m_quadrature(x, points, rho, resolution);
     }
+  }
+
+  // Why a cell's moments cannot be used: overflow (too large a domain or density), or a cell
+  // that is not a polygon, which is a bug to report.
+  static std::string bad_moments_message(const Point_2& generator, const Cell_points& points,
+                                         double mass, double energy) {
+    const bool finite_cell = std::all_of(points.begin(), points.end(), [](const Point_2& p) {
+      return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y()));
+    });
+    std::string what = "the cell of generator " + internal::to_string(generator) + " has mass " +
+                       internal::number_to_string(mass) + " and energy " + internal::number_to_string(energy);
+    if (finite_cell && (std::isinf(mass) || std::isinf(energy) || std::isfinite(mass)))
+      return what + ": its moments do not fit in double precision (the domain's size or the "
+                    "density's range is too extreme for Lloyd iteration)";
+    return what + ": its " + std::to_string(points.size()) +
+           " vertices do not make a polygon with finite moments (a bug in CVT_2: please report "
+           "it with the input)";
   }
 
   static double squared_diameter(const Cell_points& points) {

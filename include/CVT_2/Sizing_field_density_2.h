@@ -8,10 +8,10 @@
 #include <CVT_2/Concepts/DensityFunction_2.h>
 #include <CVT_2/Concepts/SizingField_2.h>
 #include <CVT_2/exceptions.h>
+#include <CVT_2/internal/to_string.h>
 #include <CVT_2/mark_domain_2.h>
 
 #include <cmath>
-#include <sstream>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -73,11 +73,8 @@ class Sizing_field_density_2 {
 
  private:
   static Domain_error error(const Point_2& p, const FT& mu, const char* why) {
-    std::ostringstream os;
-    os.precision(17);
-    os << "the sizing field is " << CGAL::to_double(mu) << " at " << internal::to_string(p) << ": "
-       << why;
-    return Domain_error(os.str());
+    return Domain_error("the sizing field is " + internal::number_to_string(mu) + " at " +
+                        internal::to_string(p) + ": " + why);
   }
 
   Sizing m_sizing;

@@ -3,10 +3,12 @@
 #ifndef CVT_2_UNIFORM_DENSITY_2_H
 #define CVT_2_UNIFORM_DENSITY_2_H
 
+#include <CVT_2/internal/to_string.h>
+
 #include <CGAL/number_utils.h>
 
 #include <cmath>
-#include <sstream>
+#include <string>
 #include <stdexcept>
 #include <type_traits>
 
@@ -34,11 +36,9 @@ class Uniform_density_2 {
   /// \throws std::invalid_argument if `value` is not positive and finite.
   explicit Uniform_density_2(const FT& value) : m_value(value) {
     if (!(value > 0) || !std::isfinite(CGAL::to_double(value))) {
-      std::ostringstream os;
-      os.precision(17);
-      os << "Uniform_density_2: the density value " << CGAL::to_double(value)
-         << " must be positive and finite";
-      throw std::invalid_argument(os.str());
+      throw std::invalid_argument("Uniform_density_2: the density value " +
+                                  internal::number_to_string(value) +
+                                  " must be positive and finite");
     }
   }
 

@@ -4,24 +4,16 @@
 #define CVT_2_MARK_DOMAIN_2_H
 
 #include <CVT_2/exceptions.h>
+#include <CVT_2/internal/to_string.h>
 
 #include <CGAL/Kernel/global_functions.h>
 #include <CGAL/enum.h>
 
 #include <cmath>
-#include <sstream>
 #include <vector>
 
 namespace CVT_2 {
 namespace internal {
-
-template <class Point_2>
-std::string to_string(const Point_2& p) {
-  std::ostringstream os;
-  os.precision(17);
-  os << '(' << p.x() << ", " << p.y() << ')';
-  return os.str();
-}
 
 // Coordinates beyond this magnitude make differences overflow in double.
 constexpr double max_coordinate = 1e300;
