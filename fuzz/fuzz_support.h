@@ -5,9 +5,9 @@
 #define CVT_2_FUZZ_SUPPORT_H
 
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/Cvt_triangulation_2.h>
 #include <CVT_2/exceptions.h>
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
@@ -21,11 +21,7 @@ namespace fuzz {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_2;
-using Vb = CGAL::Triangulation_vertex_base_2<K>;
-using Fb = CVT_2::Bvd_face_base_2<K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using CDT = CGAL::Constrained_Delaunay_triangulation_2<
-    K, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
+using CDT = CVT_2::Cvt_triangulation_2<K>;
 using Bvd = CVT_2::Bounded_voronoi_diagram_2<CDT>;
 
 // Runs f; the documented errors (all std::invalid_argument) are expected answers to bad input.

@@ -37,19 +37,24 @@ seed() {  # seed TARGET MAX_BYTES FILE...
   done
 }
 seed fuzz_read_poly 1000000 "$data"/*.poly
+seed fuzz_read_wkt 1000000 "$data"/*.wkt
 seed fuzz_read_points 1000000 "$data"/four_clusters_points.txt
 seed fuzz_pipeline 8192 "$data"/*.poly
 
 status=0
 summary=""
-for spec in fuzz_read_poly:16384 fuzz_read_points:8192 fuzz_pipeline:8192; do
+# The WKT target's dictionary adds the format's keywords to the number spellings.
+cat "$root/fuzz/numbers.dict" "$root/fuzz/wkt.dict" > "$build/wkt_and_numbers.dict"
+for spec in fuzz_read_poly:16384 fuzz_read_wkt:16384 fuzz_read_points:8192 fuzz_pipeline:8192; do
   target=${spec%%:*} max_len=${spec#*:}
   echo "running $target for $seconds s"
   log="$build/logs/$target.log"
+  dict="$root/fuzz/numbers.dict"
+  [ "$target" = fuzz_read_wkt ] && dict="$build/wkt_and_numbers.dict"
   start=$(date +%s)
   # One process at a time; a hang is an input that takes over 10 s.
   if "$build/fuzz/$target" "$build/corpus/$target" -max_total_time="$seconds" -max_len="$max_len" \
-       -timeout=10 -dict="$root/fuzz/numbers.dict" -print_final_stats=1 \
+       -timeout=10 -dict="$dict" -print_final_stats=1 \
        -artifact_prefix="$build/findings/$target/" > "$log" 2>&1; then
     result="no finding"
   else

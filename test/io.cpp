@@ -273,6 +273,42 @@ TEST_CASE("bad WKT gives an error that names the line and what is wrong", "[io][
   CHECK(domain_error("POLYGON((0 0, 1 0, 1 0, 1 1, 0 1, 0 0))\n").empty());
 }
 
+// Found by fuzz/fuzz_read_wkt: an empty ring, which CGAL's WKT reader reads before the start
+// of (undefined behavior); and a hole ring that touches itself at a vertex, whose orientation
+// CGAL asks to be simple (a precondition failure). A pinched hole is two holes; a ring whose
+// edges overlap has no inside.
+TEST_CASE("regression: empty rings, and hole rings that touch or overlap themselves",
+          "[io][wkt][regression]") {
+  const auto parse_error = [](const std::string& text) {
+    return message_of<CVT_2::IO::Parse_error>([&] { parse_wkt(text); });
+  };
+  CHECK_THAT(parse_error("POLYGON ((0 0, 1 0, 1 1, 0 0), ())"),
+             Catch::Contains("t.wkt:1: a ring has fewer than 2 points: ()"));
+  CHECK_THAT(parse_error("POLYGON ((0 0, 1 0, 1 1, 0 0), (0.17 0.84), ())"),
+             Catch::Contains("t.wkt:1: a ring has fewer than 2 points: (0.17 0.84)"));
+  const auto area = [](const std::string& text) {
+    Cdt cdt;
+    CVT_2::IO::insert_wkt(cdt, parse_wkt(text));
+    return domain_area(cdt);
+  };
+  // A spike out to (8 2) and back, then a triangle of area 9.
+  CHECK(area("POLYGON((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 5 5, 8 2, 5 5, 2 8, 2 2))") ==
+        Approx(100 - 9));
+  // A hole pinched at (5 5) into two triangles, a bowtie: both lobes are holes, whichever way
+  // each turns.
+  CHECK(area("POLYGON((0 0, 10 0, 10 10, 0 10, 0 0), (5 5, 8 2, 2 2, 5 5, 8 8, 2 8, 5 5))") ==
+        Approx(100 - 9 - 9));
+  CHECK(area("POLYGON((0 0, 10 0, 10 10, 0 10, 0 0), (5 5, 2 2, 8 2, 5 5, 8 8, 2 8, 5 5))") ==
+        Approx(100 - 9 - 9));
+  // A spike out and back encloses nothing.
+  CHECK(area("POLYGON((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 4 2, 4 4, 2 4, 2 2, 1 1, 2 2))") ==
+        Approx(100 - 4));
+  CHECK_THAT(message_of<CVT_2::Domain_error>([&] {
+               area("POLYGON((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 6 2, 4 2, 4 4, 2 2))");
+             }),
+             Catch::Contains("overlaps itself"));
+}
+
 // Found by fuzz/fuzz_pipeline (libFuzzer), minimized: vertices 1 and 2 at the same point and a
 // segment between them, which CGAL's insert_constraint() may not be given; and a segment
 // marker 'p' that the reader did not check.

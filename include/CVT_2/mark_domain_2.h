@@ -7,9 +7,14 @@
 #include <CVT_2/internal/to_string.h>
 
 #include <CGAL/Kernel/global_functions.h>
+#include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/enum.h>
 
 #include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <map>
+#include <utility>
 #include <vector>
 
 namespace CVT_2 {
@@ -61,6 +66,38 @@ void flood_outside(const CDT& cdt, std::vector<typename CDT::Face_handle>& stack
 
 // The face on the given side of the constrained edge that starts at the vertex at `a` and goes
 // toward `b` (the segment ab may have been split by vertices lying on it).
+// The simple loops of a ring that may touch itself at vertices (a hole pinched to two holes,
+// or a bowtie): the ring is cut at each vertex it comes back to. Loops of fewer than three
+// vertices (a spike out and back) enclose nothing. A loop that still is not simple (edges
+// that overlap) has no inside: Domain_error.
+template <class PointIterator>
+std::vector<std::vector<typename std::iterator_traits<PointIterator>::value_type>> simple_loops(
+    PointIterator first, PointIterator last) {
+  using Point_2 = typename std::iterator_traits<PointIterator>::value_type;
+  std::vector<std::vector<Point_2>> loops;
+  std::vector<Point_2> path;
+  std::map<Point_2, std::size_t> position;  // of each vertex on the path
+  const auto close = [&](std::vector<Point_2> loop) {
+    if (loop.size() >= 3 && !CGAL::is_simple_2(loop.begin(), loop.end()))
+      throw Domain_error("the hole ring through " + to_string(loop.front()) +
+                         " overlaps itself: it has no inside");
+    if (loop.size() >= 3) loops.push_back(std::move(loop));
+  };
+  for (; first != last; ++first) {
+    const auto [it, is_new] = position.emplace(*first, path.size());
+    if (is_new) {
+      path.push_back(*first);
+      continue;
+    }
+    const std::size_t i = it->second;  // back at path[i]: path[i..] is a loop
+    for (std::size_t j = i + 1; j < path.size(); ++j) position.erase(path[j]);
+    close(std::vector<Point_2>(path.begin() + std::ptrdiff_t(i), path.end()));
+    path.resize(i + 1);
+  }
+  close(std::move(path));
+  return loops;
+}
+
 template <class CDT>
 typename CDT::Face_handle face_beside(const CDT& cdt, const typename CDT::Point_2& a,
                                       const typename CDT::Point_2& b, CGAL::Orientation side) {
@@ -162,13 +199,16 @@ void mark_domain_from_polygons_2(const CDT& cdt, const PolygonWithHolesRange& po
   std::vector<Face_handle> stack;
   for (const auto& pwh : polygons) {
     for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) {
-      if (h->size() < 3) continue;
-      // The hole lies left of its edges if it turns counterclockwise, right otherwise.
-      const CGAL::Orientation inside = h->orientation() == CGAL::COUNTERCLOCKWISE
-                                           ? CGAL::LEFT_TURN
-                                           : CGAL::RIGHT_TURN;
-      for (auto e = h->edges_begin(); e != h->edges_end(); ++e)
-        stack.push_back(internal::face_beside(cdt, e->source(), e->target(), inside));
+      for (const auto& loop : internal::simple_loops(h->vertices_begin(), h->vertices_end())) {
+        // The hole lies left of its edges if it turns counterclockwise, right otherwise.
+        const CGAL::Orientation inside =
+            CGAL::orientation_2(loop.begin(), loop.end()) == CGAL::COUNTERCLOCKWISE
+                ? CGAL::LEFT_TURN
+                : CGAL::RIGHT_TURN;
+        for (std::size_t i = 0; i < loop.size(); ++i)
+          stack.push_back(
+              internal::face_beside(cdt, loop[i], loop[(i + 1) % loop.size()], inside));
+      }
     }
   }
   internal::flood_outside(cdt, stack);

@@ -58,7 +58,8 @@ class Silenced_cerr {
 
 // WKT rings repeat their first point last; CGAL's reader accepts a ring that does not and
 // closes it silently, so the text is checked first: each innermost parenthesized list of a
-// POLYGON or MULTIPOLYGON is a ring whose first and last coordinates must be equal.
+// POLYGON or MULTIPOLYGON is a ring of two points or more (CGAL's reader reads before the
+// start of an empty one) whose first and last coordinates are equal.
 inline void check_rings_closed(const std::string& text, const std::string& source,
                                std::size_t line) {
   std::size_t open = std::string::npos;
@@ -69,7 +70,11 @@ inline void check_rings_closed(const std::string& text, const std::string& sourc
       const std::string ring = text.substr(open + 1, i - open - 1);
       open = std::string::npos;
       const std::size_t first_comma = ring.find(','), last_comma = ring.rfind(',');
-      if (first_comma == std::string::npos) continue;  // one point: CGAL's reader fails it
+      if (first_comma == std::string::npos)  // and CGAL's reader steps before an empty ring
+        throw IO::Parse_error(source, line,
+                              "a ring has fewer than 2 points: (" + ring +
+                                  "); a WKT ring has 3 distinct points or more, and repeats its "
+                                  "first point last");
       const std::string first = ring.substr(0, first_comma), last = ring.substr(last_comma + 1);
       double x0, y0, x1, y1;
       std::istringstream a(first), b(last);
