@@ -2,19 +2,14 @@
 // lloyd_benchmark: our Lloyd iteration against CGAL's (lloyd_optimize_mesh_2, and its optimizer
 // with a uniform sizing field) and against a plain CGAL constrained Delaunay build, on the same
 // domain and the same initial points. N = 1e6 only with CVT_2_BENCH_LARGE=1.
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Delaunay_mesh_face_base_2.h>
-#include <CGAL/Delaunay_mesh_vertex_base_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Mesh_2/Uniform_sizing_field_2.h>
-#include <CGAL/lloyd_optimize_mesh_2.h>
+#include "benchmark_support.h"
 
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
-#include <CVT_2/IO/read_poly.h>
 #include <CVT_2/lbfgs_optimize_2.h>
-#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
-#include <CVT_2/random_points_in_domain_2.h>
+
+#include <CGAL/Mesh_2/Uniform_sizing_field_2.h>
+#include <CGAL/lloyd_optimize_mesh_2.h>
 
 #include <benchmark/benchmark.h>
 
@@ -35,36 +30,35 @@
 #include <utility>
 #include <vector>
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = K::Point_2;
-using Itag = CGAL::No_constraint_intersection_requiring_constructions_tag;
-using Vb = CGAL::Triangulation_vertex_base_2<K>;
-// Ours.
-using Tds = CGAL::Triangulation_data_structure_2<Vb, CVT_2::Bvd_face_base_2<K>>;
-using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, Itag>;
+using support::CDT;
+using support::CDT2;
+using support::Clock;
+using support::Domain;
+using support::Energy;
+using support::Itag;
+using support::K;
+using support::Point;
+using support::Poly;
+using support::Vb;
+using support::build_cdt2;
+using support::build_ours;
+using support::domain;
+using support::fmt;
+using support::massachusetts;
+using support::measure;
+using support::since;
+using support::square;
 // The baseline: CGAL's constrained Delaunay triangulation with its default face base.
 using Tds0 = CGAL::Triangulation_data_structure_2<
     Vb, CGAL::Constrained_Delaunay_triangulation_face_base_2<K>>;
 using CDT0 = CGAL::Constrained_Delaunay_triangulation_2<K, Tds0, Itag>;
-// CGAL's optimizer: sizing info in the vertices, domain and blindness in the faces.
-using Tds2 = CGAL::Triangulation_data_structure_2<CGAL::Delaunay_mesh_vertex_base_2<K>,
-                                                  CGAL::Delaunay_mesh_face_base_2<K>>;
-using CDT2 = CGAL::Constrained_Delaunay_triangulation_2<K, Tds2, Itag>;
 using Shipped_move = CGAL::Mesh_2::Lloyd_move_2<CDT2, CGAL::Mesh_2::Mesh_sizing_field<CDT2>>;
 using Uniform_move = CGAL::Mesh_2::Lloyd_move_2<CDT2, CGAL::Mesh_2::Uniform_sizing_field_2<CDT2>>;
 using Uniform_optimizer = CGAL::Mesh_2::Mesh_global_optimizer_2<CDT2, Uniform_move>;
-using Poly = CVT_2::IO::Poly_data<Point>;
-using Clock = std::chrono::steady_clock;
 
 namespace {
 
-const double nan = std::numeric_limits<double>::quiet_NaN();
-const double hexagon = 5.0 / (18.0 * std::sqrt(3.0));  // E N / A² of the hexagonal tiling
-const std::string square = "unit_square", massachusetts = "us_massachusetts_counties";
-
-double since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
+using support::nan;  // hides ::nan of <cmath>
 
 double median(std::vector<double> v) {
   if (v.empty()) return nan;
@@ -75,42 +69,6 @@ double median(std::vector<double> v) {
 
 std::size_t iterations_for(std::size_t n) { return n >= 1000000 ? 5 : 20; }
 
-struct Domain {
-  Poly poly;
-  CDT cdt;  // the domain alone, marked: for sampling, locating and the area
-  double area = 0;
-};
-
-// The unit square built in code, or a bundled .poly file; loaded once.
-const Domain& domain(const std::string& name) {
-  static std::map<std::string, Domain> cache;
-  auto it = cache.find(name);
-  if (it != cache.end()) return it->second;
-  Domain& d = cache[name];
-  if (name == square) {
-    d.poly.source = name;
-    d.poly.vertices = {Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1)};
-    d.poly.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-    d.poly.vertex_lines.assign(4, 0);
-    d.poly.segment_lines.assign(4, 0);
-  } else {
-    d.poly = CVT_2::IO::read_poly<Point>(CVT_2_DATA_DIR "/" + name + ".poly");
-  }
-  CVT_2::IO::insert_poly(d.cdt, d.poly);
-  for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f)
-    if (f->is_inside_domain()) d.area += d.cdt.triangle(f).area();
-  return d;
-}
-
-std::vector<Point> initial_points(const Domain& d, std::size_t n) {
-  return CVT_2::random_points_in_domain_2(d.cdt, n, CVT_2::parameters::random_seed(1));
-}
-
-void build_ours(CDT& cdt, const Domain& d, const std::vector<Point>& points) {
-  CVT_2::IO::insert_poly(cdt, d.poly);
-  CVT_2::insert_generators_2(cdt, points);
-}
-
 // What a user of plain CGAL builds: vertices, constraints, points.
 void build_cdt0(CDT0& cdt, const Poly& poly, const std::vector<Point>& points) {
   std::vector<CDT0::Vertex_handle> vh;
@@ -119,56 +77,12 @@ void build_cdt0(CDT0& cdt, const Poly& poly, const std::vector<Point>& points) {
   cdt.insert(points.begin(), points.end());
 }
 
-// The same for CGAL's optimizer, its faces marked in or out of our domain by their centroids.
-// (CGAL re-marks them after every move from the hole seeds we pass it: the same rule.)
-void build_cdt2(CDT2& cdt, const Domain& d, const std::vector<Point>& points) {
-  std::vector<CDT2::Vertex_handle> vh;
-  for (const auto& p : d.poly.vertices) vh.push_back(cdt.insert(p));
-  for (const auto& s : d.poly.segments) cdt.insert_constraint(vh[s[0]], vh[s[1]]);
-  cdt.insert(points.begin(), points.end());
-  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
-    f->set_in_domain(!cdt.is_infinite(f) &&
-                     CVT_2::is_in_domain_2(d.cdt, CGAL::centroid(cdt.triangle(f))));
-}
-
 // Faces whose CGAL domain mark differs from our domain (0 if both rules agree).
 std::size_t domain_mismatches(const CDT2& cdt, const Domain& d) {
   std::size_t m = 0;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
     m += f->is_in_domain() != CVT_2::is_in_domain_2(d.cdt, CGAL::centroid(cdt.triangle(f)));
   return m;
-}
-
-struct Energy {
-  double energy = nan;      // raw, by our evaluator at resolution 100
-  double normalized = nan;  // E n / A² / (5 / (18 √3)), n = generators with a cell
-  std::size_t cells = 0;
-  std::size_t outside = 0;  // CGAL's free points that left the domain (dropped)
-};
-
-Energy measure(CDT& cdt, const Domain& d) {
-  CVT_2::Lloyd_optimizer_2<CDT> evaluator(cdt);
-  Energy e;
-  e.energy = evaluator.evaluate(100).energy;
-  evaluator.diagram().for_each_cell([&e](CDT::Vertex_handle, const auto&) { ++e.cells; });
-  e.normalized = e.energy * double(e.cells) / (d.area * d.area) / hexagon;
-  return e;
-}
-
-// CGAL's result with our evaluator: the constraints and CGAL's free vertices in a fresh CDT.
-Energy measure(const CDT2& cdt2, const Domain& d) {
-  std::vector<Point> points;
-  std::size_t outside = 0;
-  for (auto v = cdt2.finite_vertices_begin(); v != cdt2.finite_vertices_end(); ++v) {
-    if (cdt2.are_there_incident_constraints(v)) continue;
-    if (CVT_2::is_in_domain_2(d.cdt, v->point())) points.push_back(v->point());
-    else ++outside;
-  }
-  CDT cdt;
-  build_ours(cdt, d, points);
-  Energy e = measure(cdt, d);
-  e.outside = outside;
-  return e;
 }
 
 // Counts the passes of CGAL's optimizer over its moving vertices: a pass visits them in the
@@ -226,7 +140,7 @@ void rises(const std::vector<double>& e, std::size_t& count, double& largest) {
 bool load_points(benchmark::State& state, const std::string& name, std::size_t n,
                  std::vector<Point>& points) {
   try {
-    points = initial_points(domain(name), n);
+    points = support::initial_points(domain(name), n);
     return true;
   } catch (const std::exception& e) {
     state.SkipWithError(e.what());
@@ -463,20 +377,20 @@ void measure_memory(const std::string& name, std::size_t n) {
   Row& r = rows[{name, n}];
   r.rss_cdt = peak_rss_mb([&] {
     const Domain& d = domain(name);
-    const std::vector<Point> points = initial_points(d, n);
+    const std::vector<Point> points = support::initial_points(d, n);
     CDT0 cdt0;
     build_cdt0(cdt0, d.poly, points);
   });
   r.rss_ours = peak_rss_mb([&] {
     const Domain& d = domain(name);
-    const std::vector<Point> points = initial_points(d, n);
+    const std::vector<Point> points = support::initial_points(d, n);
     CDT cdt;
     build_ours(cdt, d, points);
     CVT_2::lloyd_optimize_2(cdt, CVT_2::parameters::number_of_iterations(5).move_ratio_bound(0));
   });
   r.rss_cgal = peak_rss_mb([&] {
     const Domain& d = domain(name);
-    const std::vector<Point> points = initial_points(d, n);
+    const std::vector<Point> points = support::initial_points(d, n);
     CDT2 cdt2;
     build_cdt2(cdt2, d, points);
     CGAL::lloyd_optimize_mesh_2(cdt2, CGAL::parameters::max_iteration_number = 5,
@@ -487,12 +401,6 @@ void measure_memory(const std::string& name, std::size_t n) {
   });
 }
 
-std::string fmt(const char* f, double x) {
-  if (std::isnan(x)) return "–";
-  char b[64];
-  std::snprintf(b, sizeof b, f, x);
-  return b;
-}
 
 }  // namespace
 

@@ -1,7 +1,8 @@
 #!/bin/sh
 # Configures and builds the benchmarks (Release) in build-bench, or in $CVT_2_BENCH_BUILD, and runs
-# the L-BFGS one (about 3 minutes); the table comes last. Extra arguments go to Google Benchmark,
-# e.g. --benchmark_filter=unit_square
+# the L-BFGS one (about 2 minutes); the tables come last. CVT_2_CONVERGENCE_CSV=path also writes
+# the energy histories of the convergence plot (scripts/plot_convergence.py). Extra arguments go
+# to Google Benchmark, e.g. --benchmark_filter=unit_square
 set -e
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${CVT_2_BENCH_BUILD:-$root/build-bench}

@@ -2,13 +2,19 @@
 # Rebuilds the README's figures (doc/fig/*.png) from the examples, each run with its defaults;
 # needs rsvg-convert (Debian: librsvg2-bin), pngquant and python3. Takes about 2 minutes once
 # built. CVT_2_BUILD_DIR: the build directory (default build); JOBS: parallel compile jobs (2).
+# CVT_2_CONVERGENCE_CSV: the CSV the L-BFGS benchmark writes (see the README), drawn as
+# doc/fig/convergence.png by scripts/plot_convergence.py; `make_figures.sh convergence` draws
+# only that one.
 set -e
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${CVT_2_BUILD_DIR:-$root/build}
+csv=${CVT_2_CONVERGENCE_CSV:-}
+[ -z "$csv" ] || csv=$(cd "$(dirname "$csv")" && pwd)/$(basename "$csv")
+if [ "$1" = convergence ] && [ -z "$csv" ]; then
+  echo "make_figures.sh convergence: set CVT_2_CONVERGENCE_CSV to the benchmark's CSV" >&2
+  exit 1
+fi
 "$root/scripts/install_dependencies.sh" librsvg2-bin pngquant
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build "$build" -j "${JOBS:-2}" --target bvd_cells lloyd_four_clusters lloyd_uniform \
-  custom_density lloyd_adaptive lloyd_france lloyd_world lloyd_curved_hole
 ex="$build/examples"
 data="$root/examples/data"
 fig="$root/doc/fig"
@@ -42,6 +48,11 @@ PY
 }
 
 cd "$tmp"
+if [ "$1" != convergence ]; then
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
+cmake --build "$build" -j "${JOBS:-2}" --target bvd_cells lloyd_four_clusters lloyd_uniform \
+  custom_density lloyd_adaptive lloyd_france lloyd_world lloyd_curved_hole
+
 "$ex/bvd_cells" "$data/four_clusters.poly" "$data/four_clusters_points.txt" bvd.svg > /dev/null
 png 700 bvd.svg "$fig/bvd_four_clusters.png"
 
@@ -67,6 +78,12 @@ png 1200 fig.svg "$fig/lloyd_world.png"
 "$ex/lloyd_curved_hole"
 combine row fig.svg lloyd_curved_hole_uniform.svg lloyd_curved_hole_adaptive.svg
 png 1200 fig.svg "$fig/lloyd_curved_hole.png"
+fi
+
+if [ -n "$csv" ]; then
+  python3 "$root/scripts/plot_convergence.py" "$csv" convergence.svg
+  png 1000 convergence.svg "$fig/convergence.png"
+fi
 
 cd "$root"
 rm -r "$tmp"
