@@ -471,6 +471,70 @@ TEST_CASE("the circumcenter is CGAL's where CGAL's is accurate, and exact where 
   CHECK(s == Point(std::ldexp(1.0, -1074), 0.5));
 }
 
+TEST_CASE("degenerate input: a domain with 2500 holes", "[bvd][degenerate]") {
+  // A 100 x 100 square with a 50 x 50 grid of unit square holes, each seeded at its center.
+  CVT_2::IO::Poly_data<Point> poly;
+  add_ring(poly, {{0, 0}, {100, 0}, {100, 100}, {0, 100}});
+  for (int i = 0; i < 50; ++i)
+    for (int j = 0; j < 50; ++j) {
+      const double x = 2 * i + 0.5, y = 2 * j + 0.5;
+      add_ring(poly, {{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}});
+      poly.holes.emplace_back(x + 0.5, y + 0.5);
+    }
+  Cdt cdt = triangulate(poly);
+  CHECK(domain_area(cdt) == Approx(10000 - 2500).epsilon(1e-12));
+  CVT_2::insert_generators_2(cdt, random_points_in_domain(cdt, 5000, 41));
+  const Bvd bvd(cdt);
+  std::size_t cells = 0;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) cells += bvd.has_cell(v);
+  CHECK(cells == cdt.number_of_vertices());
+  check_diagram(bvd, 300, 43);
+}
+
+TEST_CASE("degenerate input: constraints meeting at sharp angles", "[bvd][degenerate]") {
+  // Inner segments from (1, 1) at angles 0.3, 1e-2, 1e-4, 1e-7 and 0 rad, and a spike of the
+  // domain out of the left side whose tip is a 1e-5 rad corner, with generators scattered
+  // between them and on them.
+  CVT_2::IO::Poly_data<Point> poly;
+  add_ring(poly, {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 5.0001}, {-10, 5.00005}, {0, 5}});
+  const std::size_t hub = poly.vertices.size();
+  poly.vertices.emplace_back(1, 1);
+  for (const double a : {0.3, 1e-2, 1e-4, 1e-7, 0.0}) {
+    poly.vertices.emplace_back(9, 1 + 8 * std::tan(a));
+    poly.segments.push_back({hub, poly.vertices.size() - 1});
+  }
+  Cdt cdt = triangulate(poly);
+  std::vector<Point> generators = random_points_in_domain(cdt, 1500, 47);
+  for (int k = 1; k < 8; ++k) generators.emplace_back(1 + k, 1 + k * std::tan(1e-4));  // near one
+  for (int k = 1; k < 8; ++k) generators.emplace_back(1 + k, 1.0);  // exactly on one
+  CVT_2::insert_generators_2(cdt, generators);
+  check_diagram(Bvd(cdt), 3000, 53);
+}
+
+TEST_CASE("degenerate input: thin domains and a boundary of slivers", "[bvd][degenerate]") {
+  SECTION("a 1 x 1e-6 strip") {
+    CVT_2::IO::Poly_data<Point> poly;
+    add_ring(poly, {{0, 0}, {1, 0}, {1, 1e-6}, {0, 1e-6}});
+    Cdt cdt = triangulate(poly);
+    CVT_2::insert_generators_2(cdt, random_points_in_domain(cdt, 300, 59));
+    check_diagram(Bvd(cdt), 2000, 61);
+  }
+  SECTION("a bottom side of 200 vertices 1e-12 from collinear") {
+    std::vector<Point> ring;
+    for (int i = 0; i <= 200; ++i) {
+      const double x = i / 200.0;
+      ring.emplace_back(x, 1e-12 * x * (1 - x));
+    }
+    ring.emplace_back(1, 1);
+    ring.emplace_back(0, 1);
+    CVT_2::IO::Poly_data<Point> poly;
+    add_ring(poly, ring);
+    Cdt cdt = triangulate(poly);
+    CVT_2::insert_generators_2(cdt, random_points_in_domain(cdt, 500, 67));
+    check_diagram(Bvd(cdt), 2000, 71);
+  }
+}
+
 TEST_CASE("random domains on a grid: holes, touching polylines, points on constraints",
           "[bvd][random]") {
   // Each case a new domain; the properties of check_diagram hold on all of them. 400 cases

@@ -384,3 +384,30 @@ TEST_CASE("lbfgs_memory: 0 makes Lloyd steps, a negative value is an error that 
   CHECK_THROWS_WITH(CVT_2::lbfgs_optimize_2(d.cdt, CVT_2::parameters::move_ratio_bound(-1.0)),
                     Catch::Contains("move_ratio_bound"));
 }
+
+TEST_CASE("degenerate input: two generators sent to the same point, or to each other, never coincide",
+          "[lbfgs][degenerate]") {
+  // Each move stays inside the vertex's star, whose link the other vertex is on: the second
+  // one stops short of the first, in every pass.
+  Cdt cdt;
+  CVT_2::IO::insert_poly(cdt, CVT_2::IO::read_poly<Point>(data_path("four_clusters.poly")));
+  CVT_2::insert_generators_2(cdt, std::vector<Point>{{0.3, 0.3}, {0.6, 0.7}});
+  std::vector<Cdt::Vertex_handle> vertices;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    if (v->point() == Point(0.3, 0.3) || v->point() == Point(0.6, 0.7)) vertices.push_back(v);
+  REQUIRE(vertices.size() == 2);
+  const std::size_t n = cdt.number_of_vertices();
+  const bool swap = GENERATE(false, true);
+  const std::vector<Point> targets =
+      swap ? std::vector<Point>{vertices[1]->point(), vertices[0]->point()}
+           : std::vector<Point>{Point(0.45, 0.5), Point(0.45, 0.5)};
+  std::vector<CVT_2::internal::Flip_candidate<Cdt>> stack;
+  const std::size_t missed =
+      CVT_2::internal::move_free_vertices(cdt, vertices, targets, {0, 1}, 20, stack);
+  CHECK(missed >= 1);
+  CHECK(cdt.number_of_vertices() == n);
+  CHECK(vertices[0]->point() != vertices[1]->point());
+  CHECK(cdt.is_valid());
+  CHECK(CVT_2::is_in_domain_2(cdt, vertices[0]->point()));
+  CHECK(CVT_2::is_in_domain_2(cdt, vertices[1]->point()));
+}

@@ -47,6 +47,25 @@ inline void load_domain(Domain& d, const std::string& file, double scale = 1, do
   CVT_2::IO::insert_poly(d.cdt, d.poly);
 }
 
+// A closed polygon into poly: vertices and segments (no segment markers, no vertex lines).
+inline void add_ring(CVT_2::IO::Poly_data<Point>& poly, const std::vector<Point>& ring) {
+  const std::size_t first = poly.vertices.size();
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    poly.vertices.push_back(ring[i]);
+    poly.segments.push_back({first + i, first + (i + 1) % ring.size()});
+  }
+}
+
+// The triangulation of a domain built in code (its lines, for messages, are all 0).
+inline Cdt triangulate(CVT_2::IO::Poly_data<Point>& poly) {
+  poly.vertex_lines.assign(poly.vertices.size(), 0);
+  poly.segment_lines.assign(poly.segments.size(), 0);
+  poly.hole_lines.assign(poly.holes.size(), 0);
+  Cdt cdt;
+  CVT_2::IO::insert_poly(cdt, poly);
+  return cdt;
+}
+
 inline CGAL::Bbox_2 domain_bbox(const Cdt& cdt) {
   CGAL::Bbox_2 b;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
