@@ -1,5 +1,6 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // Lloyd iteration: energy descent, stopping rule, constraints respected, densities, sizing.
+#include "support/random_domain.h"
 #include "support/support.h"
 
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
@@ -10,6 +11,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <string>
 #include <type_traits>
@@ -444,4 +446,34 @@ TEST_CASE("Lloyd on a domain with 2500 holes lowers the energy and keeps every g
   }
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     CHECK(CVT_2::is_in_domain_2(cdt, v->point()));
+}
+
+TEST_CASE("random domains: Lloyd never raises the energy and keeps generators in the domain",
+          "[lloyd][random]") {
+  // The BVD's random domains (see random_domain.h), 5 iterations each: 150 cases here,
+  // CVT_2_RANDOM_CASES=N runs N (scripts/run_nightly.sh runs thousands).
+  const char* env = std::getenv("CVT_2_RANDOM_CASES");
+  const unsigned cases = env ? static_cast<unsigned>(std::strtoul(env, nullptr, 10)) * 3 / 8 : 150u;
+  for (unsigned seed = 1; seed <= cases; ++seed) {
+    CAPTURE(seed);
+    std::vector<Point> generators;
+    const auto poly = random_domain(seed, generators, 150);
+    Cdt cdt;
+    CVT_2::IO::insert_poly(cdt, poly);
+    CVT_2::insert_generators_2(cdt, generators);
+    CVT_2::Lloyd_optimizer_2<Cdt> lloyd(cdt);
+    double previous = lloyd.evaluate(10).energy;
+    REQUIRE(std::isfinite(previous));
+    for (int it = 0; it < 5; ++it) {
+      lloyd.move();
+      const double e = lloyd.evaluate(10).energy;
+      CAPTURE(it, previous, e);
+      REQUIRE(e <= previous * (1 + 1e-12));
+      previous = e;
+    }
+    std::size_t outside = 0;  // free generators (constraint vertices may lie outside)
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      outside += !cdt.are_there_incident_constraints(v) && !CVT_2::is_in_domain_2(cdt, v->point());
+    REQUIRE(outside == 0);
+  }
 }

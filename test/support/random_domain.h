@@ -1,11 +1,15 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// Random valid domains on a grid: holes, inner polylines that meet and touch, degenerate points.
+// Random valid domains on a grid: star-shaped or notched outer rings, rectangular and
+// triangular holes, inner polylines that meet and touch, degenerate points.
 #ifndef CVT_2_TEST_RANDOM_DOMAIN_H
 #define CVT_2_TEST_RANDOM_DOMAIN_H
 
 #include "support.h"
 
+#include <CGAL/Polygon_2_algorithms.h>
+
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -52,9 +56,23 @@ inline CVT_2::IO::Poly_data<Point> random_domain(unsigned seed, std::vector<Poin
     poly.segment_lines.push_back(poly.segments.size());
     return true;
   };
-  // The outer ring: a square with some extra collinear vertices, or a notched square.
+  // The outer ring: a square with some extra collinear vertices, a notched square, or a random
+  // star-shaped polygon of 5 to 16 grid vertices around (5, 5).
   std::vector<Point> ring{Point(0, 0), Point(5, 0), Point(10, 0), Point(10, 10), Point(0, 10)};
-  if (rng() % 2) ring = {Point(0, 0), Point(10, 0), Point(10, 10), Point(6, 10), Point(5, 4), Point(4, 10), Point(0, 10)};
+  const auto shape = rng() % 3;
+  if (shape == 1) ring = {Point(0, 0), Point(10, 0), Point(10, 10), Point(6, 10), Point(5, 4), Point(4, 10), Point(0, 10)};
+  if (shape == 2) {
+    std::vector<double> angles(5 + rng() % 12);
+    for (double& a : angles) a = std::uniform_real_distribution<double>(0, 2 * CGAL_PI)(rng);
+    std::sort(angles.begin(), angles.end());
+    std::vector<Point> star;
+    for (const double a : angles) {
+      const double r = std::uniform_real_distribution<double>(2, 5)(rng);
+      const Point p(std::round((5 + r * std::cos(a)) * 8) / 8, std::round((5 + r * std::sin(a)) * 8) / 8);
+      if (star.empty() || (p != star.back() && p != star.front())) star.push_back(p);
+    }
+    if (star.size() >= 3 && CGAL::is_simple_2(star.begin(), star.end(), K())) ring = star;
+  }
   for (std::size_t i = 0; i < ring.size(); ++i) add_segment(ring[i], ring[(i + 1) % ring.size()]);
   // Rectangular holes, each with its seed at its center.
   const int holes = static_cast<int>(rng() % 4);
@@ -72,6 +90,22 @@ inline CVT_2::IO::Poly_data<Point> random_domain(unsigned seed, std::vector<Poin
     for (int i = 0; i < 4; ++i) add_segment(c[i], c[(i + 1) % 4]);
     boxes.push_back(box);
     poly.holes.emplace_back(x + w / 2, y + t / 2);
+    poly.hole_lines.push_back(0);
+  }
+  // Triangular holes of area 1/2 or more, seeded at their centroid.
+  const int triangles = static_cast<int>(rng() % 3);
+  for (int h = 0; h < triangles; ++h) {
+    const Point c[3] = {Point(grid(4, 76), grid(4, 76)), Point(grid(4, 76), grid(4, 76)),
+                        Point(grid(4, 76), grid(4, 76))};
+    const K::Triangle_2 t(c[0], c[1], c[2]);
+    bool ok = std::abs(t.area()) >= 0.5;
+    for (const auto& b : boxes) ok = ok && !CGAL::do_overlap(b, t.bbox());
+    for (int i = 0; i < 3 && ok; ++i) ok = !crosses(Segment(c[i], c[(i + 1) % 3]));
+    for (const Point& p : poly.vertices) ok = ok && t.has_on_unbounded_side(p);
+    if (!ok) continue;
+    for (int i = 0; i < 3; ++i) add_segment(c[i], c[(i + 1) % 3]);
+    boxes.push_back(t.bbox());
+    poly.holes.push_back(CGAL::centroid(t));
     poly.hole_lines.push_back(0);
   }
   // Inner polylines: random walks, some starting at an existing vertex or on a segment.
