@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -242,8 +243,19 @@ bool has_suffix(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+// Said once per file: the triangulation merges points that repeat earlier ones.
+void note_repeated(const std::string& file, const std::vector<std::array<std::size_t, 2>>& repeated,
+                   const char* what) {
+  if (repeated.empty()) return;
+  std::cerr << "cvt2: note: " << file << ":" << repeated[0][0] << ": this " << what
+            << " repeats the one on line " << repeated[0][1];
+  if (repeated.size() > 1) std::cerr << " (and " << repeated.size() - 1 << " more repeat earlier ones)";
+  std::cerr << "; merged\n";
+}
+
 Domain load_poly(const std::string& file, CDT& cdt) {
   const auto poly = CVT_2::IO::read_poly<Point_2>(file);
+  note_repeated(file, poly.repeated_vertices, "vertex");
   CVT_2::IO::insert_poly(cdt, poly);
   std::vector<bool> on_segment(poly.vertices.size(), false);
   for (const auto& s : poly.segments) on_segment[s[0]] = on_segment[s[1]] = true;
@@ -257,6 +269,7 @@ Domain load_poly(const std::string& file, CDT& cdt) {
 // points as generators.
 Domain load_wkt(const std::string& file, CDT& cdt) {
   const auto w = CVT_2::IO::read_wkt<K>(file);
+  note_repeated(file, w.repeated_points, "point");
   CVT_2::IO::insert_wkt(cdt, w);
   Domain d;
   d.source = file;
@@ -275,6 +288,7 @@ Domain load_domain(const std::string& file, CDT& cdt) {
 void insert_points_file(const std::string& file, CDT& cdt) {
   if (!std::ifstream(file)) throw std::runtime_error("cannot open the points file '" + file + "'");
   const auto points = CVT_2::IO::read_points<Point_2>(file);
+  note_repeated(file, points.repeated_points, "point");
   try {
     CVT_2::insert_generators_2(cdt, points.points);  // keeps the domain's marking
   } catch (const CVT_2::Domain_error& e) {

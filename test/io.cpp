@@ -387,3 +387,18 @@ TEST_CASE("regression: random points in a needle thinner than double precision",
   }
   CVT_2::insert_generators_2(cdt, uniform);
 }
+
+TEST_CASE("the readers report the points that repeat earlier ones, which the triangulation merges",
+          "[io]") {
+  const auto poly = parse("5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 1 1\n5 0\n1 1 2\n2 2 5\n3 5 4\n"
+                          "4 4 1\n5 2 3\n0\n");
+  CHECK(poly.repeated_vertices == std::vector<std::array<std::size_t, 2>>{{6, 4}});
+  std::istringstream points("0.5 0.5\n0.25 0.25\n# a comment\n0.5 0.5\n0.5 0.5\n");
+  const auto p = CVT_2::IO::read_points<Point>(points, "p.txt");
+  CHECK(p.repeated_points == std::vector<std::array<std::size_t, 2>>{{4, 1}, {5, 1}});
+  const auto w = parse_wkt("POLYGON((0 0, 1 0, 1 1, 0 0))\nMULTIPOINT((0.7 0.2), (0.7 0.2))\nPOINT(0.7 0.2)\n");
+  CHECK(w.repeated_points == std::vector<std::array<std::size_t, 2>>{{2, 2}, {3, 2}});
+  Cdt cdt;
+  CVT_2::IO::insert_poly(cdt, poly);
+  CHECK(cdt.number_of_vertices() == 4);
+}

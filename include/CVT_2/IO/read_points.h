@@ -6,6 +6,7 @@
 #include <CVT_2/exceptions.h>
 #include <CVT_2/internal/line_reader.h>
 
+#include <array>
 #include <cstddef>
 #include <fstream>
 #include <string>
@@ -21,6 +22,9 @@ struct Point_data {
   std::string source;               ///< file name, for messages
   std::vector<Point_2> points;      ///< in file order
   std::vector<std::size_t> lines;   ///< the line of each point
+  /// each point equal to an earlier one, as (its line, the earlier one's line): inserting them
+  /// merges them
+  std::vector<std::array<std::size_t, 2>> repeated_points;
 };
 
 /// \ingroup PkgCvt2IO
@@ -36,6 +40,7 @@ Point_data<Point_2> read_points(std::istream& is, const std::string& source = "<
     data.points.emplace_back(in.real(t[0]), in.real(t[1]));
     data.lines.push_back(in.line());
   }
+  data.repeated_points = internal::repeated_points(data.points, data.lines);
   return data;
 }
 

@@ -27,6 +27,9 @@ struct Poly_data {
   std::vector<std::size_t> segment_lines;              ///< the line of each segment
   std::vector<Point_2> holes;                          ///< one seed point inside each hole
   std::vector<std::size_t> hole_lines;                 ///< the line of each hole point
+  /// each vertex at the same point as an earlier one, as (its line, the earlier one's line):
+  /// `insert_poly()` merges them
+  std::vector<std::array<std::size_t, 2>> repeated_vertices;
 };
 
 /// \ingroup PkgCvt2IO
@@ -73,6 +76,8 @@ Poly_data<Point_2> read_poly(std::istream& is, const std::string& source = "<pol
     if (nmark) in.integer(t[3 + nattr]);
     data.vertex_lines.push_back(in.line());
   }
+
+  data.repeated_vertices = internal::repeated_points(data.vertices, data.vertex_lines);
 
   in.expect(t, "the segment header '<#segments> <#markers>'");
   const std::size_t ns = in.count(t[0], "segment count");

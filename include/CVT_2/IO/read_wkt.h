@@ -11,6 +11,7 @@
 #include <CGAL/IO/WKT.h>
 #include <CGAL/Polygon_with_holes_2.h>
 
+#include <array>
 #include <cctype>
 #include <cstddef>
 #include <fstream>
@@ -38,6 +39,9 @@ struct Wkt_data {
   std::vector<std::size_t> polyline_lines;              ///< the line of each polyline
   std::vector<Point_2> points;                          ///< from POINT and MULTIPOINT
   std::vector<std::size_t> point_lines;                 ///< the line of each point
+  /// each point equal to an earlier one, as (its line, the earlier one's line): inserting
+  /// them merges them
+  std::vector<std::array<std::size_t, 2>> repeated_points;
 };
 
 }  // namespace IO
@@ -182,6 +186,7 @@ Wkt_data<K> read_wkt(std::istream& is, const std::string& source = "<wkt>") {
     }
   }
   if (w.polygons.empty()) throw Parse_error(source, 0, "no POLYGON or MULTIPOLYGON");
+  w.repeated_points = internal::repeated_points(w.points, w.point_lines);
   return w;
 }
 

@@ -5,6 +5,8 @@
 
 #include <CVT_2/exceptions.h>
 
+#include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -88,6 +90,24 @@ class Line_reader {
   std::string m_source;
   std::size_t m_line = 0;
 };
+
+// For each point equal to an earlier one: its line and the line of the first one there, in
+// file order. The triangulation merges them; the readers report them so that programs can say so.
+template <class Point_2>
+std::vector<std::array<std::size_t, 2>> repeated_points(const std::vector<Point_2>& points,
+                                                        const std::vector<std::size_t>& lines) {
+  std::vector<std::size_t> order(points.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return points[a] < points[b]; });
+  std::vector<std::array<std::size_t, 2>> repeated;
+  for (std::size_t k = 1, first = 0; k < order.size(); ++k) {
+    if (points[order[k]] != points[order[first]]) first = k;
+    else repeated.push_back({lines[order[k]], lines[order[first]]});
+  }
+  std::sort(repeated.begin(), repeated.end());
+  return repeated;
+}
 
 }  // namespace internal
 }  // namespace CVT_2
