@@ -33,6 +33,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -301,6 +302,13 @@ void insert_points_file(const std::string& file, CDT& cdt) {
 void insert_random_points(std::size_t n, const Options& o, const std::optional<Sizing>& sizing,
                           CDT& cdt) {
   if (n == 0) return;
+  // About 200 bytes a generator (triangulation, cells, moves): refuse what memory cannot hold
+  // rather than be killed after minutes of work.
+  const double needed = 200.0 * double(n), memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+  if (memory > 0 && needed > memory)
+    throw Usage_error("--points " + std::to_string(n) + " needs about " +
+                      std::to_string(static_cast<long long>(needed / 1e9)) + " GB; this machine has " +
+                      std::to_string(static_cast<long long>(memory / 1e9)) + " GB");
   std::vector<Point_2> points;
   if (sizing) {  // a CVT of density 1/mu^4 has about 1/mu^2 points per unit area
     const auto density = [&sizing](const Point_2& p) {
@@ -566,6 +574,9 @@ int main(int argc, char* argv[]) {
     return run(o);
   } catch (const Usage_error& e) {
     std::cerr << "cvt2: " << e.what() << "\ncvt2: try 'cvt2 --help'\n";
+  } catch (const std::bad_alloc&) {
+    std::cerr << "cvt2: out of memory: each generator needs about 200 bytes during the "
+                 "optimization (--points, the input files)\n";
   } catch (const std::exception& e) {
     std::cerr << "cvt2: " << e.what() << '\n';
   }
