@@ -473,15 +473,7 @@ TEST_CASE("the circumcenter is CGAL's where CGAL's is accurate, and exact where 
 
 TEST_CASE("degenerate input: a domain with 2500 holes", "[bvd][degenerate]") {
   // A 100 x 100 square with a 50 x 50 grid of unit square holes, each seeded at its center.
-  CVT_2::IO::Poly_data<Point> poly;
-  add_ring(poly, {{0, 0}, {100, 0}, {100, 100}, {0, 100}});
-  for (int i = 0; i < 50; ++i)
-    for (int j = 0; j < 50; ++j) {
-      const double x = 2 * i + 0.5, y = 2 * j + 0.5;
-      add_ring(poly, {{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}});
-      poly.holes.emplace_back(x + 0.5, y + 0.5);
-    }
-  Cdt cdt = triangulate(poly);
+  Cdt cdt = square_with_holes(50);
   CHECK(domain_area(cdt) == Approx(10000 - 2500).epsilon(1e-12));
   CVT_2::insert_generators_2(cdt, random_points_in_domain(cdt, 5000, 41));
   const Bvd bvd(cdt);

@@ -425,15 +425,7 @@ TEST_CASE("a cell whose mass underflows stays put; Lloyd and L-BFGS go on around
 
 TEST_CASE("Lloyd on a domain with 2500 holes lowers the energy and keeps every generator in",
           "[lloyd][degenerate]") {
-  CVT_2::IO::Poly_data<Point> poly;
-  add_ring(poly, {{0, 0}, {100, 0}, {100, 100}, {0, 100}});
-  for (int i = 0; i < 50; ++i)
-    for (int j = 0; j < 50; ++j) {
-      const double x = 2 * i + 0.5, y = 2 * j + 0.5;
-      add_ring(poly, {{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}});
-      poly.holes.emplace_back(x + 0.5, y + 0.5);
-    }
-  Cdt cdt = triangulate(poly);
+  Cdt cdt = square_with_holes(50);
   CVT_2::insert_generators_2(cdt, random_points_in_domain(cdt, 5000, 73));
   CVT_2::Lloyd_optimizer_2<Cdt> lloyd(cdt);
   double previous = lloyd.evaluate(10).energy;

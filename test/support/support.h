@@ -66,6 +66,19 @@ inline Cdt triangulate(CVT_2::IO::Poly_data<Point>& poly) {
   return cdt;
 }
 
+// A 2n x 2n square with an n x n grid of unit square holes, each seeded at its center.
+inline Cdt square_with_holes(int n) {
+  CVT_2::IO::Poly_data<Point> poly;
+  add_ring(poly, {{0, 0}, {2.0 * n, 0}, {2.0 * n, 2.0 * n}, {0, 2.0 * n}});
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double x = 2 * i + 0.5, y = 2 * j + 0.5;
+      add_ring(poly, {{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}});
+      poly.holes.emplace_back(x + 0.5, y + 0.5);
+    }
+  return triangulate(poly);
+}
+
 inline CGAL::Bbox_2 domain_bbox(const Cdt& cdt) {
   CGAL::Bbox_2 b;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)

@@ -171,10 +171,23 @@ void insert_poly(CDT& cdt, const Poly_data<typename CDT::Point_2>& data) {
     try {
       cdt.insert_constraint(vertices[s[0]], vertices[s[1]]);
     } catch (const typename CDT::Intersection_of_constraints_exception&) {
-      throw Domain_error(where(data.segment_lines[j]) + "segment " +
-                         internal::to_string(data.vertices[s[0]]) + " - " +
-                         internal::to_string(data.vertices[s[1]]) +
-                         " crosses an earlier segment");
+      // Name the first earlier segment it crosses properly (interiors meet at one point that is
+      // no vertex: CGAL would have to construct it); searched only now, on the error path.
+      const auto& a = data.vertices[s[0]];
+      const auto& b = data.vertices[s[1]];
+      std::string which = "an earlier segment";
+      for (std::size_t k = 0; k < j; ++k) {
+        const auto& c = data.vertices[data.segments[k][0]];
+        const auto& d = data.vertices[data.segments[k][1]];
+        if (CGAL::orientation(a, b, c) * CGAL::orientation(a, b, d) < 0 &&
+            CGAL::orientation(c, d, a) * CGAL::orientation(c, d, b) < 0) {
+          which = "segment " + internal::to_string(c) + " - " + internal::to_string(d) +
+                  " of line " + std::to_string(data.segment_lines[k]);
+          break;
+        }
+      }
+      throw Domain_error(where(data.segment_lines[j]) + "segment " + internal::to_string(a) +
+                         " - " + internal::to_string(b) + " crosses " + which);
     }
   }
   try {
