@@ -286,6 +286,18 @@ TEST_CASE("regression: empty rings, and hole rings that touch or overlap themsel
              Catch::Contains("t.wkt:1: a ring has fewer than 2 points: ()"));
   CHECK_THAT(parse_error("POLYGON ((0 0, 1 0, 1 1, 0 0), (0.17 0.84), ())"),
              Catch::Contains("t.wkt:1: a ring has fewer than 2 points: (0.17 0.84)"));
+  // Found by hand after the fuzzer: "POLYGON EMPTY" made CGAL's reader step before an empty
+  // ring too (a crash), "POINT EMPTY" added an uninitialized point, and a third coordinate was
+  // read silently.
+  const auto w = parse_wkt("POLYGON((0 0, 1 0, 1 1, 0 0))\nPOINT EMPTY\nmultipoint empty\nLINESTRING EMPTY\n");
+  CHECK(w.polygons.size() == 1);
+  CHECK(w.points.empty());
+  CHECK(w.polylines.empty());
+  CHECK_THAT(parse_error("POLYGON EMPTY\n"), Catch::Contains("t.wkt:0: no POLYGON or MULTIPOLYGON"));
+  CHECK_THAT(parse_error("POLYGON((0 0 5, 1 0 5, 1 1 5, 0 0 5))\n"),
+             Catch::Contains("t.wkt:1: a point has 3 coordinates (0 0 5): only 2D WKT is read"));
+  CHECK_THAT(parse_error("MULTIPOINT(EMPTY, (0.5 0.2))\n"), Catch::Contains("an EMPTY part"));
+  CHECK_THAT(parse_error("POLYGON 5\n"), Catch::Contains("t.wkt:1: malformed POLYGON: expected '('"));
   const auto area = [](const std::string& text) {
     Cdt cdt;
     CVT_2::IO::insert_wkt(cdt, parse_wkt(text));

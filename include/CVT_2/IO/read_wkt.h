@@ -97,6 +97,30 @@ inline void check_rings_closed(const std::string& text, const std::string& sourc
   }
 }
 
+// CGAL's WKT reader reads 3D coordinates into 2D points silently: each innermost
+// parenthesized list must hold pairs 'x y' separated by commas.
+inline void check_coordinate_pairs(const std::string& text, const std::string& source,
+                                   std::size_t line) {
+  std::size_t open = std::string::npos;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '(') {
+      open = i;
+    } else if (text[i] == ')' && open != std::string::npos) {
+      std::istringstream list(text.substr(open + 1, i - open - 1));
+      open = std::string::npos;
+      for (std::string item; std::getline(list, item, ',');) {
+        std::istringstream fields(item);
+        std::size_t n = 0;
+        for (std::string f; fields >> f;) ++n;
+        if (n > 2)
+          throw IO::Parse_error(source, line,
+                                "a point has " + std::to_string(n) + " coordinates (" + item +
+                                    "): only 2D WKT is read");
+      }
+    }
+  }
+}
+
 }  // namespace internal
 
 namespace IO {
@@ -104,10 +128,12 @@ namespace IO {
 /// \ingroup PkgCvt2IO
 /// Reads WKT, one geometry a line: `POLYGON` and `MULTIPOLYGON` (the domain),
 /// `LINESTRING` and `MULTILINESTRING` (inner constraints), `POINT` and `MULTIPOINT` (initial
-/// generators); keywords in any case, blank lines skipped. CGAL's WKT reader parses each line.
-/// \throws Parse_error naming the line: an unknown or malformed geometry, a ring that is not
-///         closed or has fewer than 3 distinct points, a linestring of fewer than 2 points, a
-///         coordinate that is not finite or exceeds 1e300 in magnitude, or no polygon at all.
+/// generators); keywords in any case, blank lines and `EMPTY` geometries skipped. CGAL's WKT
+/// reader parses each line.
+/// \throws Parse_error naming the line: an unknown or malformed geometry, a point with more
+///         than 2 coordinates, a ring that is not closed or has fewer than 3 distinct points, a
+///         linestring of fewer than 2 points, a coordinate that is not finite or exceeds 1e300
+///         in magnitude, or no polygon at all.
 template <class K>
 Wkt_data<K> read_wkt(std::istream& is, const std::string& source = "<wkt>") {
   using Point_2 = typename K::Point_2;
@@ -121,6 +147,24 @@ Wkt_data<K> read_wkt(std::istream& is, const std::string& source = "<wkt>") {
     while (e < line.size() && std::isalpha(static_cast<unsigned char>(line[e]))) ++e;
     std::string type = line.substr(b, e - b);
     for (char& c : type) c = char(std::toupper(static_cast<unsigned char>(c)));
+    if (type != "POINT" && type != "MULTIPOINT" && type != "LINESTRING" &&
+        type != "MULTILINESTRING" && type != "POLYGON" && type != "MULTIPOLYGON")
+      throw Parse_error(source, number,
+                        "expected a WKT POLYGON, MULTIPOLYGON, LINESTRING, MULTILINESTRING, "
+                        "POINT or MULTIPOINT",
+                        type.empty() ? line.substr(b, 20) : type);
+    std::string rest = line.substr(e);
+    rest.erase(0, rest.find_first_not_of(" \t\r"));
+    rest.erase(rest.find_last_not_of(" \t\r") + 1);
+    std::string upper_rest = rest;
+    for (char& c : upper_rest) c = char(std::toupper(static_cast<unsigned char>(c)));
+    if (upper_rest == "EMPTY") continue;  // adds nothing (CGAL's reader would crash on it)
+    if (upper_rest.find("EMPTY") != std::string::npos)
+      throw Parse_error(source, number, "an EMPTY part inside a geometry is not supported", "EMPTY");
+    if (rest.empty() || rest[0] != '(')
+      throw Parse_error(source, number, "malformed " + type + ": expected '(' or EMPTY after it",
+                        rest.empty() ? type : rest.substr(0, 20));
+    internal::check_coordinate_pairs(rest, source, number);
     std::vector<Point_2> points;
     std::vector<std::vector<Point_2>> polylines;
     std::vector<CGAL::Polygon_with_holes_2<K>> polygons;
@@ -147,11 +191,6 @@ Wkt_data<K> read_wkt(std::istream& is, const std::string& source = "<wkt>") {
         } else {
           ok = CGAL::IO::read_multi_polygon_WKT(iss, polygons);
         }
-      } else {
-        throw Parse_error(source, number,
-                          "expected a WKT POLYGON, MULTIPOLYGON, LINESTRING, MULTILINESTRING, "
-                          "POINT or MULTIPOINT",
-                          type.empty() ? line.substr(b, 20) : type);
       }
     }
     if (!ok) throw Parse_error(source, number, "malformed " + type, type);
