@@ -60,65 +60,67 @@ class Silenced_cerr {
   std::streambuf* m_old;
 };
 
+// Calls f(list) for the text of each innermost parenthesized list of a WKT geometry: a ring,
+// a linestring or a point.
+template <class F>
+void for_each_innermost_list(const std::string& text, F f) {
+  std::size_t open = std::string::npos;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '(') {
+      open = i;
+    } else if (text[i] == ')' && open != std::string::npos) {
+      f(text.substr(open + 1, i - open - 1));
+      open = std::string::npos;
+    }
+  }
+}
+
 // WKT rings repeat their first point last; CGAL's reader accepts a ring that does not and
 // closes it silently, so the text is checked first: each innermost parenthesized list of a
 // POLYGON or MULTIPOLYGON is a ring of two points or more (CGAL's reader reads before the
 // start of an empty one) whose first and last coordinates are equal.
 inline void check_rings_closed(const std::string& text, const std::string& source,
                                std::size_t line) {
-  std::size_t open = std::string::npos;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '(') {
-      open = i;
-    } else if (text[i] == ')' && open != std::string::npos) {
-      const std::string ring = text.substr(open + 1, i - open - 1);
-      open = std::string::npos;
-      const std::size_t first_comma = ring.find(','), last_comma = ring.rfind(',');
-      if (first_comma == std::string::npos)  // and CGAL's reader steps before an empty ring
-        throw IO::Parse_error(source, line,
-                              "a ring has fewer than 2 points: (" + ring +
-                                  "); a WKT ring has 3 distinct points or more, and repeats its "
-                                  "first point last");
-      const std::string first = ring.substr(0, first_comma), last = ring.substr(last_comma + 1);
-      double x0, y0, x1, y1;
-      std::istringstream a(first), b(last);
-      if (!(a >> x0 >> y0) || !(b >> x1 >> y1)) continue;  // malformed: CGAL's reader says so
-      if (x0 != x1 || y0 != y1) {
-        const auto trim = [](std::string t) {
-          t.erase(0, t.find_first_not_of(" \t\r"));
-          t.erase(t.find_last_not_of(" \t\r") + 1);
-          return t;
-        };
-        throw IO::Parse_error(source, line,
-                          "a ring is not closed: it starts at (" + trim(first) + ") and ends at (" +
-                              trim(last) + "); a WKT ring repeats its first point last");
-      }
+  for_each_innermost_list(text, [&](const std::string& ring) {
+    const std::size_t first_comma = ring.find(','), last_comma = ring.rfind(',');
+    if (first_comma == std::string::npos)  // and CGAL's reader steps before an empty ring
+      throw IO::Parse_error(source, line,
+                            "a ring has fewer than 2 points: (" + ring +
+                                "); a WKT ring has 3 distinct points or more, and repeats its "
+                                "first point last");
+    const std::string first = ring.substr(0, first_comma), last = ring.substr(last_comma + 1);
+    double x0, y0, x1, y1;
+    std::istringstream a(first), b(last);
+    if (!(a >> x0 >> y0) || !(b >> x1 >> y1)) return;  // malformed: CGAL's reader says so
+    if (x0 != x1 || y0 != y1) {
+      const auto trim = [](std::string t) {
+        t.erase(0, t.find_first_not_of(" \t\r"));
+        t.erase(t.find_last_not_of(" \t\r") + 1);
+        return t;
+      };
+      throw IO::Parse_error(source, line,
+                            "a ring is not closed: it starts at (" + trim(first) + ") and ends at (" +
+                                trim(last) + "); a WKT ring repeats its first point last");
     }
-  }
+  });
 }
 
 // CGAL's WKT reader reads 3D coordinates into 2D points silently: each innermost
 // parenthesized list must hold pairs 'x y' separated by commas.
 inline void check_coordinate_pairs(const std::string& text, const std::string& source,
                                    std::size_t line) {
-  std::size_t open = std::string::npos;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '(') {
-      open = i;
-    } else if (text[i] == ')' && open != std::string::npos) {
-      std::istringstream list(text.substr(open + 1, i - open - 1));
-      open = std::string::npos;
-      for (std::string item; std::getline(list, item, ',');) {
-        std::istringstream fields(item);
-        std::size_t n = 0;
-        for (std::string f; fields >> f;) ++n;
-        if (n > 2)
-          throw IO::Parse_error(source, line,
-                                "a point has " + std::to_string(n) + " coordinates (" + item +
-                                    "): only 2D WKT is read");
-      }
+  for_each_innermost_list(text, [&](const std::string& list) {
+    std::istringstream items(list);
+    for (std::string item; std::getline(items, item, ',');) {
+      std::istringstream fields(item);
+      std::size_t n = 0;
+      for (std::string f; fields >> f;) ++n;
+      if (n > 2)
+        throw IO::Parse_error(source, line,
+                              "a point has " + std::to_string(n) + " coordinates (" + item +
+                                  "): only 2D WKT is read");
     }
-  }
+  });
 }
 
 }  // namespace internal
