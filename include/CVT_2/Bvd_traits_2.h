@@ -28,9 +28,10 @@ int scale_exponent(std::initializer_list<FT> values) {
   if constexpr (std::is_same_v<FT, double>) {
     double m = 0;
     for (const double x : values) m = std::max(m, std::abs(x));
-    // Within these magnitudes the cubic terms neither overflow nor underflow: no rescaling,
-    // which costs as much as the rest of the construction.
-    if (m > 0x1.0p-300 && m < 0x1.0p300) return 0;
+    // Within these magnitudes the cubic terms neither overflow nor underflow, nor does the
+    // error filter's product of squares: no rescaling, which costs as much as the rest of the
+    // construction. Rescaling is exact, so either way gives the same bits.
+    if (m > 0x1.0p-100 && m < 0x1.0p100) return 0;
     if (m > 0 && std::isfinite(m)) std::frexp(m, &e);
   }
   return e;
