@@ -531,15 +531,10 @@ TEST_CASE("random domains on a grid: holes, touching polylines, points on constr
           "[bvd][random]") {
   // Each case a new domain; the properties of check_diagram hold on all of them. 400 cases
   // here; CVT_2_RANDOM_CASES=N runs N (thousands for a nightly run).
-  const char* env = std::getenv("CVT_2_RANDOM_CASES");
-  const unsigned cases = env ? static_cast<unsigned>(std::strtoul(env, nullptr, 10)) : 400u;
+  const unsigned cases = random_cases(400);
   for (unsigned seed = 1; seed <= cases; ++seed) {
     CAPTURE(seed);
-    std::vector<Point> generators;
-    const auto poly = random_domain(seed, generators, 120);
-    Cdt cdt;
-    CVT_2::IO::insert_poly(cdt, poly);
-    CVT_2::insert_generators_2(cdt, generators);
+    const Cdt cdt = random_triangulation(seed, 120);
     const Bvd bvd(cdt);
     check_diagram(bvd, 300, seed);
   }

@@ -444,15 +444,10 @@ TEST_CASE("random domains: Lloyd never raises the energy and keeps generators in
           "[lloyd][random]") {
   // The BVD's random domains (see random_domain.h), 5 iterations each: 150 cases here,
   // CVT_2_RANDOM_CASES=N runs N (scripts/run_nightly.sh runs thousands).
-  const char* env = std::getenv("CVT_2_RANDOM_CASES");
-  const unsigned cases = env ? static_cast<unsigned>(std::strtoul(env, nullptr, 10)) * 3 / 8 : 150u;
+  const unsigned cases = random_cases(150, 3.0 / 8);
   for (unsigned seed = 1; seed <= cases; ++seed) {
     CAPTURE(seed);
-    std::vector<Point> generators;
-    const auto poly = random_domain(seed, generators, 150);
-    Cdt cdt;
-    CVT_2::IO::insert_poly(cdt, poly);
-    CVT_2::insert_generators_2(cdt, generators);
+    Cdt cdt = random_triangulation(seed, 150);
     CVT_2::Lloyd_optimizer_2<Cdt> lloyd(cdt);
     double previous = lloyd.evaluate(10).energy;
     REQUIRE(std::isfinite(previous));

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -131,6 +132,23 @@ inline CVT_2::IO::Poly_data<Point> random_domain(unsigned seed, std::vector<Poin
     if (CVT_2::is_in_domain_2(cdt, p)) generators.push_back(p);
   }
   return poly;
+}
+
+// How many random cases to run: `suite` in the regular suite, or `share` of CVT_2_RANDOM_CASES
+// when it is set (scripts/run_nightly.sh sets thousands).
+inline unsigned random_cases(unsigned suite, double share = 1) {
+  const char* env = std::getenv("CVT_2_RANDOM_CASES");
+  return env ? static_cast<unsigned>(share * double(std::strtoul(env, nullptr, 10))) : suite;
+}
+
+// The triangulation of random_domain(seed) with its n generators inserted.
+inline Cdt random_triangulation(unsigned seed, std::size_t n) {
+  std::vector<Point> generators;
+  const auto poly = random_domain(seed, generators, n);
+  Cdt cdt;
+  CVT_2::IO::insert_poly(cdt, poly);
+  CVT_2::insert_generators_2(cdt, generators);
+  return cdt;
 }
 
 }  // namespace support
