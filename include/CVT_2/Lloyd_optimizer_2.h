@@ -175,9 +175,10 @@ class Lloyd_optimizer_2 {
           }
           const Cell_moments_2<Kernel> m = moments(v->point(), points, resolution);
           const double mass = CGAL::to_double(m.mass), energy = CGAL::to_double(m.energy);
+          const double first2 = CGAL::to_double(m.first_moment.squared_length());
           if (!(mass >= 0) || !std::isfinite(mass) || !std::isfinite(energy) ||
-              !std::isfinite(CGAL::to_double(m.first_moment.squared_length())))
-            throw Domain_error(bad_moments_message(v->point(), points, mass, energy));
+              !std::isfinite(first2))
+            throw Domain_error(bad_moments_message(v->point(), points, mass, energy, first2));
           out.mass += mass;
           out.energy += energy;
           if (!is_free) return;
@@ -286,16 +287,19 @@ class Lloyd_optimizer_2 {
     }
   }
 
-  // Why a cell's moments cannot be used: overflow (too large a domain or density), or a cell
-  // that is not a polygon, which is a bug to report.
+  // Why a cell's moments cannot be used: overflow (too large a domain or density: a finite cell
+  // whose moments are not all finite, NaN included, from inf - inf), or a bug to report: a cell
+  // vertex that is not finite, or finite moments with a negative mass.
   static std::string bad_moments_message(const Point_2& generator, const Cell_points& points,
-                                         double mass, double energy) {
+                                         double mass, double energy, double first2) {
     const bool finite_cell = std::all_of(points.begin(), points.end(), [](const Point_2& p) {
       return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y()));
     });
+    const bool overflow =
+        finite_cell && !(std::isfinite(mass) && std::isfinite(energy) && std::isfinite(first2));
     std::string what = "the cell of generator " + internal::to_string(generator) + " has mass " +
                        internal::number_to_string(mass) + " and energy " + internal::number_to_string(energy);
-    if (finite_cell && (std::isinf(mass) || std::isinf(energy) || std::isfinite(mass)))
+    if (overflow)
       return what + ": its moments do not fit in double precision (the domain's size or the "
                     "density's range is too extreme for Lloyd iteration)";
     return what + ": its " + std::to_string(points.size()) +
