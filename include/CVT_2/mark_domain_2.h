@@ -64,8 +64,6 @@ void flood_outside(const CDT& cdt, std::vector<typename CDT::Face_handle>& stack
   }
 }
 
-// The face on the given side of the constrained edge that starts at the vertex at `a` and goes
-// toward `b` (the segment ab may have been split by vertices lying on it).
 // The simple loops of a ring that may touch itself at vertices (a hole pinched to two holes,
 // or a bowtie): the ring is cut at each vertex it comes back to. Loops of fewer than three
 // vertices (a spike out and back) enclose nothing. A loop that still is not simple (edges
@@ -98,6 +96,8 @@ std::vector<std::vector<typename std::iterator_traits<PointIterator>::value_type
   return loops;
 }
 
+// The face on the given side of the constrained edge that starts at the vertex at `a` and goes
+// toward `b` (the segment ab may have been split by vertices lying on it).
 template <class CDT>
 typename CDT::Face_handle face_beside(const CDT& cdt, const typename CDT::Point_2& a,
                                       const typename CDT::Point_2& b, CGAL::Orientation side) {
