@@ -60,6 +60,19 @@ class Silenced_cerr {
   std::streambuf* m_old;
 };
 
+// t without leading and trailing blanks.
+inline std::string trimmed(std::string t) {
+  t.erase(0, t.find_first_not_of(" \t\r"));
+  t.erase(t.find_last_not_of(" \t\r") + 1);
+  return t;
+}
+
+// t in upper case (WKT keywords are case-insensitive; CGAL's reader wants upper case).
+inline std::string upper_case(std::string t) {
+  for (char& c : t) c = char(std::toupper(static_cast<unsigned char>(c)));
+  return t;
+}
+
 // Calls f(list) for the text of each innermost parenthesized list of a WKT geometry: a ring,
 // a linestring or a point.
 template <class F>
@@ -92,16 +105,11 @@ inline void check_rings_closed(const std::string& text, const std::string& sourc
     double x0, y0, x1, y1;
     std::istringstream a(first), b(last);
     if (!(a >> x0 >> y0) || !(b >> x1 >> y1)) return;  // malformed: CGAL's reader says so
-    if (x0 != x1 || y0 != y1) {
-      const auto trim = [](std::string t) {
-        t.erase(0, t.find_first_not_of(" \t\r"));
-        t.erase(t.find_last_not_of(" \t\r") + 1);
-        return t;
-      };
+    if (x0 != x1 || y0 != y1)
       throw IO::Parse_error(source, line,
-                            "a ring is not closed: it starts at (" + trim(first) + ") and ends at (" +
-                                trim(last) + "); a WKT ring repeats its first point last");
-    }
+                            "a ring is not closed: it starts at (" + trimmed(first) +
+                                ") and ends at (" + trimmed(last) +
+                                "); a WKT ring repeats its first point last");
   });
 }
 
@@ -147,19 +155,15 @@ Wkt_data<K> read_wkt(std::istream& is, const std::string& source = "<wkt>") {
     if (b == std::string::npos) continue;
     std::size_t e = b;
     while (e < line.size() && std::isalpha(static_cast<unsigned char>(line[e]))) ++e;
-    std::string type = line.substr(b, e - b);
-    for (char& c : type) c = char(std::toupper(static_cast<unsigned char>(c)));
+    const std::string type = internal::upper_case(line.substr(b, e - b));
     if (type != "POINT" && type != "MULTIPOINT" && type != "LINESTRING" &&
         type != "MULTILINESTRING" && type != "POLYGON" && type != "MULTIPOLYGON")
       throw Parse_error(source, number,
                         "expected a WKT POLYGON, MULTIPOLYGON, LINESTRING, MULTILINESTRING, "
                         "POINT or MULTIPOINT",
                         type.empty() ? line.substr(b, 20) : type);
-    std::string rest = line.substr(e);
-    rest.erase(0, rest.find_first_not_of(" \t\r"));
-    rest.erase(rest.find_last_not_of(" \t\r") + 1);
-    std::string upper_rest = rest;
-    for (char& c : upper_rest) c = char(std::toupper(static_cast<unsigned char>(c)));
+    const std::string rest = internal::trimmed(line.substr(e));
+    const std::string upper_rest = internal::upper_case(rest);
     if (upper_rest == "EMPTY") continue;  // adds nothing (CGAL's reader would crash on it)
     if (upper_rest.find("EMPTY") != std::string::npos)
       throw Parse_error(source, number, "an EMPTY part inside a geometry is not supported", "EMPTY");
