@@ -4,6 +4,7 @@
 #ifndef CVT_2_BENCHMARKS_BENCHMARK_SUPPORT_H
 #define CVT_2_BENCHMARKS_BENCHMARK_SUPPORT_H
 
+#include <CVT_2/Cvt_triangulation_2.h>
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/Lloyd_optimizer_2.h>
 #include <CVT_2/insert_generators_2.h>
@@ -28,9 +29,7 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_2;
 using Itag = CGAL::No_constraint_intersection_requiring_constructions_tag;
 using Vb = CGAL::Triangulation_vertex_base_2<K>;
-// Ours.
-using Tds = CGAL::Triangulation_data_structure_2<Vb, CVT_2::Bvd_face_base_2<K>>;
-using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, Itag>;
+using CDT = CVT_2::Cvt_triangulation_2<K, Itag>;  // ours
 // CGAL's optimizer: sizing info in the vertices, domain and blindness in the faces.
 using Tds2 = CGAL::Triangulation_data_structure_2<CGAL::Delaunay_mesh_vertex_base_2<K>,
                                                   CGAL::Delaunay_mesh_face_base_2<K>>;
