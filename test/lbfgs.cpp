@@ -318,7 +318,7 @@ TEST_CASE("generators moved to targets beyond their stars and back come back to 
   }
   std::vector<std::size_t> order(vertices.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::vector<CVT_2::internal::Flip_candidate<Cdt>> stack;
+  CVT_2::internal::Move_buffers<Cdt> stack;
   const auto delaunay = [&d] {
     for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f)
       for (int i = 0; i < 3; ++i)
@@ -331,9 +331,10 @@ TEST_CASE("generators moved to targets beyond their stars and back come back to 
     beyond += f->vertex(0) != vertices[i] && f->vertex(1) != vertices[i] && f->vertex(2) != vertices[i];
   }
   CHECK(beyond > 50);
-  CHECK(CVT_2::internal::move_free_vertices(d.cdt, vertices, targets, order, 8, stack) == 0);
+  const CVT_2::Bounded_voronoi_diagram_2<Cdt> diagram(d.cdt);  // its chunks of faces
+  CHECK(CVT_2::internal::move_free_vertices(d.cdt, diagram, 0, vertices, targets, order, 8, stack) == 0);
   CHECK(delaunay());
-  CHECK(CVT_2::internal::move_free_vertices(d.cdt, vertices, start, order, 8, stack) == 0);
+  CHECK(CVT_2::internal::move_free_vertices(d.cdt, diagram, 0, vertices, start, order, 8, stack) == 0);
   CHECK(delaunay());
   std::size_t different = 0;
   for (std::size_t i = 0; i < vertices.size(); ++i) different += vertices[i]->point() != start[i];
@@ -401,9 +402,10 @@ TEST_CASE("degenerate input: two generators sent to the same point, or to each o
   const std::vector<Point> targets =
       swap ? std::vector<Point>{vertices[1]->point(), vertices[0]->point()}
            : std::vector<Point>{Point(0.45, 0.5), Point(0.45, 0.5)};
-  std::vector<CVT_2::internal::Flip_candidate<Cdt>> stack;
+  CVT_2::internal::Move_buffers<Cdt> stack;
   const std::size_t missed =
-      CVT_2::internal::move_free_vertices(cdt, vertices, targets, {0, 1}, 20, stack);
+      CVT_2::internal::move_free_vertices(cdt, CVT_2::Bounded_voronoi_diagram_2<Cdt>(cdt), 0,
+                                          vertices, targets, {0, 1}, 20, stack);
   CHECK(missed >= 1);
   CHECK(cdt.number_of_vertices() == n);
   CHECK(vertices[0]->point() != vertices[1]->point());

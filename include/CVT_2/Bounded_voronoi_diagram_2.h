@@ -198,12 +198,26 @@ class Bounded_voronoi_diagram_2 {
   /// \pre the triangulation has not changed since the last `update()`.
   template <class Visitor>
   void for_each_cell_in_chunks(Visitor visit, unsigned threads = 0) const {
+    for_each_face_chunk(
+        [&](std::size_t chunk, auto first, auto last) {
+          visit_cells(first, last, [&](Vertex_handle v, const std::vector<Cell_vertex>& c) {
+            visit(chunk, v, c);
+          });
+        },
+        threads);
+  }
+
+  /// Calls `visit(chunk, first, last)` for every chunk of `for_each_cell_in_chunks()`, with the
+  /// range of its faces (`All_faces_iterator`s, in memory order, infinite faces included), on
+  /// `threads` threads likewise. `visit` must allow concurrent calls for different chunks.
+  /// \pre no face has been created or deleted since the last `update()` (moving vertices and
+  ///      flipping edges create and delete none).
+  template <class Visitor>
+  void for_each_face_chunk(Visitor visit, unsigned threads = 0) const {
     if (m_cdt.dimension() < 2) return;
     internal::run_chunks(m_chunks.size(), threads, [&](std::size_t chunk) {
       const auto last = chunk + 1 < m_chunks.size() ? m_chunks[chunk + 1] : m_cdt.all_faces_end();
-      visit_cells(m_chunks[chunk], last, [&](Vertex_handle v, const std::vector<Cell_vertex>& c) {
-        visit(chunk, v, c);
-      });
+      visit(chunk, m_chunks[chunk], last);
     });
   }
 

@@ -29,10 +29,10 @@ namespace CVT_2 {
 /// inverse Hessian is \f$\mathrm{diag}(1/(2m_i))\f$, so a step without memory (the first, and
 /// every restart) is exactly a Lloyd step \f$x_i \to x_i^*\f$.
 ///
-/// A step moves the generators in place, as Lloyd iteration does: each free generator moves
-/// toward its target within its star (it crosses no edge, so no constraint), then edge flips
-/// restore the constrained Delaunay property, and the generators that have not arrived go on,
-/// for a few passes; the positions reached are the trial point. A backtracking line search
+/// A step moves the generators in place, as Lloyd iteration does: all at once, those of any
+/// face that this folds within their stars instead (no edge is crossed, so no constraint),
+/// then edge flips restore the constrained Delaunay property, and the generators that have not
+/// arrived go on, for a few passes; the positions reached are the trial point. A backtracking line search
 /// (Armijo's condition on the energy, with the displacement actually done) halves the step
 /// twice at most; if the energy still does not decrease enough, the generators go back to where
 /// the step started and take a Lloyd step, and the memory is cleared. Pairs with
@@ -114,8 +114,7 @@ class Lbfgs_optimizer_2 {
       // still on their way after the first ones); if one cannot get there to the bit, the
       // Lloyd step starts from an evaluation of where they are.
       m_targets = m_current.points;
-      if (internal::move_free_vertices(m_cdt, m_vertices, m_targets, m_order, 4 * max_passes,
-                                       m_flip_stack) > 0)
+      if (move_to_targets(4 * max_passes) > 0)
         evaluate(resolution);
       lloyd_step(resolution);
     }
@@ -289,9 +288,16 @@ class Lbfgs_optimizer_2 {
   // Every free generator to its centroid (as far as the passes go), evaluated and accepted.
   void lloyd_step(std::size_t resolution) {
     m_targets = m_current.centroids;
-    internal::move_free_vertices(m_cdt, m_vertices, m_targets, m_order, max_passes, m_flip_stack);
+    move_to_targets(max_passes);
     evaluate_trial(resolution);
     accept();
+  }
+
+  // Moves the generators toward m_targets, in the last visit order; returns how many did not
+  // get there in `passes` passes.
+  std::size_t move_to_targets(std::size_t passes) {
+    return internal::move_free_vertices(m_cdt, m_lloyd.diagram(), m_lloyd.number_of_threads(),
+                                        m_vertices, m_targets, m_order, passes, m_buffers);
   }
 
   // Backtracking from the full quasi-Newton step; true if a trial point was accepted.
@@ -304,7 +310,7 @@ class Lbfgs_optimizer_2 {
       for (std::size_t i = 0; i < n; ++i)
         m_targets[i] = Point_2(FT(m_current.x[2 * i] + step * m_direction[2 * i]),
                                FT(m_current.x[2 * i + 1] + step * m_direction[2 * i + 1]));
-      internal::move_free_vertices(m_cdt, m_vertices, m_targets, m_order, max_passes, m_flip_stack);
+      move_to_targets(max_passes);
       evaluate_trial(resolution);
       double slope = 0;  // g . s, with the displacement done
       for (std::size_t j = 0; j < 2 * n; ++j) slope += m_current.g[j] * (m_trial.x[j] - m_current.x[j]);
@@ -330,7 +336,7 @@ class Lbfgs_optimizer_2 {
   std::vector<Point_2> m_targets;
   std::vector<std::size_t> m_order;  // the numbers in the last evaluation's visit order
   std::vector<std::size_t> m_previous_order, m_position;  // the one before, and its inverse
-  std::vector<internal::Flip_candidate<CDT>> m_flip_stack;
+  internal::Move_buffers<CDT> m_buffers;
   std::size_t m_steps = 0, m_fallbacks = 0;
 };
 

@@ -12,7 +12,7 @@
 #include <CVT_2/Uniform_density_2.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/internal/to_string.h>
-#include <CVT_2/internal/move_vertex.h>
+#include <CVT_2/internal/move_generators.h>
 
 #include <boost/container/small_vector.hpp>
 
@@ -99,11 +99,12 @@ using Default_quadrature =
 /// generators; `move()` moves every free generator to the centroid \f$x^*\f$ of its cell.
 /// `lloyd_optimize_2()` drives it with the paper's stopping rule.
 ///
-/// The triangulation is updated in place, in the structure the user sees: a generator moves
-/// within its star (the faces around it keep their orientation, so it crosses no edge and so
-/// no constraint; a target beyond the star is approached in several iterations), then edge
-/// flips restore the constrained Delaunay property. Vertex handles stay valid; constrained
-/// vertices never move.
+/// The triangulation is updated in place, in the structure the user sees: the generators move
+/// at once, those of any face that this folds go back and move within their stars instead (the
+/// faces around them keep their orientation, so no edge and so no constraint is crossed; a
+/// target beyond the star is approached in several iterations), then edge flips restore the
+/// constrained Delaunay property (user manual, "Updating the triangulation"). Vertex handles
+/// stay valid; constrained vertices never move.
 ///
 /// \tparam CDT as for `Bounded_voronoi_diagram_2`, with its domain marked.
 /// \tparam Density a model of `DensityFunction_2`.
@@ -220,34 +221,23 @@ class Lloyd_optimizer_2 {
   void set_number_of_threads(unsigned n) { m_number_of_threads = n; }
   unsigned number_of_threads() const { return m_number_of_threads; }  ///< as set; 0: one per core
 
-  /// Moves every free generator to the centroid that the last `evaluate()` computed (or as
-  /// far toward it as its star allows), then restores the constrained Delaunay property.
+  /// Moves every free generator to the centroid that the last `evaluate()` computed (or, if
+  /// that would fold a face, as far toward it as its star allows), then restores the
+  /// constrained Delaunay property.
   /// Returns the number of generators that reached their centroid.
+  /// \pre the triangulation has not changed since the last `evaluate()`.
   std::size_t move() {
-    std::size_t reached = 0;
-    // The stars are far apart in memory: each is prefetched in steps ahead of its move (its
-    // vertex, the vertex's face, that face's neighbors, theirs and their vertices).
-    const std::size_t n = m_moves.size(), d = 6;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (k + 4 * d < n) internal::prefetch(&*m_moves[k + 4 * d].vertex);
-      if (k + 3 * d < n) internal::prefetch(&*m_moves[k + 3 * d].vertex->face());
-      if (k + 2 * d < n) {
-        const auto f = m_moves[k + 2 * d].vertex->face();
-        for (int i = 0; i < 3; ++i) internal::prefetch(&*f->neighbor(i));
-      }
-      if (k + d < n) {
-        const auto f = m_moves[k + d].vertex->face();
-        for (int i = 0; i < 3; ++i) {
-          const auto g = f->neighbor(i);
-          internal::prefetch(&*f->vertex(i));
-          for (int j = 0; j < 3; ++j) internal::prefetch(&*g->neighbor(j));
-        }
-      }
-      reached += internal::move_free_vertex(m_cdt, m_moves[k].vertex, m_moves[k].centroid) == 1;
+    const std::size_t n = m_moves.size();
+    if (m_order.size() != n) {
+      m_order.resize(n);
+      for (std::size_t k = 0; k < n; ++k) m_order[k] = k;
     }
+    const std::size_t missed = internal::move_free_vertices(
+        m_cdt, m_diagram, m_number_of_threads, m_order,
+        [this](std::size_t k) { return m_moves[k].vertex; },
+        [this](std::size_t k) -> const Point_2& { return m_moves[k].centroid; }, 1, m_buffers);
     m_moves.clear();
-    internal::restore_delaunay(m_cdt, m_flip_stack);  // one pass: each edge tested once
-    return reached;
+    return n - missed;
   }
 
   const Evaluation& last_evaluation() const { return m_evaluation; }  ///< the last evaluation
@@ -324,7 +314,8 @@ class Lloyd_optimizer_2 {
   std::size_t m_number_of_evaluations = 0;
   std::vector<Chunk> m_chunks;
   std::vector<Free_generator> m_moves;
-  std::vector<internal::Flip_candidate<CDT>> m_flip_stack;
+  std::vector<std::size_t> m_order;  // 0, 1, ...: the moves in the order of the cells
+  internal::Move_buffers<CDT> m_buffers;
 };
 
 }  // namespace CVT_2

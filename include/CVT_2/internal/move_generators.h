@@ -1,77 +1,222 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// Moving many free generators to given targets: moves within stars and flips, in a few passes.
+// Moving many free generators to given targets: all at once, then within stars, then flips.
 #ifndef CVT_2_INTERNAL_MOVE_GENERATORS_H
 #define CVT_2_INTERNAL_MOVE_GENERATORS_H
 
 #include <CVT_2/internal/move_vertex.h>
 #include <CVT_2/internal/prefetch.h>
+#include <CVT_2/internal/run_chunks.h>
 
+#include <CGAL/enum.h>
+
+#include <algorithm>
 #include <cstddef>
+#include <unordered_set>
 #include <vector>
 
 namespace CVT_2 {
 namespace internal {
 
-// Moves each free vertex vertices[i] toward targets[i], in the sequence `order` (a permutation
-// of the numbers; the cells' visit order is kind to the cache), in at most `passes` passes. A pass moves
-// every vertex that is not yet at its target as far as its star allows (move_free_vertex: no
-// edge is crossed, so no constraint), then restores the constrained Delaunay property; the next
-// pass goes on from the new stars. A vertex that reaches its target is at it to the bit. Returns
-// how many did not reach it.
+// What the moves reuse from one call to the next.
 template <class CDT>
-std::size_t move_free_vertices(CDT& cdt, const std::vector<typename CDT::Vertex_handle>& vertices,
-                               const std::vector<typename CDT::Point_2>& targets,
-                               const std::vector<std::size_t>& order, std::size_t passes,
-                               std::vector<Flip_candidate<CDT>>& stack) {
-  CGAL_precondition(vertices.size() == targets.size() && order.size() == vertices.size());
-  std::vector<std::size_t> pending, moved;
+struct Move_buffers {
+  std::vector<std::size_t> pending, moved, kept_back;
+  std::vector<typename CDT::Point_2> from;  // where the vertices of the bulk move were
+  std::vector<typename CDT::Face_handle> inverted;
+  std::vector<Flip_candidate<CDT>> stack;
+  // what each chunk of faces found, before they are put together in the order of the chunks
+  std::vector<std::vector<typename CDT::Face_handle>> chunk_inverted;
+  std::vector<std::vector<Flip_candidate<CDT>>> chunk_stack;
+};
+
+// Pushes every edge of the faces around v on the stack: the edges whose in-circle tests a move
+// of v changes.
+template <class CDT>
+void push_star_edges(const CDT& cdt, typename CDT::Vertex_handle v,
+                     std::vector<Flip_candidate<CDT>>& stack) {
+  auto fc = cdt.incident_faces(v), end = fc;
+  do {
+    const typename CDT::Face_handle f = fc;
+    for (int j = 0; j < 3; ++j)
+      stack.push_back({f, j, f->vertex(CDT::ccw(j)), f->vertex(CDT::cw(j))});
+  } while (++fc != end);
+}
+
+// Sets vertex(i) to target(i) for every i of `pending`, all at once, then puts back where it
+// was every vertex of a face that this left without a positive orientation, and the vertices
+// of the faces that this in turn leaves so, until every face is positive: the triangulation is
+// then valid again (a vertex moved crossed no edge, hence no constraint), and every vertex is
+// at its target but those put back, listed in `b.kept_back` in the order of `pending`.
+//
+// This is one linear pass over the vertices and one over the faces, both in memory order and
+// prefetched, instead of a walk around each vertex's star; when most vertices move, as in
+// Lloyd iteration, only a few are put back. Both passes run in chunks on `threads` threads (the
+// faces in those of `diagram`, as of its last update), each chunk with its own output, put
+// together in the order of the chunks: the same bits whatever the threads. The pass over the
+// faces also runs the in-circle test of every edge of the domain once and pushes those that
+// fail on `b.stack`: with the edges around the vertices put back (push_star_edges), the stack
+// then holds every edge that can have lost the Delaunay property, ready for lawson_flips().
+template <class CDT, class Diagram, class VertexAt, class TargetAt>
+void move_all_at_once(CDT& cdt, const Diagram& diagram, unsigned threads,
+                      const std::vector<std::size_t>& pending, const VertexAt& vertex,
+                      const TargetAt& target, Move_buffers<CDT>& b) {
+  using Vertex_handle = typename CDT::Vertex_handle;
+  using Face_handle = typename CDT::Face_handle;
+  const auto orientation = cdt.geom_traits().orientation_2_object();
+  const auto less_xy = cdt.geom_traits().less_xy_2_object();
+  const auto positive = [&](Face_handle f) {
+    return orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) ==
+           CGAL::LEFT_TURN;
+  };
+  const std::size_t n = pending.size();
+  constexpr std::size_t distance = 8, chunk_size = 4096;
+  b.from.resize(n);
+  run_chunks((n + chunk_size - 1) / chunk_size, threads, [&](std::size_t c) {
+    const std::size_t end = std::min(n, (c + 1) * chunk_size);
+    for (std::size_t k = c * chunk_size; k < end; ++k) {
+      if (k + distance < end) prefetch(&*vertex(pending[k + distance]));
+      const Vertex_handle v = vertex(pending[k]);
+      b.from[k] = v->point();
+      v->set_point(target(pending[k]));
+    }
+  });
+  // The faces around a moved vertex are all in the domain (it is free and has a cell). An
+  // in-circle test next to a face that is not positive means nothing, but that face's edges
+  // are all pushed again below, with its vertices put back.
+  b.chunk_inverted.resize(diagram.number_of_chunks());
+  b.chunk_stack.resize(diagram.number_of_chunks());
+  diagram.for_each_face_chunk(
+      [&](std::size_t c, auto first, auto last) {
+        std::vector<Face_handle>& inverted = b.chunk_inverted[c];
+        std::vector<Flip_candidate<CDT>>& stack = b.chunk_stack[c];
+        inverted.clear();
+        stack.clear();
+        for_each_face_prefetched(first, last, [&](Face_handle f) {
+          if (!f->is_inside_domain() || cdt.is_infinite(f)) return;
+          if (!positive(f)) {
+            inverted.push_back(f);
+            return;
+          }
+          for (int i = 0; i < 3; ++i)
+            if (tests_edge(cdt, f, i, less_xy) && cdt.is_flipable(f, i))
+              stack.push_back({f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))});
+        });
+      },
+      threads);
+  b.inverted.clear();
+  b.stack.clear();
+  for (std::size_t c = 0; c < b.chunk_stack.size(); ++c) {
+    b.inverted.insert(b.inverted.end(), b.chunk_inverted[c].begin(), b.chunk_inverted[c].end());
+    b.stack.insert(b.stack.end(), b.chunk_stack[c].begin(), b.chunk_stack[c].end());
+  }
+  // Rounds of putting back: a face that is not positive has a vertex that moved (at their old
+  // places, its vertices made a positive face), so each round puts back at least one and the
+  // rounds end, at the latest with the old triangulation. A round looks its vertices up in one
+  // pass over `pending`, so that everything happens in the order of `pending`, not of addresses.
+  std::vector<bool> put_back(b.inverted.empty() ? 0 : n, false);
+  std::unordered_set<Vertex_handle> wanted;
+  while (!b.inverted.empty()) {
+    wanted.clear();
+    for (const Face_handle f : b.inverted)
+      for (int i = 0; i < 3; ++i) wanted.insert(f->vertex(i));
+    b.inverted.clear();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vertex_handle v = vertex(pending[k]);
+      if (put_back[k] || wanted.count(v) == 0) continue;
+      put_back[k] = true;
+      v->set_point(b.from[k]);
+      auto fc = cdt.incident_faces(v), end = fc;
+      do {
+        if (!positive(fc)) b.inverted.push_back(fc);
+      } while (++fc != end);
+    }
+  }
+  b.kept_back.clear();
+  for (std::size_t k = 0; k < put_back.size(); ++k)
+    if (put_back[k]) b.kept_back.push_back(pending[k]);
+}
+
+// Moves each free vertex vertex(i) toward target(i), for i in `order` (the cells' visit order,
+// kind to the cache), in at most `passes` passes. A pass moves every vertex not yet at its
+// target as far as its star allows (move_free_vertex: no edge is crossed, so no constraint),
+// then edge flips restore the constrained Delaunay property; the next pass goes on from the new
+// stars. When most vertices move, the first pass moves them all at once instead
+// (move_all_at_once) and only those it puts back within their stars. A vertex that reaches its
+// target is at it to the bit. Returns how many did not reach it.
+template <class CDT, class Diagram, class VertexAt, class TargetAt>
+std::size_t move_free_vertices(CDT& cdt, const Diagram& diagram, unsigned threads,
+                               const std::vector<std::size_t>& order, const VertexAt& vertex,
+                               const TargetAt& target, std::size_t passes, Move_buffers<CDT>& b) {
+  std::vector<std::size_t>& pending = b.pending;
+  pending.clear();
   for (const std::size_t i : order)
-    if (vertices[i]->point() != targets[i]) pending.push_back(i);
+    if (vertex(i)->point() != target(i)) pending.push_back(i);
   for (std::size_t pass = 0; pass < passes && !pending.empty(); ++pass) {
-    moved.clear();
-    std::size_t kept = 0;
-    // The stars are far apart in memory: each is prefetched in steps ahead of its move, as in
-    // Lloyd_optimizer_2::move() (its vertex, the vertex's face, that face's neighbors, theirs).
+    const bool at_once = pass == 0 && pending.size() * 8 > order.size();
+    if (at_once) {
+      move_all_at_once(cdt, diagram, threads, pending, vertex, target, b);  // fills b.stack
+      pending.swap(b.kept_back);
+    } else {
+      b.moved.clear();
+    }
+    // The stars are far apart in memory: each is prefetched in steps ahead of its move (its
+    // vertex, the vertex's face, that face's neighbors, theirs).
+    std::size_t kept = 0, moved_here = 0;
     const std::size_t n = pending.size(), d = 6;
     for (std::size_t k = 0; k < n; ++k) {
-      if (k + 4 * d < n) prefetch(&*vertices[pending[k + 4 * d]]);
-      if (k + 3 * d < n) prefetch(&*vertices[pending[k + 3 * d]]->face());
+      if (k + 4 * d < n) prefetch(&*vertex(pending[k + 4 * d]));
+      if (k + 3 * d < n) prefetch(&*vertex(pending[k + 3 * d])->face());
       if (k + 2 * d < n) {
-        const auto f = vertices[pending[k + 2 * d]]->face();
+        const auto f = vertex(pending[k + 2 * d])->face();
         for (int j = 0; j < 3; ++j) prefetch(&*f->neighbor(j));
       }
       if (k + d < n) {
-        const auto f = vertices[pending[k + d]]->face();
+        const auto f = vertex(pending[k + d])->face();
         for (int j = 0; j < 3; ++j) {
           prefetch(&*f->vertex(j));
           for (int l = 0; l < 3; ++l) prefetch(&*f->neighbor(j)->neighbor(l));
         }
       }
       const std::size_t i = pending[k];
-      const double done = move_free_vertex(cdt, vertices[i], targets[i]);
-      if (done > 0) moved.push_back(i);
+      const double done = move_free_vertex(cdt, vertex(i), target(i));
+      if (at_once) {
+        push_star_edges(cdt, vertex(i), b.stack);  // put back, then perhaps moved: retest
+      } else if (done > 0) {
+        b.moved.push_back(i);
+      }
+      moved_here += done > 0;
       if (done < 1) pending[kept++] = i;
     }
     pending.resize(kept);
-    if (moved.empty()) break;  // every remaining vertex is stuck where it is
-    if (moved.size() * 8 > vertices.size()) {
-      restore_delaunay(cdt, stack);  // most vertices moved: each edge of the domain once
+    if (at_once) {
+      lawson_flips(cdt, b.stack);
+      continue;
+    }
+    if (moved_here == 0) break;  // every remaining vertex is stuck where it is
+    if (b.moved.size() * 8 > order.size()) {
+      restore_delaunay(cdt, b.stack);  // most vertices moved: each edge of the domain once
     } else {
       // Few moved: only edges of their stars and links can have lost the Delaunay property
       // (their in-circle tests involve a moved vertex); Lawson's flips go on from there.
-      stack.clear();
-      for (const std::size_t i : moved) {
-        auto fc = cdt.incident_faces(vertices[i]), end = fc;
-        do {
-          const typename CDT::Face_handle f = fc;
-          for (int j = 0; j < 3; ++j)
-            stack.push_back({f, j, f->vertex(CDT::ccw(j)), f->vertex(CDT::cw(j))});
-        } while (++fc != end);
-      }
-      lawson_flips(cdt, stack);
+      b.stack.clear();
+      for (const std::size_t i : b.moved) push_star_edges(cdt, vertex(i), b.stack);
+      lawson_flips(cdt, b.stack);
     }
   }
   return pending.size();
+}
+
+// The same with the vertices and targets in two vectors.
+template <class CDT, class Diagram>
+std::size_t move_free_vertices(CDT& cdt, const Diagram& diagram, unsigned threads,
+                               const std::vector<typename CDT::Vertex_handle>& vertices,
+                               const std::vector<typename CDT::Point_2>& targets,
+                               const std::vector<std::size_t>& order, std::size_t passes,
+                               Move_buffers<CDT>& b) {
+  CGAL_precondition(vertices.size() == targets.size() && order.size() == vertices.size());
+  return move_free_vertices(
+      cdt, diagram, threads, order, [&](std::size_t i) { return vertices[i]; },
+      [&](std::size_t i) -> const typename CDT::Point_2& { return targets[i]; }, passes, b);
 }
 
 }  // namespace internal

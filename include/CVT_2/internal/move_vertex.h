@@ -54,46 +54,62 @@ void lawson_flips(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
   }
 }
 
-// Restores the constrained Delaunay property of the domain after its free vertices moved:
-// every edge with a domain face on its side is tested in place, and Lawson's flips start from
-// those that fail, so the stack holds only the few edges around flips.
-template <class CDT>
-void restore_delaunay(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
-  // Faces are visited in memory order; the vertices and neighbors of a face some steps ahead,
-  // then the neighbors' vertices, are prefetched (the in-circle tests read all of them).
+// Calls visit(f) for every face f of [first, last), in memory order. The vertices and neighbors
+// of a face some steps ahead, then the neighbors' vertices opposite to it, are prefetched:
+// orientation and in-circle tests read all of them.
+template <class Face_iterator, class Visit>
+void for_each_face_prefetched(Face_iterator first, Face_iterator last, const Visit& visit) {
   constexpr int distance = 8;
-  const auto less_xy = cdt.geom_traits().less_xy_2_object();
-  auto ahead = cdt.finite_faces_begin(), ahead2 = ahead;
-  for (int i = 0; i < 2 * distance && ahead != cdt.finite_faces_end(); ++i) ++ahead;
-  for (int i = 0; i < distance && ahead2 != cdt.finite_faces_end(); ++i) ++ahead2;
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-    if (ahead != cdt.finite_faces_end()) {
+  auto ahead = first, ahead2 = first;
+  for (int i = 0; i < 2 * distance && ahead != last; ++i) ++ahead;
+  for (int i = 0; i < distance && ahead2 != last; ++i) ++ahead2;
+  for (auto f = first; f != last; ++f) {
+    if (ahead != last) {
       for (int i = 0; i < 3; ++i) {
         prefetch(&*ahead->vertex(i));
         prefetch(&*ahead->neighbor(i));
       }
       ++ahead;
     }
-    if (ahead2 != cdt.finite_faces_end()) {
-      for (int i = 0; i < 3; ++i) prefetch(&*ahead2->neighbor(i)->vertex(ahead2->neighbor(i)->index(ahead2)));
+    if (ahead2 != last) {
+      for (int i = 0; i < 3; ++i) {
+        const auto g = ahead2->neighbor(i);
+        prefetch(&*g->vertex(g->index(ahead2)));
+      }
       ++ahead2;
     }
-    if (!f->is_inside_domain()) continue;
+    visit(f);
+  }
+}
+
+// Whether the domain face f is the one to test its unconstrained edge i, so that a pass over
+// the domain faces tests each edge once: the edge's only domain face, or of its two the one
+// that sees the edge's smaller endpoint in (x, y) order first, counterclockwise (the other sees
+// the endpoints the other way round). Not by address: the flips, hence the faces' layout and all
+// sums over them, must be the same from run to run.
+template <class CDT, class Less_xy>
+bool tests_edge(const CDT& cdt, typename CDT::Face_handle f, int i, const Less_xy& less_xy) {
+  if (f->is_constrained(i)) return false;
+  const auto g = f->neighbor(i);
+  return !g->is_inside_domain() || cdt.is_infinite(g) ||
+         !less_xy(f->vertex(CDT::cw(i))->point(), f->vertex(CDT::ccw(i))->point());
+}
+
+// Restores the constrained Delaunay property of the domain after its free vertices moved:
+// every edge with a domain face on its side is tested in place, and Lawson's flips start from
+// those that fail, so the stack holds only the few edges around flips.
+template <class CDT>
+void restore_delaunay(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
+  const auto less_xy = cdt.geom_traits().less_xy_2_object();
+  for_each_face_prefetched(cdt.finite_faces_begin(), cdt.finite_faces_end(),
+                           [&](typename CDT::Face_handle f) {
+    if (!f->is_inside_domain()) return;
     for (int i = 0; i < 3; ++i) {
-      const auto g = f->neighbor(i);
-      // Each edge once: from the only domain face, or from the face that sees the edge's
-      // smaller endpoint in (x, y) order first, counterclockwise (the other face sees the
-      // endpoints the other way round). Not by address: the flips, hence the faces' layout
-      // and all sums over them, must be the same from run to run.
-      if (f->is_constrained(i)) continue;
-      if (g->is_inside_domain() && !cdt.is_infinite(g) &&
-          less_xy(f->vertex(CDT::cw(i))->point(), f->vertex(CDT::ccw(i))->point()))
-        continue;
-      if (!cdt.is_flipable(f, i)) continue;
+      if (!tests_edge(cdt, f, i, less_xy) || !cdt.is_flipable(f, i)) continue;
       stack.assign(1, Flip_candidate<CDT>{f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))});
       lawson_flips(cdt, stack);
     }
-  }
+  });
 }
 
 // Moves the free vertex v toward `target`, as far as its star stays valid: every face around v

@@ -34,11 +34,18 @@ std::size_t tag_blind_faces(const CDT& cdt, const Traits& traits, const OnFace& 
   const auto is_blinded = traits.is_blinded_2_object();
   const auto compare = traits.compare_blinding_distance_2_object();
 
+  // One pass over the faces: clear the tags (writing only to the faces that have one), and
+  // list the sides of constrained edges that domain faces lie on.
+  std::vector<Edge> sides;
+  const bool planar = cdt.dimension() == 2;
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) {
-    f->clear_blinding();
+    if (f->is_blinded()) f->clear_blinding();
     on_face(f);
+    if (planar && f->is_inside_domain() && !cdt.is_infinite(f))
+      for (int i = 0; i < 3; ++i)
+        if (f->is_constrained(i)) sides.emplace_back(f, i);
   }
-  if (cdt.dimension() < 2) return 0;
+  if (!planar) return 0;
 
   std::size_t count = 0;
   std::vector<Face_handle> stack;
@@ -48,39 +55,35 @@ std::size_t tag_blind_faces(const CDT& cdt, const Traits& traits, const OnFace& 
     const Edge t = f->blinding_edge();
     return t.first == e.first && t.second == e.second;
   };
-  for (auto ei = cdt.finite_edges_begin(); ei != cdt.finite_edges_end(); ++ei) {
-    if (!cdt.is_constrained(*ei)) continue;
-    for (const Edge& e : {*ei, cdt.mirror_edge(*ei)}) {
-      if (cdt.is_infinite(e.first) || !e.first->is_inside_domain()) continue;
-      const auto& a = e.first->vertex(CDT::ccw(e.second))->point();
-      const auto& b = e.first->vertex(CDT::cw(e.second))->point();
-      stack.assign(1, e.first);
-      elsewhere.clear();
-      while (!stack.empty()) {
-        const Face_handle f = stack.back();
-        stack.pop_back();
-        if (tagged_by(f, e) || elsewhere.count(f) != 0) continue;
-        const auto& p = f->vertex(0)->point();
-        const auto& q = f->vertex(1)->point();
-        const auto& r = f->vertex(2)->point();
-        if (!is_blinded(p, q, r, a, b)) continue;
-        if (!f->is_blinded()) {
+  for (const Edge& e : sides) {
+    const auto& a = e.first->vertex(CDT::ccw(e.second))->point();
+    const auto& b = e.first->vertex(CDT::cw(e.second))->point();
+    stack.assign(1, e.first);
+    elsewhere.clear();
+    while (!stack.empty()) {
+      const Face_handle f = stack.back();
+      stack.pop_back();
+      if (tagged_by(f, e) || elsewhere.count(f) != 0) continue;
+      const auto& p = f->vertex(0)->point();
+      const auto& q = f->vertex(1)->point();
+      const auto& r = f->vertex(2)->point();
+      if (!is_blinded(p, q, r, a, b)) continue;
+      if (!f->is_blinded()) {
+        f->set_blinding_edge(e);
+        ++count;
+      } else {
+        const Edge t = f->blinding_edge();
+        const auto& ta = t.first->vertex(CDT::ccw(t.second))->point();
+        const auto& tb = t.first->vertex(CDT::cw(t.second))->point();
+        if (!is_same_constraint<CDT>(t, e) && compare(p, q, r, a, b, ta, tb) == CGAL::SMALLER)
           f->set_blinding_edge(e);
-          ++count;
-        } else {
-          const Edge t = f->blinding_edge();
-          const auto& ta = t.first->vertex(CDT::ccw(t.second))->point();
-          const auto& tb = t.first->vertex(CDT::cw(t.second))->point();
-          if (!is_same_constraint<CDT>(t, e) && compare(p, q, r, a, b, ta, tb) == CGAL::SMALLER)
-            f->set_blinding_edge(e);
-          else
-            elsewhere.insert(f);
-        }
-        for (int i = 0; i < 3; ++i) {
-          const Face_handle n = f->neighbor(i);
-          if (!f->is_constrained(i) && !cdt.is_infinite(n) && n->is_inside_domain())
-            stack.push_back(n);
-        }
+        else
+          elsewhere.insert(f);
+      }
+      for (int i = 0; i < 3; ++i) {
+        const Face_handle n = f->neighbor(i);
+        if (!f->is_constrained(i) && !cdt.is_infinite(n) && n->is_inside_domain())
+          stack.push_back(n);
       }
     }
   }
