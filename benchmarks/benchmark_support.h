@@ -100,6 +100,7 @@ inline void build_cdt2(CDT2& cdt, const Domain& d, const std::vector<Point>& poi
 struct Energy {
   double energy = nan;      // raw, by our evaluator at resolution 100
   double normalized = nan;  // E n / A² / (5 / (18 √3)), n = generators with a cell
+  double max_move_ratio = nan;  // over the free generators: below 0.01 is the paper's stop
   std::size_t cells = 0;
   std::size_t outside = 0;  // CGAL's free points that left the domain (dropped)
 };
@@ -108,7 +109,9 @@ struct Energy {
 inline Energy measure(CDT& cdt, const Domain& d) {
   CVT_2::Lloyd_optimizer_2<CDT> evaluator(cdt);
   Energy e;
-  e.energy = evaluator.evaluate(100).energy;
+  const auto evaluation = evaluator.evaluate(100);
+  e.energy = evaluation.energy;
+  e.max_move_ratio = evaluation.max_move_ratio;
   evaluator.diagram().for_each_cell([&e](CDT::Vertex_handle, const auto&) { ++e.cells; });
   e.normalized = e.energy * double(e.cells) / (d.area * d.area) / hexagon;
   return e;

@@ -2,7 +2,8 @@
 // lbfgs_benchmark: L-BFGS against Lloyd iteration from the same random points: evaluations and
 // time to the 1% stop, evaluations L-BFGS needs to reach the energy of K Lloyd iterations,
 // serial against two threads; with CVT_2_CONVERGENCE_CSV=path, the energy against time of
-// both and of CGAL's optimizer, for scripts/plot_convergence.py.
+// both and of CGAL's optimizer, for scripts/plot_convergence.py; with CVT_2_BENCH_LARGE=1, the
+// time CGAL's optimizer takes to the 1% stop at N = 1e5.
 #include "benchmark_support.h"
 
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
@@ -48,7 +49,8 @@ namespace {
 
 using support::nan;  // hides ::nan of <cmath>
 
-const std::size_t lloyd_iterations[] = {20, 50, 100};  // K
+const std::size_t lloyd_iterations[] = {20, 50, 100, 200};  // K
+constexpr int number_of_ks = 4;
 const double lipschitz_k = 0.1;                        // as lloyd_adaptive and the Fig. 10 case
 const std::size_t convergence_n = 10000;               // the convergence plot's cases
 
@@ -113,6 +115,7 @@ struct Sample {
   std::size_t evaluation = 0;
   double seconds = nan, energy = nan;
   std::size_t cells = 0;
+  double max_move_ratio = nan;  // CGAL's samples only
 };
 
 struct Run {
@@ -127,8 +130,8 @@ struct Run {
 struct Row {
   std::size_t cells = 0;
   Run lloyd, lbfgs;                                 // to the 1% stop
-  double lloyd_energy_after[3] = {nan, nan, nan};   // E after K Lloyd iterations
-  std::size_t lbfgs_evaluations_to[3] = {0, 0, 0};  // to reach it; 0: not within the cap
+  double lloyd_energy_after[number_of_ks] = {nan, nan, nan, nan};  // E after K Lloyd iterations
+  std::size_t lbfgs_evaluations_to[number_of_ks] = {};  // to reach it; 0: not within the cap
   std::vector<Sample> cgal, cgal_uniform;           // CGAL's histories, for the plot
 };
 std::map<std::pair<std::string, std::size_t>, Row> rows;
@@ -196,7 +199,7 @@ void bm_stop(benchmark::State& state, const Case& c) {
   counters["lbfgs_s"] = row.lbfgs.seconds;
 }
 
-// Lloyd's energy after K = 20, 50, 100 iterations; the evaluations L-BFGS needs to reach it
+// Lloyd's energy after K = 20, 50, 100, 200 iterations; the evaluations L-BFGS needs to reach it
 // (move-ratio stop off, 4 K evaluations at most).
 void bm_energy(benchmark::State& state, const Case& c) {
   const std::size_t n = static_cast<std::size_t>(state.range(0));
@@ -210,9 +213,10 @@ void bm_energy(benchmark::State& state, const Case& c) {
         CDT cdt;
         support::build_ours(cdt, d, points);
         const auto r = with_density(c, [&](const auto& np) {
-          return CVT_2::lloyd_optimize_2(cdt, np.number_of_iterations(100).move_ratio_bound(0));
+          const std::size_t k = lloyd_iterations[number_of_ks - 1];
+          return CVT_2::lloyd_optimize_2(cdt, np.number_of_iterations(k).move_ratio_bound(0));
         });
-        for (int k = 0; k < 3; ++k)
+        for (int k = 0; k < number_of_ks; ++k)
           row.lloyd_energy_after[k] = r.energy_history[lloyd_iterations[k]];
         seconds += r.seconds;
       }
@@ -221,9 +225,10 @@ void bm_energy(benchmark::State& state, const Case& c) {
       std::size_t* reached = row.lbfgs_evaluations_to;
       const double* targets = row.lloyd_energy_after;
       const auto record = [&](const CVT_2::Lloyd_result& r) {
-        for (int k = 0; k < 3; ++k)
+        for (int k = 0; k < number_of_ks; ++k)
           if (reached[k] == 0 && r.energy <= targets[k]) reached[k] = r.number_of_evaluations;
-        return reached[2] == 0 && r.number_of_evaluations < 4 * lloyd_iterations[2];
+        const int last = number_of_ks - 1;
+        return reached[last] == 0 && r.number_of_evaluations < 4 * lloyd_iterations[last];
       };
       const auto r = with_density(c, [&](const auto& np) {
         return CVT_2::lbfgs_optimize_2(cdt, np.move_ratio_bound(0).callback(Callback(record)));
@@ -236,7 +241,7 @@ void bm_energy(benchmark::State& state, const Case& c) {
     state.SkipWithError(e.what());
     return;
   }
-  for (int k = 0; k < 3; ++k)
+  for (int k = 0; k < number_of_ks; ++k)
     state.counters["lbfgs_evaluations_to_lloyd_" + std::to_string(lloyd_iterations[k])] =
         double(row.lbfgs_evaluations_to[k]);
 }
@@ -268,16 +273,19 @@ void bm_threads(benchmark::State& state) {
 }
 
 // CGAL's optimizer from the same points, one iteration a call (so no vertex stays frozen),
-// the energy measured by our evaluator between calls and outside the time; until it has run
-// as long as the slower of Lloyd and L-BFGS (1000 iterations at most).
+// the energy and move ratios measured by our evaluator between calls and outside the time;
+// until it has run `budget` seconds or 1000 iterations, or until every move ratio of its points
+// is below `move_ratio_bound`.
 template <class Move>
-std::vector<Sample> cgal_history(const Domain& d, const std::vector<Point>& points, double budget) {
+std::vector<Sample> cgal_history(const Domain& d, const std::vector<Point>& points, double budget,
+                                 double move_ratio_bound = 0) {
   CDT2 cdt2;
   support::build_cdt2(cdt2, d, points);
   std::vector<Sample> history;
   const auto sample = [&](std::size_t iterations, double seconds) {
     const support::Energy e = support::measure(cdt2, d);
-    history.push_back({iterations, seconds, e.energy, e.cells});
+    history.push_back({iterations, seconds, e.energy, e.cells, e.max_move_ratio});
+    return e.max_move_ratio >= move_ratio_bound;  // go on
   };
   sample(0, 0);
   auto t = Clock::now();
@@ -289,9 +297,33 @@ std::vector<Sample> cgal_history(const Domain& d, const std::vector<Point>& poin
     t = Clock::now();
     optimizer(1);
     seconds += since(t);
-    sample(i, seconds);
+    if (!sample(i, seconds)) break;
   }
   return history;
+}
+
+// CGAL's optimizer with a uniform sizing (as shipped, it does not converge: see the Lloyd
+// benchmark) to the paper's 1% stop at N = 1e5 on the unit square, against L-BFGS's time in
+// the same run (lbfgs_stop). Its iterations cost about 0.5 s: 600 s of them at most.
+struct Cgal_stop {
+  std::size_t n = 100000;
+  std::vector<Sample> history;
+} cgal_stop;
+
+void bm_cgal_stop(benchmark::State& state) {
+  const Case c{square};
+  try {
+    const std::vector<Point> points = initial_points(c, cgal_stop.n);
+    for (auto _ : state) {
+      cgal_stop.history = cgal_history<Uniform_move>(domain(c.domain), points, 600, 0.01);
+      state.SetIterationTime(cgal_stop.history.back().seconds);
+    }
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  state.counters["cgal_iterations"] = double(cgal_stop.history.back().evaluation);
+  state.counters["cgal_max_move_ratio"] = cgal_stop.history.back().max_move_ratio;
 }
 
 void bm_cgal_history(benchmark::State& state, const Case& c) {
@@ -349,6 +381,8 @@ int main(int argc, char* argv[]) {
   const std::vector<Case> cases{{square}, {massachusetts}, {"earcut_dude", true}};
   const std::vector<Case> convergence_cases{{square}, {massachusetts}};
   const char* csv = std::getenv("CVT_2_CONVERGENCE_CSV");
+  const char* large = std::getenv("CVT_2_BENCH_LARGE");
+  const bool cgal_to_stop = large && std::string(large) != "0";
   const std::string load_before = load_average();
 
   benchmark::Initialize(&argc, argv);
@@ -379,6 +413,12 @@ int main(int argc, char* argv[]) {
           ->Iterations(1)
           ->UseManualTime()
           ->Unit(benchmark::kMillisecond);
+  if (cgal_to_stop)
+    benchmark::RegisterBenchmark("lbfgs_cgal_to_stop/unit_square", bm_cgal_stop)
+        ->Arg(long(cgal_stop.n))
+        ->Iterations(1)
+        ->UseManualTime()
+        ->Unit(benchmark::kMillisecond);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
 
@@ -393,7 +433,7 @@ int main(int argc, char* argv[]) {
       "before the run: %s; after: %s.\n\n"
       "| domain | N | Lloyd to 1%%: it, evaluations, s | L-BFGS to 1%%: it, evaluations, s | "
       "evaluations Lloyd / L-BFGS | time Lloyd / L-BFGS | E_norm at 1%%: Lloyd / L-BFGS | "
-      "L-BFGS evaluations to E_20 / E_50 / E_100 |\n"
+      "L-BFGS evaluations to E_20 / E_50 / E_100 / E_200 |\n"
       "|---|--:|--:|--:|--:|--:|--:|--:|\n",
       lipschitz_k, load_before.c_str(), load_average().c_str());
   for (const Case& c : cases)
@@ -408,18 +448,19 @@ int main(int argc, char* argv[]) {
                                     (x.stop == "converged" ? "" : " (" + x.stop + ")");
       };
       const auto reached = [&r](int k) {
+        const std::string cap = ">" + std::to_string(4 * lloyd_iterations[number_of_ks - 1]);
         return std::isnan(r.lloyd_energy_after[k]) ? std::string("–")
-               : r.lbfgs_evaluations_to[k] == 0    ? std::string(">400")
+               : r.lbfgs_evaluations_to[k] == 0    ? cap
                                                    : std::to_string(r.lbfgs_evaluations_to[k]);
       };
       const double norm = double(r.cells) / squared_root_mass(c) / hexagon;
-      std::printf("| %s | %ld | %s | %s | %s | %s | %s / %s | %s / %s / %s |\n", c.label().c_str(),
+      std::printf("| %s | %ld | %s | %s | %s | %s | %s / %s | %s / %s / %s / %s |\n", c.label().c_str(),
                   n, run(r.lloyd).c_str(), run(r.lbfgs).c_str(),
                   fmt("%.2f", double(r.lloyd.evaluations) / double(r.lbfgs.evaluations)).c_str(),
                   fmt("%.2f", r.lloyd.seconds / r.lbfgs.seconds).c_str(),
                   fmt("%.4f", r.lloyd.energy * norm).c_str(),
                   fmt("%.4f", r.lbfgs.energy * norm).c_str(), reached(0).c_str(),
-                  reached(1).c_str(), reached(2).c_str());
+                  reached(1).c_str(), reached(2).c_str(), reached(3).c_str());
     }
   if (threads.n > 0)
     std::printf(
@@ -430,6 +471,25 @@ int main(int argc, char* argv[]) {
         threads.n, threads.n, threads.serial.evaluations, threads.parallel.evaluations,
         threads.serial.seconds, threads.parallel.seconds,
         threads.serial.seconds / threads.parallel.seconds, threads.same_bits ? "yes" : "no");
+  if (!cgal_stop.history.empty()) {
+    const Sample& last = cgal_stop.history.back();
+    const auto it = rows.find({Case{square}.label(), cgal_stop.n});
+    const Run lbfgs = it == rows.end() ? Run() : it->second.lbfgs;
+    const Run lloyd = it == rows.end() ? Run() : it->second.lloyd;
+    const bool reached = last.max_move_ratio < 0.01;
+    std::printf(
+        "\nTo the 1%% stop, unit square, N = %zu (CGAL: uniform sizing, one iteration a call, "
+        "move ratios by our evaluator outside its time, 600 s at most):\n\n"
+        "| | iterations | s | / L-BFGS time |\n|---|--:|--:|--:|\n"
+        "| L-BFGS | %zu | %s | 1 |\n| Lloyd | %zu | %s | %s |\n"
+        "| CGAL uniform sizing | %zu%s | %s%.2f | %s%s |\n",
+        cgal_stop.n, lbfgs.iterations, fmt("%.2f", lbfgs.seconds).c_str(), lloyd.iterations,
+        fmt("%.2f", lloyd.seconds).c_str(), fmt("%.1f", lloyd.seconds / lbfgs.seconds).c_str(),
+        last.evaluation,
+        reached ? "" : (" (largest move ratio " + fmt("%.3f", last.max_move_ratio) + ")").c_str(),
+        reached ? "" : "> ", last.seconds, reached ? "" : "> ",
+        fmt("%.0f", last.seconds / lbfgs.seconds).c_str());
+  }
   if (csv) {
     if (!write_convergence(csv, convergence_cases)) {
       std::fprintf(stderr, "lbfgs_benchmark: cannot write %s\n", csv);

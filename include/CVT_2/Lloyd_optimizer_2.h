@@ -15,6 +15,7 @@
 #include <CVT_2/internal/move_generators.h>
 
 #include <boost/container/small_vector.hpp>
+#include <boost/range/irange.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -228,12 +229,8 @@ class Lloyd_optimizer_2 {
   /// \pre the triangulation has not changed since the last `evaluate()`.
   std::size_t move() {
     const std::size_t n = m_moves.size();
-    if (m_order.size() != n) {
-      m_order.resize(n);
-      for (std::size_t k = 0; k < n; ++k) m_order[k] = k;
-    }
     const std::size_t missed = internal::move_free_vertices(
-        m_cdt, m_diagram, m_number_of_threads, m_order,
+        m_cdt, m_diagram, m_number_of_threads, boost::irange(std::size_t(0), n),
         [this](std::size_t k) { return m_moves[k].vertex; },
         [this](std::size_t k) -> const Point_2& { return m_moves[k].centroid; }, 1, m_buffers);
     m_moves.clear();
@@ -314,7 +311,6 @@ class Lloyd_optimizer_2 {
   std::size_t m_number_of_evaluations = 0;
   std::vector<Chunk> m_chunks;
   std::vector<Free_generator> m_moves;
-  std::vector<std::size_t> m_order;  // 0, 1, ...: the moves in the order of the cells
   internal::Move_buffers<CDT> m_buffers;
 };
 

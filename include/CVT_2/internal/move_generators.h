@@ -136,16 +136,16 @@ void move_all_at_once(CDT& cdt, const Diagram& diagram, unsigned threads,
     if (put_back[k]) b.kept_back.push_back(pending[k]);
 }
 
-// Moves each free vertex vertex(i) toward target(i), for i in `order` (the cells' visit order,
-// kind to the cache), in at most `passes` passes. A pass moves every vertex not yet at its
+// Moves each free vertex vertex(i) toward target(i), for i in `order` (a range of numbers in
+// the cells' visit order, kind to the cache), in at most `passes` passes. A pass moves every vertex not yet at its
 // target as far as its star allows (move_free_vertex: no edge is crossed, so no constraint),
 // then edge flips restore the constrained Delaunay property; the next pass goes on from the new
 // stars. When most vertices move, the first pass moves them all at once instead
 // (move_all_at_once) and only those it puts back within their stars. A vertex that reaches its
 // target is at it to the bit. Returns how many did not reach it.
-template <class CDT, class Diagram, class VertexAt, class TargetAt>
+template <class CDT, class Diagram, class OrderRange, class VertexAt, class TargetAt>
 std::size_t move_free_vertices(CDT& cdt, const Diagram& diagram, unsigned threads,
-                               const std::vector<std::size_t>& order, const VertexAt& vertex,
+                               const OrderRange& order, const VertexAt& vertex,
                                const TargetAt& target, std::size_t passes, Move_buffers<CDT>& b) {
   std::vector<std::size_t>& pending = b.pending;
   pending.clear();
