@@ -24,8 +24,9 @@ inline unsigned hardware_threads() { return std::max(1u, std::thread::hardware_c
 template <class Task>
 void run_chunks(std::size_t n, unsigned threads, const Task& task) {
   if (threads == 0) threads = hardware_threads();
-  // A thread costs about as much to start as a chunk to run: each gets four chunks or more.
-  threads = static_cast<unsigned>(std::min<std::size_t>(threads, n / 4));
+  // A thread costs tens of microseconds to start, a chunk of cells hundreds to run, a chunk of
+  // the moves' passes tens: each thread gets two chunks or more.
+  threads = static_cast<unsigned>(std::min<std::size_t>(threads, n / 2));
   if (threads <= 1) {
     for (std::size_t c = 0; c < n; ++c) task(c);
     return;
