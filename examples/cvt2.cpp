@@ -85,7 +85,7 @@ void print_help(std::ostream& os) {
         "Iteration:\n"
         "      --algorithm A      lbfgs | lloyd (default lbfgs: L-BFGS on the CVT energy, which\n"
         "                         starts with and falls back to Lloyd steps; it reaches the\n"
-        "                         stop in 2.4-4.2x fewer evaluations, 1.9-3.0x less time)\n"
+        "                         stop in 2.4-4.2x fewer evaluations, 1.8-3.0x less time)\n"
         "      --iterations N     at most N iterations (default 1000)\n"
         "      --move-ratio P     stop when every move ratio |x - x*| / diameter(cell) < P\n"
         "                         (default 0.01; 0 turns this stop off)\n"
