@@ -32,10 +32,10 @@ namespace CVT_2 {
 /// A step moves the generators in place, as Lloyd iteration does: all at once, those of any
 /// face that this folds within their stars instead (no edge is crossed, so no constraint),
 /// then edge flips restore the constrained Delaunay property, and the generators that have not
-/// arrived go on, for a few passes; the positions reached are the trial point. A backtracking line search
-/// (Armijo's condition on the energy, with the displacement actually done) halves the step
-/// twice at most; if the energy still does not decrease enough, the generators go back to where
-/// the step started and take a Lloyd step, and the memory is cleared. Pairs with
+/// arrived go on, for a few passes; the positions reached are the trial point. A backtracking
+/// line search (Armijo's condition on the energy, with the displacement actually done) halves
+/// the step twice at most; if the energy still does not decrease enough, the generators go
+/// back to where the step started and take a Lloyd step, and the memory is cleared. Pairs with
 /// \f$s \cdot y \le 0\f$ are skipped. With an exact quadrature (`Exact_quadrature_2`, uniform
 /// density) the energy never rises, unless a generator cannot get back to where a failed step
 /// started (the tests have not met one).
