@@ -38,7 +38,7 @@ void push_star_edges(const CDT& cdt, typename CDT::Vertex_handle v,
   do {
     const typename CDT::Face_handle f = fc;
     for (int j = 0; j < 3; ++j)
-      stack.push_back({f, j, f->vertex(CDT::ccw(j)), f->vertex(CDT::cw(j))});
+      stack.push_back(Flip_candidate<CDT>::of(f, j));
   } while (++fc != end);
 }
 
@@ -99,7 +99,7 @@ void move_all_at_once(CDT& cdt, const Diagram& diagram, unsigned threads,
           }
           for (int i = 0; i < 3; ++i)
             if (tests_edge(cdt, f, i, less_xy) && cdt.is_flipable(f, i))
-              stack.push_back({f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))});
+              stack.push_back(Flip_candidate<CDT>::of(f, i));
         });
       },
       threads);
@@ -137,12 +137,12 @@ void move_all_at_once(CDT& cdt, const Diagram& diagram, unsigned threads,
 }
 
 // Moves each free vertex vertex(i) toward target(i), for i in `order` (a range of numbers in
-// the cells' visit order, kind to the cache), in at most `passes` passes. A pass moves every vertex not yet at its
-// target as far as its star allows (move_free_vertex: no edge is crossed, so no constraint),
-// then edge flips restore the constrained Delaunay property; the next pass goes on from the new
-// stars. When most vertices move, the first pass moves them all at once instead
-// (move_all_at_once) and only those it puts back within their stars. A vertex that reaches its
-// target is at it to the bit. Returns how many did not reach it.
+// the cells' visit order, kind to the cache), in at most `passes` passes. A pass moves every
+// vertex not yet at its target as far as its star allows (move_free_vertex: no edge is crossed,
+// so no constraint), then edge flips restore the constrained Delaunay property; the next pass
+// goes on from the new stars. When most vertices move, the first pass moves them all at once
+// instead (move_all_at_once) and only those it puts back within their stars. A vertex that
+// reaches its target is at it to the bit. Returns how many did not reach it.
 template <class CDT, class Diagram, class OrderRange, class VertexAt, class TargetAt>
 std::size_t move_free_vertices(CDT& cdt, const Diagram& diagram, unsigned threads,
                                const OrderRange& order, const VertexAt& vertex,
@@ -161,7 +161,7 @@ std::size_t move_free_vertices(CDT& cdt, const Diagram& diagram, unsigned thread
     }
     // The stars are far apart in memory: each is prefetched in steps ahead of its move (its
     // vertex, the vertex's face, that face's neighbors, theirs).
-    std::size_t kept = 0, moved_here = 0;
+    std::size_t kept = 0;
     const std::size_t n = pending.size(), d = 6;
     for (std::size_t k = 0; k < n; ++k) {
       if (k + 4 * d < n) prefetch(&*vertex(pending[k + 4 * d]));
@@ -184,7 +184,6 @@ std::size_t move_free_vertices(CDT& cdt, const Diagram& diagram, unsigned thread
       } else if (done > 0) {
         b.moved.push_back(i);
       }
-      moved_here += done > 0;
       if (done < 1) pending[kept++] = i;
     }
     pending.resize(kept);
@@ -192,7 +191,7 @@ std::size_t move_free_vertices(CDT& cdt, const Diagram& diagram, unsigned thread
       lawson_flips(cdt, b.stack);
       continue;
     }
-    if (moved_here == 0) break;  // every remaining vertex is stuck where it is
+    if (b.moved.empty()) break;  // every remaining vertex is stuck where it is
     if (b.moved.size() * 8 > order.size()) {
       restore_delaunay(cdt, b.stack);  // most vertices moved: each edge of the domain once
     } else {

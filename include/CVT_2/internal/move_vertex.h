@@ -24,6 +24,11 @@ struct Flip_candidate {
   typename CDT::Face_handle f;
   int i;
   typename CDT::Vertex_handle a, b;
+
+  // The edge i of f, as it is now.
+  static Flip_candidate of(typename CDT::Face_handle f, int i) {
+    return {f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))};
+  }
 };
 
 // Lawson's flips: an edge on the stack that is not constrained and fails the (symbolically
@@ -32,9 +37,6 @@ struct Flip_candidate {
 template <class CDT>
 void lawson_flips(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
   using Face_handle = typename CDT::Face_handle;
-  const auto candidate = [](Face_handle f, int i) {
-    return Flip_candidate<CDT>{f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))};
-  };
   while (!stack.empty()) {
     Flip_candidate<CDT> e = stack.back();
     stack.pop_back();
@@ -48,8 +50,8 @@ void lawson_flips(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
     // The two faces now share the new edge; their four other edges are examined.
     for (const Face_handle h : {f, g}) {
       const int k = h->index(h == f ? g : f);
-      stack.push_back(candidate(h, CDT::ccw(k)));
-      stack.push_back(candidate(h, CDT::cw(k)));
+      stack.push_back(Flip_candidate<CDT>::of(h, CDT::ccw(k)));
+      stack.push_back(Flip_candidate<CDT>::of(h, CDT::cw(k)));
     }
   }
 }
@@ -106,7 +108,7 @@ void restore_delaunay(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
     if (!f->is_inside_domain()) return;
     for (int i = 0; i < 3; ++i) {
       if (!tests_edge(cdt, f, i, less_xy) || !cdt.is_flipable(f, i)) continue;
-      stack.assign(1, Flip_candidate<CDT>{f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))});
+      stack.assign(1, Flip_candidate<CDT>::of(f, i));
       lawson_flips(cdt, stack);
     }
   });
