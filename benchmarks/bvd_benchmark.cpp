@@ -1,6 +1,7 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // bvd_benchmark: our BVD and CGAL's Constrained_voronoi_diagram_2, timed against a CDT build.
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/internal/Face_chunks.h>
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/mark_domain_2.h>
@@ -130,10 +131,15 @@ void bm_bvd(benchmark::State& state, const std::string& file) {
     cells.push_back(since(t));
 
     t = Clock::now();  // the same cells on two threads, in the chunks Lloyd iteration uses
-    std::vector<std::size_t> chunk_totals(bvd.number_of_chunks(), 0);
-    bvd.for_each_cell_in_chunks(
-        [&](std::size_t c, Bvd::Vertex_handle, const std::vector<Bvd::Cell_vertex>& cell) {
-          chunk_totals[c] += cell.size();
+    const CVT_2::internal::Face_chunks<CDT> chunks(cdt);
+    std::vector<std::size_t> chunk_totals(chunks.size(), 0);
+    chunks.for_each(
+        [&](std::size_t c, auto first, auto last) {
+          CVT_2::internal::for_each_cell_in_faces(
+              bvd, first, last,
+              [&](Bvd::Vertex_handle, const std::vector<Bvd::Cell_vertex>& cell) {
+                chunk_totals[c] += cell.size();
+              });
         },
         2);
     benchmark::DoNotOptimize(chunk_totals.data());

@@ -71,7 +71,7 @@ const Sizing& sizing(const std::string& name) {
 
 // f(np) with the case's density as named parameters: none (uniform) or sizing_field(mu).
 template <class F>
-CVT_2::Lloyd_result with_density(const Case& c, F f) {
+CVT_2::Optimization_result with_density(const Case& c, F f) {
   if (c.adaptive) return f(CVT_2::parameters::sizing_field(sizing(c.domain)));
   return f(CVT_2::parameters::default_values());
 }
@@ -143,7 +143,7 @@ struct Threads {
   bool same_bits = false;
 } threads;
 
-using Callback = std::function<bool(const CVT_2::Lloyd_result&)>;
+using Callback = std::function<bool(const CVT_2::Optimization_result&)>;
 
 // Runs `optimize` on the case's points to the 1% stop (1000 iterations at most) with
 // `number_of_threads` threads (0: one per core), recording the energy after each step.
@@ -153,11 +153,11 @@ Run run_to_stop(const Case& c, std::size_t n, Optimize optimize, std::size_t& ce
   CDT cdt;
   support::build_ours(cdt, domain(c.domain), initial_points(c, n));
   Run run;
-  const Callback record = [&run](const CVT_2::Lloyd_result& r) {
+  const Callback record = [&run](const CVT_2::Optimization_result& r) {
     run.history.push_back({r.number_of_evaluations, r.seconds, r.energy, 0});
     return true;
   };
-  const CVT_2::Lloyd_result r = with_density(c, [&](const auto& np) {
+  const CVT_2::Optimization_result r = with_density(c, [&](const auto& np) {
     return optimize(cdt, np.number_of_threads(number_of_threads).callback(record));
   });
   run.history.push_back({r.number_of_evaluations, r.seconds, r.energy, 0});  // the callback
@@ -224,7 +224,7 @@ void bm_energy(benchmark::State& state, const Case& c) {
       support::build_ours(cdt, d, points);
       std::size_t* reached = row.lbfgs_evaluations_to;
       const double* targets = row.lloyd_energy_after;
-      const auto record = [&](const CVT_2::Lloyd_result& r) {
+      const auto record = [&](const CVT_2::Optimization_result& r) {
         for (int k = 0; k < number_of_ks; ++k)
           if (reached[k] == 0 && r.energy <= targets[k]) reached[k] = r.number_of_evaluations;
         const int last = number_of_ks - 1;

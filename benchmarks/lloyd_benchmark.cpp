@@ -168,7 +168,7 @@ void bm_iteration(benchmark::State& state, const std::string& name) {
     {
       CDT cdt;
       build_ours(cdt, d, points);
-      const CVT_2::Lloyd_result res = CVT_2::lloyd_optimize_2(
+      const CVT_2::Optimization_result res = CVT_2::lloyd_optimize_2(
           cdt, CVT_2::parameters::number_of_iterations(k).move_ratio_bound(0));
       ours.push_back(res.seconds / double(res.number_of_iterations + 1));
       r.ours_k = measure(cdt, d);
@@ -251,7 +251,7 @@ void bm_converge(benchmark::State& state, const std::string& name) {
     {
       CDT cdt;
       build_ours(cdt, d, points);
-      const CVT_2::Lloyd_result res =
+      const CVT_2::Optimization_result res =
           n >= 100000 ? CVT_2::lloyd_optimize_2(cdt, CVT_2::parameters::number_of_iterations(300))
                       : CVT_2::lloyd_optimize_2(cdt);
       r.ours_conv_it = res.number_of_iterations;
@@ -314,7 +314,7 @@ void bm_figure10(benchmark::State& state) {
     const auto run = [&](auto optimize, const auto& np, double& time, std::size_t& iterations) {
       CDT cdt;
       build_ours(cdt, d, points);
-      const CVT_2::Lloyd_result r = optimize(cdt, np);
+      const CVT_2::Optimization_result r = optimize(cdt, np);
       time = r.seconds;
       iterations = r.number_of_iterations;
       seconds += r.seconds;

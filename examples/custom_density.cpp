@@ -44,7 +44,7 @@ int main(int argc, char* argv[]) {
     CVT_2::insert_generators_2(cdt, CVT_2::random_points_in_domain_2(
         cdt, n, CVT_2::parameters::density(start_density).random_seed(1)));
 
-    const CVT_2::Lloyd_result r = CVT_2::lloyd_optimize_2(
+    const CVT_2::Optimization_result r = CVT_2::lloyd_optimize_2(
         cdt, CVT_2::parameters::density(rho).number_of_iterations(iterations));
 
     std::cout << "custom_density: " << n << " generators, " << r.number_of_iterations

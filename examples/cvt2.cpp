@@ -337,7 +337,7 @@ extern "C" void on_interrupt(int) {
 class Progress {
  public:
   explicit Progress(bool quiet) : m_quiet(quiet), m_terminal(isatty(2)) {}
-  bool operator()(const CVT_2::Lloyd_result& r) {
+  bool operator()(const CVT_2::Optimization_result& r) {
     if (!m_quiet && (m_terminal || r.number_of_iterations % 10 == 0)) {
       std::ostringstream line;
       line << "cvt2: iteration " << r.number_of_iterations << "  energy " << std::setprecision(8)
@@ -360,9 +360,9 @@ class Progress {
 };
 
 // The optimization, with progress on standard error; Ctrl-C ends it early.
-CVT_2::Lloyd_result optimize(CDT& cdt, const Options& o, const std::optional<Sizing>& sizing) {
+CVT_2::Optimization_result optimize(CDT& cdt, const Options& o, const std::optional<Sizing>& sizing) {
   Progress progress(o.quiet);
-  const std::function<bool(const CVT_2::Lloyd_result&)> callback = std::ref(progress);
+  const std::function<bool(const CVT_2::Optimization_result&)> callback = std::ref(progress);
   const auto np = CVT_2::parameters::number_of_iterations(o.iterations)
                       .move_ratio_bound(o.move_ratio)
                       .maximum_running_time(o.time_limit)
@@ -372,7 +372,7 @@ CVT_2::Lloyd_result optimize(CDT& cdt, const Options& o, const std::optional<Siz
   };
   std::signal(SIGINT, on_interrupt);
   try {
-    const CVT_2::Lloyd_result r = sizing ? run(cdt, np.sizing_field(*sizing)) : run(cdt, np);
+    const CVT_2::Optimization_result r = sizing ? run(cdt, np.sizing_field(*sizing)) : run(cdt, np);
     progress.finish();
     std::signal(SIGINT, SIG_DFL);
     return r;
@@ -382,7 +382,7 @@ CVT_2::Lloyd_result optimize(CDT& cdt, const Options& o, const std::optional<Siz
   }
 }
 
-const char* stop_name(CVT_2::Lloyd_stop_reason s) {
+const char* stop_name(CVT_2::Stop_reason s) {
   switch (s) {
     case CVT_2::CONVERGED: return "converged";
     case CVT_2::MAX_ITERATIONS_REACHED: return "max_iterations";
@@ -530,7 +530,7 @@ void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd) {
   out.commit();
 }
 
-void print_summary(const Options& o, const CVT_2::Lloyd_result& r, const BVD& bvd, double area) {
+void print_summary(const Options& o, const CVT_2::Optimization_result& r, const BVD& bvd, double area) {
   std::size_t generators = 0;
   bvd.for_each_cell([&](CDT::Vertex_handle, const auto&) { ++generators; });
   // E N / A^2 over its value for the regular hexagonal tiling, 5 / (18 sqrt 3) (Gersho).
@@ -556,7 +556,7 @@ int run(const Options& o) {
   const std::size_t n =
       o.points ? *o.points : (domain.free_vertices == 0 && o.points_in.empty() ? 1000 : 0);
   insert_random_points(n, o, sizing, cdt);
-  const CVT_2::Lloyd_result r = optimize(cdt, o, sizing);
+  const CVT_2::Optimization_result r = optimize(cdt, o, sizing);
   const BVD bvd(cdt);
   write_outputs(o, cdt, bvd);
   print_summary(o, r, bvd, domain_area(cdt));

@@ -40,7 +40,7 @@ int main(int argc, char* argv[]) {
         cdt, n, CVT_2::parameters::density(start_density).random_seed(1)));
 
     // sizing_field(mu) iterates with the density 1/mu^4, integrated by the midpoint rule.
-    const CVT_2::Lloyd_result r = CVT_2::lloyd_optimize_2(
+    const CVT_2::Optimization_result r = CVT_2::lloyd_optimize_2(
         cdt, CVT_2::parameters::sizing_field(mu).number_of_iterations(iterations));
 
     std::cout << "lloyd_adaptive: " << n << " generators, k = " << k << ", "

@@ -38,7 +38,7 @@ int main(int argc, char* argv[]) {
       CVT_2::insert_generators_2(
           cdt, CVT_2::random_points_in_domain_2(cdt, n, CVT_2::parameters::random_seed(1)));
       const auto np = CVT_2::parameters::number_of_iterations(iterations);
-      const CVT_2::Lloyd_result r = adaptive ? CVT_2::lloyd_optimize_2(cdt, np.sizing_field(mu))
+      const CVT_2::Optimization_result r = adaptive ? CVT_2::lloyd_optimize_2(cdt, np.sizing_field(mu))
                                              : CVT_2::lloyd_optimize_2(cdt, np);
 
       const std::string svg = prefix + (adaptive ? "_adaptive.svg" : "_uniform.svg");

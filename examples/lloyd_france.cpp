@@ -32,13 +32,13 @@ int main(int argc, char* argv[]) {
         cdt, CVT_2::random_points_in_domain_2(cdt, n, CVT_2::parameters::random_seed(1)));
 
     // Called after each evaluation with the figures so far; returning false would stop.
-    const auto progress = [](const CVT_2::Lloyd_result& r) {
+    const auto progress = [](const CVT_2::Optimization_result& r) {
       if (r.number_of_iterations % 25 == 0)
         std::cout << "  iteration " << r.number_of_iterations << ": energy " << r.energy
                   << ", largest move ratio " << r.max_move_ratio << '\n';
       return true;
     };
-    const CVT_2::Lloyd_result r = CVT_2::lloyd_optimize_2(
+    const CVT_2::Optimization_result r = CVT_2::lloyd_optimize_2(
         cdt, CVT_2::parameters::number_of_iterations(iterations).callback(progress));
 
     std::cout << "lloyd_france: " << n << " generators, " << r.number_of_iterations

@@ -31,7 +31,7 @@ int main(int argc, char* argv[]) {
         cdt, CVT_2::random_points_in_domain_2(cdt, n, CVT_2::parameters::random_seed(1)));
 
     // Uniform density (the default), so the cells are integrated exactly; the paper's stop.
-    const CVT_2::Lloyd_result r = CVT_2::lloyd_optimize_2(
+    const CVT_2::Optimization_result r = CVT_2::lloyd_optimize_2(
         cdt, CVT_2::parameters::number_of_iterations(iterations).move_ratio_bound(0.01));
 
     std::cout << "lloyd_uniform: " << n << " generators, " << r.number_of_iterations

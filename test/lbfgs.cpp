@@ -4,6 +4,7 @@
 
 #include <CVT_2/Exact_quadrature_2.h>
 #include <CVT_2/Lbfgs_optimizer_2.h>
+#include <CVT_2/internal/Face_chunks.h>
 #include <CVT_2/internal/move_generators.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
@@ -129,7 +130,7 @@ TEST_CASE("L-BFGS stops by Lloyd's rule: an independent Lloyd evaluation of the 
   load_domain(d, file);
   if (std::string(file) != "four_clusters.poly")
     CVT_2::insert_generators_2(d.cdt, random_generators(d, 1000, 2));
-  const CVT_2::Lloyd_result r = CVT_2::lbfgs_optimize_2(d.cdt);
+  const CVT_2::Optimization_result r = CVT_2::lbfgs_optimize_2(d.cdt);
   CHECK(r.stop_reason == CVT_2::CONVERGED);
   CHECK(r.max_move_ratio < 0.01);
   REQUIRE(r.max_move_ratio_history.size() == r.number_of_iterations + 1);
@@ -154,7 +155,7 @@ TEST_CASE("L-BFGS stops after the iterations asked for, or when the callback say
   CHECK(r.energy_history.size() == 8);
   const auto r2 = CVT_2::lbfgs_optimize_2(
       d.cdt, CVT_2::parameters::callback(
-                 [](const CVT_2::Lloyd_result& p) { return p.number_of_iterations < 3; }));
+                 [](const CVT_2::Optimization_result& p) { return p.number_of_iterations < 3; }));
   CHECK(r2.stop_reason == CVT_2::CALLBACK_REQUESTED_STOP);
   CHECK(r2.number_of_iterations == 3);
 }
@@ -218,7 +219,7 @@ TEST_CASE("L-BFGS runs twice on the same input give the same bits", "[lbfgs]") {
     CVT_2::insert_generators_2(d.cdt, random_generators(d, 30000, 4));
     CVT_2::Lbfgs_optimizer_2<Cdt> lbfgs(d.cdt);
     lbfgs.set_number_of_threads(threads);
-    REQUIRE(lbfgs.diagram().number_of_chunks() >= 12);
+    REQUIRE(CVT_2::internal::Face_chunks<Cdt>(d.cdt).size() >= 12);
     std::vector<double> energies{lbfgs.evaluate(10).energy};
     for (int it = 0; it < 6; ++it) energies.push_back(lbfgs.step(10).energy);
     return std::make_pair(energies, vertex_points(d.cdt));
@@ -331,10 +332,10 @@ TEST_CASE("generators moved to targets beyond their stars and back come back to 
     beyond += f->vertex(0) != vertices[i] && f->vertex(1) != vertices[i] && f->vertex(2) != vertices[i];
   }
   CHECK(beyond > 50);
-  const CVT_2::Bounded_voronoi_diagram_2<Cdt> diagram(d.cdt);  // its chunks of faces
-  CHECK(CVT_2::internal::move_free_vertices(d.cdt, diagram, 0, vertices, targets, order, 8, stack) == 0);
+  const CVT_2::internal::Face_chunks<Cdt> chunks(d.cdt);
+  CHECK(CVT_2::internal::move_free_vertices(d.cdt, chunks, 0, vertices, targets, order, 8, stack) == 0);
   CHECK(delaunay());
-  CHECK(CVT_2::internal::move_free_vertices(d.cdt, diagram, 0, vertices, start, order, 8, stack) == 0);
+  CHECK(CVT_2::internal::move_free_vertices(d.cdt, chunks, 0, vertices, start, order, 8, stack) == 0);
   CHECK(delaunay());
   std::size_t different = 0;
   for (std::size_t i = 0; i < vertices.size(); ++i) different += vertices[i]->point() != start[i];
@@ -404,7 +405,7 @@ TEST_CASE("degenerate input: two generators sent to the same point, or to each o
            : std::vector<Point>{Point(0.45, 0.5), Point(0.45, 0.5)};
   CVT_2::internal::Move_buffers<Cdt> stack;
   const std::size_t missed =
-      CVT_2::internal::move_free_vertices(cdt, CVT_2::Bounded_voronoi_diagram_2<Cdt>(cdt), 0,
+      CVT_2::internal::move_free_vertices(cdt, CVT_2::internal::Face_chunks<Cdt>(cdt), 0,
                                           vertices, targets, {0, 1}, 20, stack);
   CHECK(missed >= 1);
   CHECK(cdt.number_of_vertices() == n);

@@ -6,6 +6,7 @@
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
+#include <CVT_2/internal/Face_chunks.h>
 #include <CVT_2/random_points_in_domain_2.h>
 
 #include <catch2/catch.hpp>
@@ -138,7 +139,7 @@ TEST_CASE("the stopping rule stops where it should, and the result describes the
           "[lloyd]") {
   Domain d;
   load_domain(d, "four_clusters.poly");  // the paper's Fig. 7: 200 clustered generators
-  const CVT_2::Lloyd_result r = CVT_2::lloyd_optimize_2(d.cdt);
+  const CVT_2::Optimization_result r = CVT_2::lloyd_optimize_2(d.cdt);
   CHECK(r.stop_reason == CVT_2::CONVERGED);
   CHECK(r.max_move_ratio < 0.01);
   REQUIRE(r.max_move_ratio_history.size() == r.number_of_iterations + 1);
@@ -163,7 +164,7 @@ TEST_CASE("the stopping rule stops where it should, and the result describes the
   Domain d3;
   load_domain(d3, "four_clusters.poly");
   const auto r3 = CVT_2::lloyd_optimize_2(
-      d3.cdt, CVT_2::parameters::callback([](const CVT_2::Lloyd_result& p) { return p.number_of_iterations < 3; }));
+      d3.cdt, CVT_2::parameters::callback([](const CVT_2::Optimization_result& p) { return p.number_of_iterations < 3; }));
   CHECK(r3.stop_reason == CVT_2::CALLBACK_REQUESTED_STOP);
   CHECK(std::string(CVT_2::to_string(r3.stop_reason)) == "callback");
   CHECK(r3.number_of_iterations == 3);
@@ -319,7 +320,7 @@ TEST_CASE("Lloyd gives the same bits whatever the number of threads and from run
     add_random_generators(d, 30000, 4);
     CVT_2::Lloyd_optimizer_2<Cdt, decltype(rho)> lloyd(d.cdt, rho);
     lloyd.set_number_of_threads(threads);
-    REQUIRE(lloyd.diagram().number_of_chunks() >= 12);  // enough for 3 threads to start
+    REQUIRE(CVT_2::internal::Face_chunks<Cdt>(d.cdt).size() >= 12);  // enough for 3 threads
     std::vector<double> e;
     for (int it = 0; it < 4; ++it) {
       const auto& ev = lloyd.evaluate(10);
@@ -414,7 +415,7 @@ TEST_CASE("a cell whose mass underflows stays put; Lloyd and L-BFGS go on around
   insert_random_points(d, 100, 3);
   CVT_2::insert_generators_2(d.cdt, extra);
   const auto np = CVT_2::parameters::number_of_iterations(40).move_ratio_bound(0);
-  const CVT_2::Lloyd_result r = lbfgs ? CVT_2::lbfgs_optimize_2(d.cdt, np) : CVT_2::lloyd_optimize_2(d.cdt, np);
+  const CVT_2::Optimization_result r = lbfgs ? CVT_2::lbfgs_optimize_2(d.cdt, np) : CVT_2::lloyd_optimize_2(d.cdt, np);
   CHECK(r.number_of_iterations == 40);
   CHECK(std::isfinite(r.energy));
   CHECK(r.energy > 0);

@@ -13,6 +13,7 @@
 #include <CVT_2/Concepts/BvdFaceBase_2.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/internal/to_string.h>
+#include <CVT_2/internal/valid_point.h>
 #include <CVT_2/mark_domain_2.h>
 
 #include <boost/container/small_vector.hpp>
@@ -310,7 +311,7 @@ class Boundary_lipschitz_sizing_2 {
                internal::to_string(s.target());
       };
       if (!internal::is_valid_point(s.source()) || !internal::is_valid_point(s.target()))
-        throw Domain_error(where() + " is not finite or exceeds 1e300 in magnitude", i);
+        throw Domain_error(internal::invalid_point_message(where()), i);
       const FT si = size ? *size : CGAL::sqrt(s.squared_length());
       if (!is_positive_finite(si))
         throw Domain_error(where() + " has length " + internal::number_to_string(si) +

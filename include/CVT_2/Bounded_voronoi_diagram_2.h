@@ -11,8 +11,7 @@
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/mark_domain_2.h>
 #include <CVT_2/internal/construct_cell.h>
-#include <CVT_2/internal/prefetch.h>
-#include <CVT_2/internal/run_chunks.h>
+#include <CVT_2/internal/for_each_cell_in_faces.h>
 #include <CVT_2/internal/tag_blind_faces.h>
 
 #include <CGAL/Polygon_2.h>
@@ -144,13 +143,7 @@ class Bounded_voronoi_diagram_2 {
   }
 
   /// Tags the blind faces again, after the triangulation or its domain changed.
-  void update() {
-    m_chunks.clear();
-    std::size_t i = 0;
-    m_number_of_blinded_faces = internal::tag_blind_faces(m_cdt, m_traits, [&](auto f) {
-      if (i++ % chunk_size == 0) m_chunks.push_back(f);
-    });
-  }
+  void update() { m_number_of_blinded_faces = internal::tag_blind_faces(m_cdt, m_traits); }
 
   const CDT& triangulation() const { return m_cdt; }         ///< the triangulation
   const Traits& geom_traits() const { return m_traits; }     ///< the traits
@@ -172,53 +165,12 @@ class Bounded_voronoi_diagram_2 {
 
   /// Calls `visit(v, cell)` for every vertex `v` that has a cell, with its cell (the vector is
   /// reused between calls). The vertices come in the order of their incident faces in memory,
-  /// which is much kinder to the cache than the vertices' own order: building all cells is
-  /// bound by the first access to each vertex's faces.
+  /// which is much kinder to the cache than the vertices' own order.
   template <class Visitor>
   void for_each_cell(Visitor visit) const {
     if (m_cdt.dimension() < 2) return;
-    visit_cells(m_cdt.all_faces_begin(), m_cdt.all_faces_end(),
-                [&](Vertex_handle v, const std::vector<Cell_vertex>& c) { visit(v, c); });
-  }
-
-  /// The number of chunks of `for_each_cell_in_chunks()`: runs of `chunk_size` faces in memory
-  /// order, as they were at the last `update()`.
-  std::size_t number_of_chunks() const { return m_chunks.size(); }
-
-  /// Faces a chunk; a constant, so that chunks, and any sums made chunk by chunk, do not depend
-  /// on the number of threads.
-  static constexpr std::size_t chunk_size = 4096;
-
-  /// `for_each_cell()` in chunks on several threads: calls `visit(chunk, v, cell)` for every
-  /// vertex `v` that has a cell, in the order of `for_each_cell()` within each chunk, chunks on
-  /// `threads` threads at once (0: one per core; 1: in order, in this thread). `visit` must
-  /// allow concurrent calls for different chunks; writing to an output of its own chunk is
-  /// enough, and then the outputs are the same whatever the number of threads. If `visit`
-  /// throws, the exception of the lowest chunk that threw is rethrown.
-  /// \pre the triangulation has not changed since the last `update()`.
-  template <class Visitor>
-  void for_each_cell_in_chunks(Visitor visit, unsigned threads = 0) const {
-    for_each_face_chunk(
-        [&](std::size_t chunk, auto first, auto last) {
-          visit_cells(first, last, [&](Vertex_handle v, const std::vector<Cell_vertex>& c) {
-            visit(chunk, v, c);
-          });
-        },
-        threads);
-  }
-
-  /// Calls `visit(chunk, first, last)` for every chunk of `for_each_cell_in_chunks()`, with the
-  /// range of its faces (`All_faces_iterator`s, in memory order, infinite faces included), on
-  /// `threads` threads likewise. `visit` must allow concurrent calls for different chunks.
-  /// \pre no face has been created or deleted since the last `update()` (moving vertices and
-  ///      flipping edges create and delete none).
-  template <class Visitor>
-  void for_each_face_chunk(Visitor visit, unsigned threads = 0) const {
-    if (m_cdt.dimension() < 2) return;
-    internal::run_chunks(m_chunks.size(), threads, [&](std::size_t chunk) {
-      const auto last = chunk + 1 < m_chunks.size() ? m_chunks[chunk + 1] : m_cdt.all_faces_end();
-      visit(chunk, m_chunks[chunk], last);
-    });
+    internal::for_each_cell_in_faces(*this, m_cdt.all_faces_begin(), m_cdt.all_faces_end(),
+                                     visit);
   }
 
   /// A circulator over the cell of `v`, counterclockwise; equal to `nullptr` if `v` has no cell.
@@ -239,44 +191,9 @@ class Bounded_voronoi_diagram_2 {
   }
 
  private:
-  // The cells of the vertices v with v->face() in [first, last), each once, the fans of the
-  // faces ahead fetched in advance in two steps: the neighbors of the face
-  // `prefetch_distance` ahead, then, halfway, their neighbors and vertices.
-  template <class Face_iterator, class Visitor>
-  void visit_cells(Face_iterator first, Face_iterator last, const Visitor& visit) const {
-    std::vector<Cell_vertex> c;
-    auto ahead = first, halfway = first;
-    for (int i = 0; i < prefetch_distance && ahead != last; ++i) ++ahead;
-    for (int i = 0; i < prefetch_distance / 2 && halfway != last; ++i) ++halfway;
-    for (auto f = first; f != last; ++f) {
-      if (ahead != last) {
-        for (int i = 0; i < 3; ++i) internal::prefetch(&*ahead->neighbor(i));
-        ++ahead;
-      }
-      if (halfway != last) {
-        for (int i = 0; i < 3; ++i) {
-          const auto g = halfway->neighbor(i);
-          for (int j = 0; j < 3; ++j) {
-            internal::prefetch(&*g->neighbor(j));
-            internal::prefetch(&*g->vertex(j));
-          }
-        }
-        ++halfway;
-      }
-      for (int i = 0; i < 3; ++i) {
-        const Vertex_handle v = f->vertex(i);
-        if (v->face() != f || m_cdt.is_infinite(v)) continue;  // each vertex once, at its face
-        cell(v, c);
-        if (!c.empty()) visit(v, static_cast<const std::vector<Cell_vertex>&>(c));
-      }
-    }
-  }
-
-  static constexpr int prefetch_distance = 16;
   const CDT& m_cdt;
   Traits m_traits;
   std::size_t m_number_of_blinded_faces = 0;
-  std::vector<typename CDT::All_faces_iterator> m_chunks;  // the first face of each chunk
 };
 
 }  // namespace CVT_2

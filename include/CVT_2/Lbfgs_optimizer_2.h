@@ -4,6 +4,7 @@
 #define CVT_2_LBFGS_OPTIMIZER_2_H
 
 #include <CVT_2/Lloyd_optimizer_2.h>
+#include <CVT_2/internal/Lbfgs_history.h>
 #include <CVT_2/internal/move_generators.h>
 
 #include <algorithm>
@@ -15,6 +16,11 @@
 #include <vector>
 
 namespace CVT_2 {
+namespace internal {
+
+constexpr std::size_t default_lbfgs_memory = 7;  // curvature pairs kept
+
+}  // namespace internal
 
 /// \ingroup PkgCvt2Ref
 /// L-BFGS on the CVT energy (Liu, Wang, Lévy, Yan, Lu, Yang 2009, *On centroidal Voronoi
@@ -45,7 +51,7 @@ namespace CVT_2 {
 /// resolution rises: the line search compares computed energies, and when their error hides
 /// the decrease it fails and the step falls back to a Lloyd step. So the iteration goes on
 /// where a line search on approximate energies gets stuck, at the cost of the failed trials
-/// (`number_of_fallbacks()`: one step of 73 on the world map with the paper's sizing field).
+/// (`number_of_fallbacks()` counts them).
 ///
 /// The free generators are numbered once, in the order of the first evaluation, so that the
 /// vectors, and so the result, do not depend on the order in which cells are visited: the same
@@ -55,9 +61,11 @@ namespace CVT_2 {
 /// \tparam Density a model of `DensityFunction_2`.
 /// \tparam Quadrature a model of `CellQuadrature_2`; by default exact formulas for a uniform
 ///         density, the paper's midpoint rule otherwise.
+/// \tparam Traits a model of `BvdTraits_2` for the diagram; by default `Bvd_traits_2`.
 /// \sa `lbfgs_optimize_2()`, which drives it with the paper's stopping rule; `Lloyd_optimizer_2`.
 template <class CDT, class Density = Uniform_density_2<typename CDT::Geom_traits>,
-          class Quadrature = internal::Default_quadrature<typename CDT::Geom_traits, Density>>
+          class Quadrature = internal::Default_quadrature<typename CDT::Geom_traits, Density>,
+          class Traits = Bvd_traits_2<typename CDT::Geom_traits>>
 class Lbfgs_optimizer_2 {
  public:
   using Triangulation = CDT;                          ///< the triangulation type
@@ -68,15 +76,17 @@ class Lbfgs_optimizer_2 {
   using Density_function = Density;                   ///< the density policy
   using Cell_quadrature = Quadrature;                 ///< the quadrature policy
   /// the evaluator of energy, centroids and move ratios
-  using Lloyd_optimizer = Lloyd_optimizer_2<CDT, Density, Quadrature>;
+  using Lloyd_optimizer = Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>;
   using Evaluation = typename Lloyd_optimizer::Evaluation;  ///< what an evaluation found
   using Diagram = typename Lloyd_optimizer::Diagram;        ///< the diagram it iterates on
 
   /// Prepares the optimization of `cdt` with at most `memory` curvature pairs (0: every step is
   /// a Lloyd step). Nothing is computed yet.
   explicit Lbfgs_optimizer_2(CDT& cdt, const Density& rho = Density(),
-                             const Quadrature& quadrature = Quadrature(), std::size_t memory = 7)
-      : m_cdt(cdt), m_lloyd(cdt, rho, quadrature), m_memory(memory) {}
+                             const Quadrature& quadrature = Quadrature(),
+                             std::size_t memory = internal::default_lbfgs_memory,
+                             const Traits& traits = Traits())
+      : m_cdt(cdt), m_lloyd(cdt, rho, quadrature, traits), m_history(memory) {}
 
   /// Evaluates the generators where they are (diagram, energy, centroids, move ratios, and so
   /// the gradient), with `resolution` sub-triangles a cell. The memory is kept if they are where
@@ -88,7 +98,7 @@ class Lbfgs_optimizer_2 {
       number_generators();
       gather(m_trial);
     } else if (m_has_current && m_trial.points != m_current.points) {
-      clear_memory();
+      m_history.clear();
     }
     std::swap(m_current, m_trial);
     m_has_current = true;
@@ -104,18 +114,15 @@ class Lbfgs_optimizer_2 {
     CGAL_precondition(m_has_current);
     ++m_steps;
     if (m_vertices.empty()) return evaluate(resolution);
-    if (m_pairs == 0 || !quasi_newton_direction()) {
-      clear_memory();
+    const bool descent =
+        m_history.size() > 0 && m_history.direction(m_current.g, m_current.h, m_direction);
+    if (!descent) {
+      m_history.clear();
       lloyd_step(resolution);
     } else if (!line_search(resolution)) {
       ++m_fallbacks;
-      clear_memory();
-      // Back to the start of the step, by the same moves with more passes (few generators are
-      // still on their way after the first ones); if one cannot get there to the bit, the
-      // Lloyd step starts from an evaluation of where they are.
-      m_targets = m_current.points;
-      if (move_to_targets(4 * max_passes) > 0)
-        evaluate(resolution);
+      m_history.clear();
+      go_back(resolution);
       lloyd_step(resolution);
     }
     return m_current.evaluation;
@@ -132,8 +139,8 @@ class Lbfgs_optimizer_2 {
   std::size_t number_of_steps() const { return m_steps; }              ///< done so far
   /// the steps whose line search failed and that were Lloyd steps instead
   std::size_t number_of_fallbacks() const { return m_fallbacks; }
-  std::size_t memory() const { return m_memory; }  ///< the most curvature pairs kept
-  std::size_t number_of_curvature_pairs() const { return m_pairs; }  ///< kept now
+  std::size_t memory() const { return m_history.capacity(); }  ///< the most curvature pairs kept
+  std::size_t number_of_curvature_pairs() const { return m_history.size(); }  ///< kept now
   const Diagram& diagram() const { return m_lloyd.diagram(); }  ///< as last evaluated
   const CDT& triangulation() const { return m_cdt; }           ///< the triangulation
 
@@ -150,12 +157,6 @@ class Lbfgs_optimizer_2 {
     Evaluation evaluation;
   };
 
-  static double dot(const std::vector<double>& a, const std::vector<double>& b) {
-    double s = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
-    return s;
-  }
-
   void number_generators() {
     m_vertices.clear();
     m_index.clear();
@@ -164,7 +165,7 @@ class Lbfgs_optimizer_2 {
       m_index.emplace(f.vertex, m_vertices.size());
       m_vertices.push_back(f.vertex);
     }
-    clear_memory();
+    m_history.clear();
   }
 
   // The last evaluation into `it`, by number; false if the free generators are not those numbered.
@@ -219,70 +220,19 @@ class Lbfgs_optimizer_2 {
     CGAL_USE(same);
   }
 
-  void clear_memory() { m_pairs = 0; }
-
-  // The trial point becomes the current one; its pair of differences joins the memory if its
+  // The trial point becomes the current one; its pair of differences joins the history if its
   // curvature is positive.
   void accept() {
-    if (m_memory > 0) {
-      if (m_s.size() < m_memory) {
-        m_s.resize(m_memory);
-        m_y.resize(m_memory);
-        m_rho.resize(m_memory);
-      }
-      const std::size_t k = (m_first + m_pairs) % m_memory;
-      std::vector<double>& s = m_s[k];
-      std::vector<double>& y = m_y[k];
-      const std::size_t n = m_current.x.size();
-      s.resize(n);
-      y.resize(n);
-      for (std::size_t j = 0; j < n; ++j) {
-        s[j] = m_trial.x[j] - m_current.x[j];
-        y[j] = m_trial.g[j] - m_current.g[j];
-      }
-      const double sy = dot(s, y);
-      if (sy > 1e-10 * std::sqrt(dot(s, s) * dot(y, y))) {
-        m_rho[k] = 1 / sy;
-        if (m_pairs < m_memory) {
-          ++m_pairs;
-        } else {
-          m_first = (m_first + 1) % m_memory;
-        }
-      }
-    }
+    m_history.add(m_current.x, m_trial.x, m_current.g, m_trial.g);
     std::swap(m_current, m_trial);
   }
 
-  // Two-loop recursion (Nocedal and Wright, Alg. 7.4) with H0 = diag(1/(2m)): the direction in
-  // m_direction; false if it does not go downhill.
-  bool quasi_newton_direction() {
-    std::vector<double>& q = m_direction;
-    q = m_current.g;
-    m_alpha.resize(m_pairs);
-    for (std::size_t t = m_pairs; t-- > 0;) {
-      const std::size_t k = (m_first + t) % m_memory;
-      m_alpha[t] = m_rho[k] * dot(m_s[k], q);
-      for (std::size_t j = 0; j < q.size(); ++j) q[j] -= m_alpha[t] * m_y[k][j];
-    }
-    // H0 = gamma diag(1/(2m)), scaled by the newest pair as in Nocedal and Wright (7.20)
-    const std::size_t newest = (m_first + m_pairs - 1) % m_memory;
-    double yhy = 0;
-    for (std::size_t i = 0; i < m_current.h.size(); ++i)
-      yhy += m_current.h[i] * (m_y[newest][2 * i] * m_y[newest][2 * i] +
-                               m_y[newest][2 * i + 1] * m_y[newest][2 * i + 1]);
-    const double gamma = 1 / (m_rho[newest] * yhy);
-    for (std::size_t i = 0; i < m_current.h.size(); ++i) {
-      q[2 * i] *= gamma * m_current.h[i];
-      q[2 * i + 1] *= gamma * m_current.h[i];
-    }
-    for (std::size_t t = 0; t < m_pairs; ++t) {
-      const std::size_t k = (m_first + t) % m_memory;
-      const double beta = m_rho[k] * dot(m_y[k], q);
-      for (std::size_t j = 0; j < q.size(); ++j) q[j] += (m_alpha[t] - beta) * m_s[k][j];
-    }
-    for (double& v : q) v = -v;
-    const double slope = dot(m_current.g, q);
-    return slope < 0 && std::isfinite(slope);
+  // Back to the start of a failed step, by the same moves with more passes (few generators are
+  // still on their way after the first ones); if one cannot get there to the bit, the Lloyd step
+  // that follows starts from an evaluation of where they are.
+  void go_back(std::size_t resolution) {
+    m_targets = m_current.points;
+    if (move_to_targets(4 * max_passes) > 0) evaluate(resolution);
   }
 
   // Every free generator to its centroid (as far as the passes go), evaluated and accepted.
@@ -296,7 +246,7 @@ class Lbfgs_optimizer_2 {
   // Moves the generators toward m_targets, in the last visit order; returns how many did not
   // get there in `passes` passes.
   std::size_t move_to_targets(std::size_t passes) {
-    return internal::move_free_vertices(m_cdt, m_lloyd.diagram(), m_lloyd.number_of_threads(),
+    return internal::move_free_vertices(m_cdt, m_lloyd.face_chunks(), m_lloyd.number_of_threads(),
                                         m_vertices, m_targets, m_order, passes, m_buffers);
   }
 
@@ -324,15 +274,12 @@ class Lbfgs_optimizer_2 {
 
   CDT& m_cdt;
   Lloyd_optimizer m_lloyd;
-  std::size_t m_memory;
+  internal::Lbfgs_history m_history;
   std::vector<Vertex_handle> m_vertices;                   // the free generators, by number
   std::unordered_map<Vertex_handle, std::size_t> m_index;  // and their numbers (lookup only)
   Iterate m_current, m_trial;
   bool m_has_current = false;
-  std::vector<std::vector<double>> m_s, m_y;  // curvature pairs, a ring of m_memory
-  std::vector<double> m_rho;                  // 1 / (s . y)
-  std::size_t m_first = 0, m_pairs = 0;
-  std::vector<double> m_direction, m_alpha;
+  std::vector<double> m_direction;
   std::vector<Point_2> m_targets;
   std::vector<std::size_t> m_order;  // the numbers in the last evaluation's visit order
   std::vector<std::size_t> m_previous_order, m_position;  // the one before, and its inverse

@@ -4,15 +4,18 @@
 #define CVT_2_LLOYD_OPTIMIZER_2_H
 
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/Bvd_traits_2.h>
 #include <CVT_2/Cell_moments_2.h>
 #include <CVT_2/Concepts/CellQuadrature_2.h>
 #include <CVT_2/Concepts/DensityFunction_2.h>
 #include <CVT_2/Exact_quadrature_2.h>
 #include <CVT_2/Midpoint_quadrature_2.h>
+#include <CVT_2/Optimization_result.h>
 #include <CVT_2/Uniform_density_2.h>
 #include <CVT_2/exceptions.h>
-#include <CVT_2/internal/to_string.h>
+#include <CVT_2/internal/Face_chunks.h>
 #include <CVT_2/internal/move_generators.h>
+#include <CVT_2/internal/to_string.h>
 
 #include <boost/container/small_vector.hpp>
 #include <boost/range/irange.hpp>
@@ -27,50 +30,6 @@
 #include <vector>
 
 namespace CVT_2 {
-
-/// \ingroup PkgCvt2Ref
-/// Why an optimization stopped.
-enum Lloyd_stop_reason {
-  CONVERGED,                ///< every free generator's move ratio is below the bound
-  MAX_ITERATIONS_REACHED,   ///< `number_of_iterations` moves were done
-  TIME_LIMIT_REACHED,       ///< `maximum_running_time` passed
-  CALLBACK_REQUESTED_STOP,  ///< the callback returned `false`
-  NO_FREE_GENERATOR         ///< nothing can move
-};
-
-/// \ingroup PkgCvt2Ref
-/// A short name of `reason` for messages and logs: `converged`, `max_iterations`,
-/// `time_limit`, `callback` or `no_free_generator`.
-inline const char* to_string(Lloyd_stop_reason reason) {
-  switch (reason) {
-    case CONVERGED: return "converged";
-    case MAX_ITERATIONS_REACHED: return "max_iterations";
-    case TIME_LIMIT_REACHED: return "time_limit";
-    case CALLBACK_REQUESTED_STOP: return "callback";
-    case NO_FREE_GENERATOR: return "no_free_generator";
-  }
-  return "unknown";
-}
-
-/// \ingroup PkgCvt2Ref
-/// What an optimization did. The figures describe the generators as they are at the end:
-/// an independent evaluation of the final points finds the same energy and move ratios.
-struct Lloyd_result {
-  std::size_t number_of_iterations = 0;  ///< moves of all free generators done
-  /// evaluations of the diagram, energy and centroids done (one per Lloyd iteration, plus the
-  /// first and a confirmation at the highest quadrature resolution; L-BFGS adds its line
-  /// searches)
-  std::size_t number_of_evaluations = 0;
-  Lloyd_stop_reason stop_reason = MAX_ITERATIONS_REACHED;  ///< why it stopped
-  double energy = 0;           ///< \f$E = \sum_i \int_{V_i} \rho(y)\|y - x_i\|^2 dy\f$, all cells
-  double max_move_ratio = 0;   ///< \f$\max_i mr(x_i)\f$ over free generators
-  double mean_move_ratio = 0;  ///< the mean of \f$mr(x_i)\f$ over free generators
-  std::vector<double> energy_history;          ///< one per evaluation, the first before any move
-  std::vector<double> max_move_ratio_history;  ///< likewise
-  std::vector<double> mean_move_ratio_history; ///< likewise
-  double seconds = 0;                          ///< running time
-};
-
 namespace internal {
 
 // Checks each value of a user density: a value that is not positive and finite names the point.
@@ -93,6 +52,9 @@ using Default_quadrature =
 
 }  // namespace internal
 
+template <class CDT, class Density, class Quadrature, class Traits>
+class Lbfgs_optimizer_2;
+
 /// \ingroup PkgCvt2Ref
 /// Lloyd iteration on the bounded Voronoi diagram of a constrained Delaunay triangulation,
 /// usable step by step: `evaluate()` computes the diagram, the moments of every cell, the
@@ -111,18 +73,20 @@ using Default_quadrature =
 /// \tparam Density a model of `DensityFunction_2`.
 /// \tparam Quadrature a model of `CellQuadrature_2`; by default exact formulas for a uniform
 ///         density, the paper's midpoint rule otherwise.
+/// \tparam Traits a model of `BvdTraits_2` for the diagram; by default `Bvd_traits_2`.
 template <class CDT, class Density = Uniform_density_2<typename CDT::Geom_traits>,
-          class Quadrature = internal::Default_quadrature<typename CDT::Geom_traits, Density>>
+          class Quadrature = internal::Default_quadrature<typename CDT::Geom_traits, Density>,
+          class Traits = Bvd_traits_2<typename CDT::Geom_traits>>
 class Lloyd_optimizer_2 {
  public:
-  using Triangulation = CDT;                              ///< the triangulation type
-  using Kernel = typename CDT::Geom_traits;               ///< its kernel
-  using FT = typename Kernel::FT;                         ///< number type
-  using Point_2 = typename Kernel::Point_2;               ///< point type
-  using Vertex_handle = typename CDT::Vertex_handle;      ///< a generator
-  using Diagram = Bounded_voronoi_diagram_2<CDT>;        ///< the diagram it iterates on
-  using Density_function = Density;                       ///< the density policy
-  using Cell_quadrature = Quadrature;                     ///< the quadrature policy
+  using Triangulation = CDT;                                ///< the triangulation type
+  using Kernel = typename CDT::Geom_traits;                 ///< its kernel
+  using FT = typename Kernel::FT;                           ///< number type
+  using Point_2 = typename Kernel::Point_2;                 ///< point type
+  using Vertex_handle = typename CDT::Vertex_handle;        ///< a generator
+  using Diagram = Bounded_voronoi_diagram_2<CDT, Traits>;  ///< the diagram it iterates on
+  using Density_function = Density;                         ///< the density policy
+  using Cell_quadrature = Quadrature;                       ///< the quadrature policy
 
   static_assert(is_density_function_2<Density, Kernel>::value,
                 "Density must model DensityFunction_2: FT operator()(const Point_2&) const");
@@ -150,72 +114,15 @@ class Lloyd_optimizer_2 {
 
   /// Prepares the iteration on `cdt` (nothing is computed yet).
   explicit Lloyd_optimizer_2(CDT& cdt, const Density& rho = Density(),
-                             const Quadrature& quadrature = Quadrature())
-      : m_cdt(cdt), m_rho(rho), m_quadrature(quadrature), m_diagram(cdt) {}
+                             const Quadrature& quadrature = Quadrature(),
+                             const Traits& traits = Traits())
+      : m_cdt(cdt), m_density(rho), m_quadrature(quadrature), m_diagram(cdt, traits) {}
 
   /// Builds the diagram of the current generators and computes the energy, the centroids and
   /// the move ratios, integrating with `resolution` sub-triangles a cell (see
   /// `CellQuadrature_2`). \throws Domain_error if the density is not positive and finite at a
   /// point where it is evaluated, or if the moments overflow or the domain's underflow.
-  const Evaluation& evaluate(std::size_t resolution) {
-    ++m_number_of_evaluations;
-    m_diagram.update();
-    m_evaluation = Evaluation();
-    m_evaluation.resolution = resolution;
-    // Cells in the diagram's chunks, on several threads; each chunk sums its own cells in
-    // order, then the chunks are summed in order: the same bits whatever the threads.
-    m_chunks.resize(m_diagram.number_of_chunks());
-    for (Chunk& c : m_chunks) c = Chunk();
-    m_diagram.for_each_cell_in_chunks(
-        [&](std::size_t chunk, Vertex_handle v, const auto& cell) {
-          Chunk& out = m_chunks[chunk];
-          Cell_points points;
-          bool is_free = true;  // a constrained generator is a vertex of its own cell
-          for (const auto& c : cell) {
-            points.push_back(c.point);
-            is_free = is_free && c.type != Diagram::Cell_vertex::GENERATOR;
-          }
-          const Cell_moments_2<Kernel> m = moments(v->point(), points, resolution);
-          const double mass = CGAL::to_double(m.mass), energy = CGAL::to_double(m.energy);
-          const double first2 = CGAL::to_double(m.first_moment.squared_length());
-          if (!(mass >= 0) || !std::isfinite(mass) || !std::isfinite(energy) ||
-              !std::isfinite(first2))
-            throw Domain_error(bad_moments_message(v->point(), points, mass, energy, first2));
-          out.mass += mass;
-          out.energy += energy;
-          if (!is_free) return;
-          // A cell whose mass underflows to 0 (a generator 1e-320 from another) stays put.
-          const typename Kernel::Vector_2 shift =
-              mass > 0 ? m.first_moment / m.mass : typename Kernel::Vector_2(CGAL::NULL_VECTOR);
-          const double diameter2 = squared_diameter(points);
-          const double ratio =
-              diameter2 > 0 ? std::sqrt(CGAL::to_double(shift.squared_length()) / diameter2) : 0;
-          out.max_move_ratio = std::max(out.max_move_ratio, ratio);
-          out.sum_move_ratio += ratio;
-          out.moves.push_back({v, v->point() + shift, m.mass});
-        },
-        m_number_of_threads);
-    m_moves.clear();
-    double sum_ratio = 0, mass = 0;
-    for (Chunk& c : m_chunks) {
-      mass += c.mass;
-      m_evaluation.energy += c.energy;
-      m_evaluation.max_move_ratio = std::max(m_evaluation.max_move_ratio, c.max_move_ratio);
-      sum_ratio += c.sum_move_ratio;
-      m_moves.insert(m_moves.end(), c.moves.begin(), c.moves.end());
-      std::vector<Free_generator>().swap(c.moves);  // one copy of the moves at a time
-    }
-    // One cell may underflow (a generator 1e-320 from another: it stays put), not the domain.
-    if (!(mass >= std::numeric_limits<double>::min()) || !(m_evaluation.energy > 0))
-      throw Domain_error("the domain's mass " + internal::number_to_string(mass) +
-                         " and energy " + internal::number_to_string(m_evaluation.energy) +
-                         " underflow: the moments do not fit in double precision (the "
-                         "domain's size or the density's range is too extreme for Lloyd "
-                         "iteration)");
-    m_evaluation.number_of_free_generators = m_moves.size();
-    if (!m_moves.empty()) m_evaluation.mean_move_ratio = sum_ratio / double(m_moves.size());
-    return m_evaluation;
-  }
+  const Evaluation& evaluate(std::size_t resolution);
 
   /// The number of threads that `evaluate()` builds cells and integrates them on, and that
   /// `move()` checks the moved faces on; 0 (the default) means one per core. The results are
@@ -231,7 +138,7 @@ class Lloyd_optimizer_2 {
   std::size_t move() {
     const std::size_t n = m_moves.size();
     const std::size_t missed = internal::move_free_vertices(
-        m_cdt, m_diagram, m_number_of_threads, boost::irange(std::size_t(0), n),
+        m_cdt, m_chunks, m_number_of_threads, boost::irange(std::size_t(0), n),
         [this](std::size_t k) { return m_moves[k].vertex; },
         [this](std::size_t k) -> const Point_2& { return m_moves[k].centroid; }, 1, m_buffers);
     m_moves.clear();
@@ -248,72 +155,187 @@ class Lloyd_optimizer_2 {
   const CDT& triangulation() const { return m_cdt; }    ///< the triangulation
 
  private:
+  template <class, class, class, class>
+  friend class Lbfgs_optimizer_2;  // moves the generators in the chunks of the last evaluation
+
   using Cell_points = boost::container::small_vector<Point_2, 32>;
+
+  // What one cell adds to an evaluation.
+  struct Cell_figures {
+    double mass = 0, energy = 0;
+    bool is_free = false;   // a constrained generator is a vertex of its own cell
+    double move_ratio = 0;  // |x - x*| / diameter, for a free generator
+    Free_generator generator;
+  };
 
   // What a chunk of cells adds up to, in the order of its cells.
   struct Chunk {
     double mass = 0, energy = 0, max_move_ratio = 0, sum_move_ratio = 0;
     std::vector<Free_generator> moves;
+    void add(const Cell_figures& c) {
+      mass += c.mass;
+      energy += c.energy;
+      if (!c.is_free) return;
+      max_move_ratio = std::max(max_move_ratio, c.move_ratio);
+      sum_move_ratio += c.move_ratio;
+      moves.push_back(c.generator);
+    }
   };
 
-  // The moments of the cell `points` of x, under the density restricted to the disk around x
-  // that holds the cell if the density offers that (the same values, found faster).
+  template <class Cell>
+  Cell_figures cell_figures(Vertex_handle v, const Cell& cell, std::size_t resolution) const;
+  void reduce_chunks();
   Cell_moments_2<Kernel> moments(const Point_2& x, const Cell_points& points,
-                                 std::size_t resolution) const {
-    if constexpr (has_restrict_to_disk_v<Density, Kernel>) {
-      double r2 = 0;
-      for (const Point_2& p : points) r2 = std::max(r2, CGAL::to_double(CGAL::squared_distance(x, p)));
-      // quadrature points are convex combinations of x and the cell's vertices, up to rounding
-      const double r = std::sqrt(r2) * (1 + 1e-9) +
-                       1e-12 * (std::abs(CGAL::to_double(x.x())) + std::abs(CGAL::to_double(x.y())));
-      const auto local = m_rho.restrict_to_disk(x, FT(r));
-      const internal::Checked_density<decltype(local), Point_2> rho{local};
-      return m_quadrature(x, points, rho, resolution);
-    } else {
-      const internal::Checked_density<Density, Point_2> rho{m_rho};
-      return m_quadrature(x, points, rho, resolution);
-    }
-  }
-
-  // Why a cell's moments cannot be used: overflow (too large a domain or density: a finite cell
-  // whose moments are not all finite, NaN included, from inf - inf), or a bug to report: a cell
-  // vertex that is not finite, or finite moments with a negative mass.
+                                 std::size_t resolution) const;
   static std::string bad_moments_message(const Point_2& generator, const Cell_points& points,
-                                         double mass, double energy, double first2) {
-    const bool finite_cell = std::all_of(points.begin(), points.end(), [](const Point_2& p) {
-      return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y()));
-    });
-    const bool overflow =
-        finite_cell && !(std::isfinite(mass) && std::isfinite(energy) && std::isfinite(first2));
-    std::string what = "the cell of generator " + internal::to_string(generator) + " has mass " +
-                       internal::number_to_string(mass) + " and energy " + internal::number_to_string(energy);
-    if (overflow)
-      return what + ": its moments do not fit in double precision (the domain's size or the "
-                    "density's range is too extreme for Lloyd iteration)";
-    return what + ": its " + std::to_string(points.size()) +
-           " vertices do not make a polygon with finite moments (a bug in CVT_2: please report "
-           "it with the input)";
-  }
+                                         double mass, double energy, double first2);
+  static double squared_diameter(const Cell_points& points);
 
-  static double squared_diameter(const Cell_points& points) {
-    double d = 0;
-    for (std::size_t i = 0; i < points.size(); ++i)
-      for (std::size_t j = i + 1; j < points.size(); ++j)
-        d = std::max(d, CGAL::to_double(CGAL::squared_distance(points[i], points[j])));
-    return d;
-  }
+  const internal::Face_chunks<CDT>& face_chunks() const { return m_chunks; }
 
   CDT& m_cdt;
-  Density m_rho;
+  Density m_density;
   Quadrature m_quadrature;
   Diagram m_diagram;
+  internal::Face_chunks<CDT> m_chunks;  // the cells and the moves run on several threads by them
   Evaluation m_evaluation;
   unsigned m_number_of_threads = 0;
   std::size_t m_number_of_evaluations = 0;
-  std::vector<Chunk> m_chunks;
+  std::vector<Chunk> m_chunk_sums;
   std::vector<Free_generator> m_moves;
   internal::Move_buffers<CDT> m_buffers;
 };
+
+template <class CDT, class Density, class Quadrature, class Traits>
+auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::evaluate(std::size_t resolution)
+    -> const Evaluation& {
+  ++m_number_of_evaluations;
+  m_diagram.update();
+  m_chunks.update(m_cdt);
+  // Cells in chunks, on several threads; each chunk sums its own cells in order, then the
+  // chunks are summed in order: the same bits whatever the threads.
+  m_chunk_sums.assign(m_chunks.size(), Chunk());
+  m_chunks.for_each(
+      [&](std::size_t c, auto first, auto last) {
+        internal::for_each_cell_in_faces(m_diagram, first, last, [&](Vertex_handle v, const auto& cell) {
+          m_chunk_sums[c].add(cell_figures(v, cell, resolution));
+        });
+      },
+      m_number_of_threads);
+  m_evaluation = Evaluation();
+  m_evaluation.resolution = resolution;
+  reduce_chunks();
+  return m_evaluation;
+}
+
+// The moments of the cell of v, checked, and for a free generator its centroid and move ratio.
+template <class CDT, class Density, class Quadrature, class Traits>
+template <class Cell>
+auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::cell_figures(
+    Vertex_handle v, const Cell& cell, std::size_t resolution) const -> Cell_figures {
+  Cell_points points;
+  Cell_figures f;
+  f.is_free = true;
+  for (const auto& c : cell) {
+    points.push_back(c.point);
+    f.is_free = f.is_free && c.type != Diagram::Cell_vertex::GENERATOR;
+  }
+  const Cell_moments_2<Kernel> m = moments(v->point(), points, resolution);
+  f.mass = CGAL::to_double(m.mass);
+  f.energy = CGAL::to_double(m.energy);
+  const double first2 = CGAL::to_double(m.first_moment.squared_length());
+  if (!(f.mass >= 0) || !std::isfinite(f.mass) || !std::isfinite(f.energy) ||
+      !std::isfinite(first2))
+    throw Domain_error(bad_moments_message(v->point(), points, f.mass, f.energy, first2));
+  if (!f.is_free) return f;
+  // A cell whose mass underflows to 0 (a generator 1e-320 from another) stays put.
+  const typename Kernel::Vector_2 shift =
+      f.mass > 0 ? m.first_moment / m.mass : typename Kernel::Vector_2(CGAL::NULL_VECTOR);
+  const double diameter2 = squared_diameter(points);
+  f.move_ratio =
+      diameter2 > 0 ? std::sqrt(CGAL::to_double(shift.squared_length()) / diameter2) : 0;
+  f.generator = {v, v->point() + shift, m.mass};
+  return f;
+}
+
+// The chunks' sums, in the order of the chunks, into the evaluation and the moves.
+template <class CDT, class Density, class Quadrature, class Traits>
+void Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::reduce_chunks() {
+  m_moves.clear();
+  double sum_ratio = 0, mass = 0;
+  for (Chunk& c : m_chunk_sums) {
+    mass += c.mass;
+    m_evaluation.energy += c.energy;
+    m_evaluation.max_move_ratio = std::max(m_evaluation.max_move_ratio, c.max_move_ratio);
+    sum_ratio += c.sum_move_ratio;
+    m_moves.insert(m_moves.end(), c.moves.begin(), c.moves.end());
+    std::vector<Free_generator>().swap(c.moves);  // one copy of the moves at a time
+  }
+  // One cell may underflow (a generator 1e-320 from another: it stays put), not the domain.
+  if (!(mass >= std::numeric_limits<double>::min()) || !(m_evaluation.energy > 0))
+    throw Domain_error("the domain's mass " + internal::number_to_string(mass) + " and energy " +
+                       internal::number_to_string(m_evaluation.energy) +
+                       " underflow: the moments do not fit in double precision (the domain's "
+                       "size or the density's range is too extreme for Lloyd iteration)");
+  m_evaluation.number_of_free_generators = m_moves.size();
+  if (!m_moves.empty()) m_evaluation.mean_move_ratio = sum_ratio / double(m_moves.size());
+}
+
+// The moments of the cell `points` of x, under the density restricted to the disk around x
+// that holds the cell if the density offers that (the same values, from fewer candidates).
+template <class CDT, class Density, class Quadrature, class Traits>
+Cell_moments_2<typename CDT::Geom_traits>
+Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::moments(const Point_2& x,
+                                                             const Cell_points& points,
+                                                             std::size_t resolution) const {
+  if constexpr (has_restrict_to_disk_v<Density, Kernel>) {
+    double r2 = 0;
+    for (const Point_2& p : points)
+      r2 = std::max(r2, CGAL::to_double(CGAL::squared_distance(x, p)));
+    // quadrature points are convex combinations of x and the cell's vertices, up to rounding
+    const double r = std::sqrt(r2) * (1 + 1e-9) +
+                     1e-12 * (std::abs(CGAL::to_double(x.x())) + std::abs(CGAL::to_double(x.y())));
+    const auto local = m_density.restrict_to_disk(x, FT(r));
+    const internal::Checked_density<decltype(local), Point_2> rho{local};
+    return m_quadrature(x, points, rho, resolution);
+  } else {
+    const internal::Checked_density<Density, Point_2> rho{m_density};
+    return m_quadrature(x, points, rho, resolution);
+  }
+}
+
+// Why a cell's moments cannot be used: overflow (too large a domain or density: a finite cell
+// whose moments are not all finite, NaN included, from inf - inf), or a bug to report: a cell
+// vertex that is not finite, or finite moments with a negative mass.
+template <class CDT, class Density, class Quadrature, class Traits>
+std::string Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::bad_moments_message(
+    const Point_2& generator, const Cell_points& points, double mass, double energy,
+    double first2) {
+  const bool finite_cell = std::all_of(points.begin(), points.end(), [](const Point_2& p) {
+    return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y()));
+  });
+  const bool overflow =
+      finite_cell && !(std::isfinite(mass) && std::isfinite(energy) && std::isfinite(first2));
+  std::string what = "the cell of generator " + internal::to_string(generator) + " has mass " +
+                     internal::number_to_string(mass) + " and energy " +
+                     internal::number_to_string(energy);
+  if (overflow)
+    return what + ": its moments do not fit in double precision (the domain's size or the "
+                  "density's range is too extreme for Lloyd iteration)";
+  return what + ": its " + std::to_string(points.size()) +
+         " vertices do not make a polygon with finite moments (a bug in CVT_2: please report "
+         "it with the input)";
+}
+
+template <class CDT, class Density, class Quadrature, class Traits>
+double Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::squared_diameter(
+    const Cell_points& points) {
+  double d = 0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t j = i + 1; j < points.size(); ++j)
+      d = std::max(d, CGAL::to_double(CGAL::squared_distance(points[i], points[j])));
+  return d;
+}
 
 }  // namespace CVT_2
 

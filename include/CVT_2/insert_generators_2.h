@@ -5,6 +5,7 @@
 
 #include <CVT_2/exceptions.h>
 #include <CVT_2/mark_domain_2.h>
+#include <CVT_2/internal/valid_point.h>
 
 #include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/property_map.h>
@@ -66,9 +67,8 @@ void insert_generators_2(CDT& cdt, const PointRange& points) {
   if (pts.empty()) return;  // make_property_map() would take the address of pts[0]
   for (std::size_t i = 0; i < pts.size(); ++i)
     if (!internal::is_valid_point(pts[i]))
-      throw Domain_error("generator " + internal::to_string(pts[i]) +
-                             " is not finite or exceeds 1e300 in magnitude",
-                         i);
+      throw Domain_error(
+          internal::invalid_point_message("generator " + internal::to_string(pts[i])), i);
   // Locate in spatial order, each from the previous: a walk of a few faces per point.
   std::vector<std::size_t> order(pts.size());
   std::iota(order.begin(), order.end(), std::size_t(0));

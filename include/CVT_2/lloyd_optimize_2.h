@@ -4,12 +4,9 @@
 #define CVT_2_LLOYD_OPTIMIZE_2_H
 
 #include <CVT_2/Lloyd_optimizer_2.h>
-#include <CVT_2/Sizing_field_density_2.h>
-#include <CVT_2/Uniform_density_2.h>
+#include <CVT_2/Optimization_result.h>
 #include <CVT_2/internal/run_optimization.h>
 #include <CVT_2/parameters.h>
-
-#include <type_traits>
 
 namespace CVT_2 {
 
@@ -18,7 +15,7 @@ namespace CVT_2 {
 /// its bounded Voronoi cell under a density \f$\rho\f$, and again, until every move ratio
 /// \f$mr(x) = \|x - x^*\|/\mathrm{diameter}(V)\f$ is below `move_ratio_bound`, or another
 /// limit is met. Constrained vertices stay; a free generator never crosses a constraint.
-/// The result describes the generators as they are at the end (`Lloyd_result`).
+/// The result describes the generators as they are at the end (`Optimization_result`).
 ///
 /// \param cdt a constrained Delaunay triangulation with its domain marked (see
 ///        `Bounded_voronoi_diagram_2`); its free vertices are moved in place.
@@ -32,30 +29,26 @@ namespace CVT_2 {
 ///     cell, raised from the first to the second as moves shrink; default 10 and 100.
 ///   - `move_ratio_bound(p)`: stop when every move ratio is below `p`; default 0.01; 0 turns
 ///     this stop off.
-///   - `number_of_iterations(n)`: at most `n` moves; default 1000.
+///   - `number_of_iterations(n)`: at most `n` moves, an integer \f$\ge 0\f$; default 1000.
 ///   - `maximum_running_time(s)`: stop after `s` seconds (checked between iterations); default
 ///     0, no limit.
-///   - `callback(f)`: `bool f(const Lloyd_result&)`, called after each evaluation with the
+///   - `callback(f)`: `bool f(const Optimization_result&)`, called after each evaluation with the
 ///     figures so far; returning `false` stops.
 ///   - `verbose(b)`: a line a iteration on `std::clog`; default `false`.
 ///   - `number_of_threads(n)`: threads that build and integrate the cells; default 0, one per
 ///     core. The result is the same, bit for bit, whatever `n`.
+///   - `geom_traits(t)`: a model of `BvdTraits_2` for the diagram; default `Bvd_traits_2`.
 /// \throws std::invalid_argument for a bad parameter value, naming it; Domain_error if the
 ///         density is not positive and finite at a point where it is evaluated.
 template <class CDT, class NP = No_named_parameters>
-Lloyd_result lloyd_optimize_2(CDT& cdt, const NP& np = parameters::default_values()) {
-  using namespace internal_np;
-  using K = typename CDT::Geom_traits;
-  static_assert(!(has_parameter<NP, density_t> && has_parameter<NP, sizing_field_t>),
-                "lloyd_optimize_2: give either density() or sizing_field(), not both");
-  const internal::Run_options options = internal::read_run_options(np);
-  return internal::with_density_and_quadrature<K>(np, [&](const auto& rho, const auto& quadrature) {
-    Lloyd_optimizer_2<CDT, std::decay_t<decltype(rho)>, std::decay_t<decltype(quadrature)>> lloyd(
-        cdt, rho, quadrature);
-    lloyd.set_number_of_threads(options.threads);
-    internal::Lloyd_steps<decltype(lloyd)> steps{lloyd};
-    return internal::run_optimization(steps, options, "lloyd");
-  });
+Optimization_result lloyd_optimize_2(CDT& cdt, const NP& np = parameters::default_values()) {
+  using Parameters = internal::Optimization_parameters<CDT, NP>;
+  using Optimizer = Lloyd_optimizer_2<CDT, typename Parameters::Density,
+                                      typename Parameters::Quadrature, typename Parameters::Traits>;
+  const Parameters p(np);
+  Optimizer lloyd(cdt, p.density, p.quadrature, p.traits);
+  lloyd.set_number_of_threads(p.options.threads);
+  return internal::run_optimization(internal::Lloyd_steps<Optimizer>{lloyd}, p.options, "lloyd");
 }
 
 }  // namespace CVT_2

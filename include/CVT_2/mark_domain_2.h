@@ -5,6 +5,7 @@
 
 #include <CVT_2/exceptions.h>
 #include <CVT_2/internal/to_string.h>
+#include <CVT_2/internal/valid_point.h>
 
 #include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Polygon_2_algorithms.h>
@@ -19,17 +20,6 @@
 
 namespace CVT_2 {
 namespace internal {
-
-// Coordinates beyond this magnitude make differences overflow in double.
-constexpr double max_coordinate = 1e300;
-
-// Whether both coordinates are finite and at most max_coordinate in magnitude.
-template <class Point_2>
-bool is_valid_point(const Point_2& p) {
-  const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
-  return std::isfinite(x) && std::isfinite(y) && std::abs(x) <= max_coordinate &&
-         std::abs(y) <= max_coordinate;
-}
 
 // Whether the finite vertex v lies in the closed domain: one of its faces is in the domain.
 template <class CDT>
@@ -159,8 +149,7 @@ void mark_domain_2(const CDT& cdt, const PointRange& hole_seeds) {
   Face_handle hint;
   for (const auto& p : hole_seeds) {
     if (!internal::is_valid_point(p))
-      throw Domain_error("hole point " + internal::to_string(p) +
-                         " is not finite or exceeds 1e300 in magnitude");
+      throw Domain_error(internal::invalid_point_message("hole point " + internal::to_string(p)));
     typename CDT::Locate_type lt;
     int li;
     const Face_handle f = cdt.locate(p, lt, li, hint);

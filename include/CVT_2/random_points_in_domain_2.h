@@ -23,6 +23,111 @@ namespace internal {
 // the standard distributions do not promise.
 inline double uniform01(std::mt19937_64& rng) { return double(rng() >> 11) * 0x1.0p-53; }
 
+// The triangles of the domain, with lengths measured in units of 2^e, the domain's scale, so
+// that areas and squared lengths neither underflow nor overflow (a domain 1e-300 wide is not
+// empty). Areas only weigh the triangles against each other.
+template <class Point_2>
+struct Domain_triangles {
+  using Triangle = std::array<Point_2, 3>;
+  std::vector<Triangle> triangles;
+  int e = 0;
+
+  double dx(const Point_2& a, const Point_2& b) const {
+    return std::ldexp(CGAL::to_double(b.x() - a.x()), -e);
+  }
+  double dy(const Point_2& a, const Point_2& b) const {
+    return std::ldexp(CGAL::to_double(b.y() - a.y()), -e);
+  }
+  // The vertex opposite the longest edge of t.
+  int opposite_longest_edge(const Triangle& t) const {
+    int o = 0;
+    double longest = -1;
+    for (int i = 0; i < 3; ++i) {
+      const Point_2& a = t[(i + 1) % 3];
+      const Point_2& b = t[(i + 2) % 3];
+      const double l = dx(a, b) * dx(a, b) + dy(a, b) * dy(a, b);
+      if (l > longest) longest = l, o = i;
+    }
+    return o;
+  }
+  // The area of t, from the vertex opposite its longest edge: from the tip of a needle, the two
+  // long edges' cross product would cancel to zero.
+  double area(const Triangle& t) const {
+    const int o = opposite_longest_edge(t);
+    const Point_2& a = t[o];
+    const Point_2& b = t[(o + 1) % 3];
+    const Point_2& c = t[(o + 2) % 3];
+    return (dx(a, b) * dy(a, c) - dy(a, b) * dx(a, c)) / 2;
+  }
+};
+
+template <class CDT>
+Domain_triangles<typename CDT::Point_2> domain_triangles(const CDT& cdt) {
+  Domain_triangles<typename CDT::Point_2> d;
+  double extent = 0;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (!f->is_inside_domain()) continue;
+    const auto& t =
+        d.triangles.emplace_back(std::array{f->vertex(0)->point(), f->vertex(1)->point(),
+                                            f->vertex(2)->point()});
+    for (int i = 1; i < 3; ++i)
+      extent = std::max({extent, std::abs(CGAL::to_double(t[i].x() - t[0].x())),
+                         std::abs(CGAL::to_double(t[i].y() - t[0].y()))});
+  }
+  if (extent > 0) std::frexp(extent, &d.e);
+  return d;
+}
+
+// The triangles of `d` cut by longest-edge bisection until each has an area of at most
+// `small`; `face_of` gets the triangle each piece was cut from.
+template <class Point_2>
+std::vector<std::array<Point_2, 3>> bisect_triangles(const Domain_triangles<Point_2>& d,
+                                                     double small,
+                                                     std::vector<std::size_t>& face_of) {
+  using Triangle = std::array<Point_2, 3>;
+  std::vector<Triangle> pieces, stack;
+  for (std::size_t f = 0; f < d.triangles.size(); ++f) {
+    stack.assign(1, d.triangles[f]);
+    while (!stack.empty()) {
+      const Triangle u = stack.back();
+      stack.pop_back();
+      if (d.area(u) <= small) {
+        pieces.push_back(u);
+        face_of.push_back(f);
+        continue;
+      }
+      const int k = d.opposite_longest_edge(u);
+      const Point_2 m = CGAL::midpoint(u[(k + 1) % 3], u[(k + 2) % 3]);
+      stack.push_back({u[k], u[(k + 1) % 3], m});
+      stack.push_back({u[k], m, u[(k + 2) % 3]});
+    }
+  }
+  return pieces;
+}
+
+// A point drawn uniformly in triangle t (rounded).
+template <class Point_2>
+Point_2 random_point_in_triangle(const std::array<Point_2, 3>& t, std::mt19937_64& rng) {
+  double s = uniform01(rng), u = uniform01(rng);
+  if (s + u > 1) s = 1 - s, u = 1 - u;
+  const Point_2& o = t[0];
+  return Point_2(o.x() + s * (t[1].x() - o.x()) + u * (t[2].x() - o.x()),
+                 o.y() + s * (t[1].y() - o.y()) + u * (t[2].y() - o.y()));
+}
+
+template <class Point_2>
+bool in_closed_triangle(const std::array<Point_2, 3>& t, const Point_2& p) {
+  return CGAL::orientation(t[0], t[1], p) != CGAL::RIGHT_TURN &&
+         CGAL::orientation(t[1], t[2], p) != CGAL::RIGHT_TURN &&
+         CGAL::orientation(t[2], t[0], p) != CGAL::RIGHT_TURN;
+}
+
+template <class Point_2>
+const Point_2& nearest_vertex(const std::array<Point_2, 3>& t, const Point_2& p) {
+  const Point_2& ab = CGAL::compare_distance_to_point(p, t[0], t[1]) == CGAL::LARGER ? t[1] : t[0];
+  return CGAL::compare_distance_to_point(p, ab, t[2]) == CGAL::LARGER ? t[2] : ab;
+}
+
 }  // namespace internal
 
 /// \ingroup PkgCvt2Ref
@@ -44,113 +149,49 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   using Point_2 = typename CDT::Point_2;
   using Triangle = std::array<Point_2, 3>;
   std::mt19937_64 rng(choose_parameter(get_parameter(np, random_seed_t()), std::uint64_t(0)));
-  std::vector<Triangle> triangles;
-  double extent = 0;
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-    if (!f->is_inside_domain()) continue;
-    triangles.push_back({f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()});
-    for (int i = 1; i < 3; ++i)
-      extent = std::max({extent, std::abs(CGAL::to_double(triangles.back()[i].x() - triangles.back()[0].x())),
-                         std::abs(CGAL::to_double(triangles.back()[i].y() - triangles.back()[0].y()))});
-  }
-  // Areas only weigh the triangles against each other: measured in units of 2^e, the domain's
-  // scale, they neither underflow nor overflow (a domain 1e-300 wide is not empty). They are
-  // taken from the vertex opposite the longest edge: from the tip of a needle, the two long
-  // edges' cross product would cancel to zero.
-  int e = 0;
-  if (extent > 0) std::frexp(extent, &e);
-  const auto area = [e](const Triangle& t) {
-    int o = 0;  // the vertex opposite the longest edge
-    double longest = -1;
-    for (int i = 0; i < 3; ++i) {
-      const double dx = std::ldexp(CGAL::to_double(t[(i + 2) % 3].x() - t[(i + 1) % 3].x()), -e);
-      const double dy = std::ldexp(CGAL::to_double(t[(i + 2) % 3].y() - t[(i + 1) % 3].y()), -e);
-      if (dx * dx + dy * dy > longest) longest = dx * dx + dy * dy, o = i;
-    }
-    const Point_2& a = t[o];
-    const Point_2& b = t[(o + 1) % 3];
-    const Point_2& c = t[(o + 2) % 3];
-    const double ux = std::ldexp(CGAL::to_double(b.x() - a.x()), -e);
-    const double uy = std::ldexp(CGAL::to_double(b.y() - a.y()), -e);
-    const double vx = std::ldexp(CGAL::to_double(c.x() - a.x()), -e);
-    const double vy = std::ldexp(CGAL::to_double(c.y() - a.y()), -e);
-    return (ux * vy - uy * vx) / 2;
-  };
+  const internal::Domain_triangles<Point_2> domain = internal::domain_triangles(cdt);
   double domain_area = 0;
-  for (const Triangle& t : triangles) domain_area += area(t);
+  for (const Triangle& t : domain.triangles) domain_area += domain.area(t);
   if (!(domain_area > 0)) throw Domain_error("random points: the domain is empty");
+  // The triangles to draw from, with their cumulative masses, and the face each lies in.
+  const std::vector<Triangle>* pieces = &domain.triangles;
+  std::vector<Triangle> cut;
+  std::vector<std::size_t> face_of;
   std::vector<double> cumulative;
   double total = 0;
-  std::vector<Triangle> faces;        // with a density: the domain faces, cut into `triangles`
-  std::vector<std::size_t> face_of;   // the face each piece was cut from
   if constexpr (has_parameter<NP, density_t>) {
     const auto& rho = get_parameter(np, density_t());
-    const double small = domain_area / double(std::max<std::size_t>(n, 10000));
-    std::vector<Triangle> pieces, stack;
-    for (std::size_t f = 0; f < triangles.size(); ++f) {
-      stack.assign(1, triangles[f]);
-      while (!stack.empty()) {
-        const Triangle u = stack.back();
-        stack.pop_back();
-        if (area(u) <= small) {
-          pieces.push_back(u);
-          face_of.push_back(f);
-          continue;
-        }
-        int k = 0;  // the vertex opposite the longest edge
-        double longest = -1;
-        for (int i = 0; i < 3; ++i) {
-          const double l = CGAL::to_double(CGAL::squared_distance(u[(i + 1) % 3], u[(i + 2) % 3]));
-          if (l > longest) longest = l, k = i;
-        }
-        const Point_2 m = CGAL::midpoint(u[(k + 1) % 3], u[(k + 2) % 3]);
-        stack.push_back({u[k], u[(k + 1) % 3], m});
-        stack.push_back({u[k], m, u[(k + 2) % 3]});
-      }
-    }
-    faces.swap(triangles);
-    triangles.swap(pieces);
-    for (const Triangle& t : triangles) {
+    cut = internal::bisect_triangles(
+        domain, domain_area / double(std::max<std::size_t>(n, 10000)), face_of);
+    pieces = &cut;
+    for (const Triangle& t : cut) {
       double s = 0;
       for (int i = 0; i < 3; ++i) s += CGAL::to_double(rho(CGAL::midpoint(t[i], t[(i + 1) % 3])));
-      total += area(t) * s / 3;
+      total += domain.area(t) * s / 3;
       cumulative.push_back(total);
     }
   } else {
-    for (const Triangle& t : triangles) cumulative.push_back(total += area(t));
+    for (const Triangle& t : domain.triangles) cumulative.push_back(total += domain.area(t));
   }
+  // Rounding may put a point drawn by a boundary edge just outside the domain face its piece
+  // was cut from (a piece's cut points are rounded too): it is drawn again. A needle thinner
+  // than double precision can resolve (a vertex at 1e124 among vertices at 10) holds almost no
+  // double point and would reject draws forever: after 64 misses in a row, the vertex of the
+  // face nearest to the draw is taken instead.
   std::vector<Point_2> points;
   points.reserve(n);
-  std::size_t misses = 0;  // draws in a row that fell outside their face
+  std::size_t misses = 0;
   while (points.size() < n) {
     const double u = internal::uniform01(rng) * total;
     const std::size_t k = std::min<std::size_t>(
         std::upper_bound(cumulative.begin(), cumulative.end(), u) - cumulative.begin(),
-        triangles.size() - 1);
-    double s = internal::uniform01(rng), t = internal::uniform01(rng);
-    if (s + t > 1) s = 1 - s, t = 1 - t;
-    const Triangle& piece = triangles[k];
-    const Point_2& o = piece[0];
-    Point_2 p(o.x() + s * (piece[1].x() - o.x()) + t * (piece[2].x() - o.x()),
-              o.y() + s * (piece[1].y() - o.y()) + t * (piece[2].y() - o.y()));
-    // Rounding may put a point drawn by a boundary edge just outside: draw again. The test is
-    // against the domain face (a piece's cut points are rounded). A needle thinner than double
-    // precision can resolve (a vertex at 1e124 among vertices at 10) holds almost no double
-    // point and would reject draws forever: after 64 misses in a row, the vertex of the face
-    // nearest to the draw is taken instead.
-    const Triangle& face = face_of.empty() ? piece : faces[face_of[k]];
-    const Point_2& a = face[0];
-    const Point_2& b = face[1];
-    const Point_2& c = face[2];
-    if (CGAL::orientation(a, b, p) == CGAL::RIGHT_TURN ||
-        CGAL::orientation(b, c, p) == CGAL::RIGHT_TURN ||
-        CGAL::orientation(c, a, p) == CGAL::RIGHT_TURN) {
-      if (++misses < 64) continue;
-      const Point_2& ab = CGAL::compare_distance_to_point(p, a, b) == CGAL::LARGER ? b : a;
-      p = CGAL::compare_distance_to_point(p, ab, c) == CGAL::LARGER ? c : ab;
-    }
+        pieces->size() - 1);
+    const Triangle& face = face_of.empty() ? (*pieces)[k] : domain.triangles[face_of[k]];
+    const Point_2 p = internal::random_point_in_triangle((*pieces)[k], rng);
+    const bool inside = internal::in_closed_triangle(face, p);
+    if (!inside && ++misses < 64) continue;
+    points.push_back(inside ? p : internal::nearest_vertex(face, p));
     misses = 0;
-    points.push_back(p);
   }
   return points;
 }

@@ -6,6 +6,7 @@
 #include <CVT_2/exceptions.h>
 #include <CVT_2/mark_domain_2.h>
 #include <CVT_2/internal/line_reader.h>
+#include <CVT_2/internal/valid_point.h>
 
 #include <array>
 #include <cstddef>
@@ -151,9 +152,8 @@ void insert_poly(CDT& cdt, const Poly_data<typename CDT::Point_2>& data) {
   };
   for (std::size_t i = 0; i < data.vertices.size(); ++i)
     if (!internal::is_valid_point(data.vertices[i]))
-      throw Domain_error(where(data.vertex_lines[i]) + "vertex " +
-                         internal::to_string(data.vertices[i]) +
-                         " is not finite or exceeds 1e300 in magnitude");
+      throw Domain_error(internal::invalid_point_message(where(data.vertex_lines[i]) + "vertex " +
+                                                         internal::to_string(data.vertices[i])));
   std::vector<typename CDT::Vertex_handle> vertices;
   vertices.reserve(data.vertices.size());
   typename CDT::Face_handle hint;

@@ -6,6 +6,7 @@
 #include <CVT_2/exceptions.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/internal/line_reader.h>
+#include <CVT_2/internal/valid_point.h>
 #include <CVT_2/mark_domain_2.h>
 
 #include <CGAL/IO/WKT.h>
@@ -202,8 +203,9 @@ Wkt_data<K> read_wkt(std::istream& is, const std::string& source = "<wkt>") {
     if (!ok) throw Parse_error(source, number, "malformed " + type, type);
     const auto check = [&](const Point_2& p) {
       if (!CVT_2::internal::is_valid_point(p))
-        throw Parse_error(source, number, "point " + CVT_2::internal::to_string(p) +
-                                              " is not finite or exceeds 1e300 in magnitude");
+        throw Parse_error(source, number,
+                          CVT_2::internal::invalid_point_message(
+                              "point " + CVT_2::internal::to_string(p)));
     };
     for (const Point_2& p : points) {
       check(p);

@@ -3,6 +3,8 @@
 #ifndef CVT_2_INTERNAL_MOVE_GENERATORS_H
 #define CVT_2_INTERNAL_MOVE_GENERATORS_H
 
+#include <CVT_2/internal/Face_chunks.h>
+#include <CVT_2/internal/delaunay_flips.h>
 #include <CVT_2/internal/move_vertex.h>
 #include <CVT_2/internal/prefetch.h>
 #include <CVT_2/internal/run_chunks.h>
@@ -29,45 +31,11 @@ struct Move_buffers {
   std::vector<std::vector<Flip_candidate<CDT>>> chunk_stack;
 };
 
-// Pushes every edge of the faces around v on the stack: the edges whose in-circle tests a move
-// of v changes.
-template <class CDT>
-void push_star_edges(const CDT& cdt, typename CDT::Vertex_handle v,
-                     std::vector<Flip_candidate<CDT>>& stack) {
-  auto fc = cdt.incident_faces(v), end = fc;
-  do {
-    const typename CDT::Face_handle f = fc;
-    for (int j = 0; j < 3; ++j)
-      stack.push_back(Flip_candidate<CDT>::of(f, j));
-  } while (++fc != end);
-}
-
-// Sets vertex(i) to target(i) for every i of `pending`, all at once, then puts back where it
-// was every vertex of a face that this left without a positive orientation, and the vertices
-// of the faces that this in turn leaves so, until every face is positive: the triangulation is
-// then valid again (a vertex moved crossed no edge, hence no constraint), and every vertex is
-// at its target but those put back, listed in `b.kept_back` in the order of `pending`.
-//
-// This is one linear pass over the vertices and one over the faces, both in memory order and
-// prefetched, instead of a walk around each vertex's star; when most vertices move, as in
-// Lloyd iteration, only a few are put back. Both passes run in chunks on `threads` threads (the
-// faces in those of `diagram`, as of its last update), each chunk with its own output, put
-// together in the order of the chunks: the same bits whatever the threads. The pass over the
-// faces also runs the in-circle test of every edge of the domain once and pushes those that
-// fail on `b.stack`: with the edges around the vertices put back (push_star_edges), the stack
-// then holds every edge that can have lost the Delaunay property, ready for lawson_flips().
-template <class CDT, class Diagram, class VertexAt, class TargetAt>
-void move_all_at_once(CDT& cdt, const Diagram& diagram, unsigned threads,
-                      const std::vector<std::size_t>& pending, const VertexAt& vertex,
-                      const TargetAt& target, Move_buffers<CDT>& b) {
-  using Vertex_handle = typename CDT::Vertex_handle;
-  using Face_handle = typename CDT::Face_handle;
-  const auto orientation = cdt.geom_traits().orientation_2_object();
-  const auto less_xy = cdt.geom_traits().less_xy_2_object();
-  const auto positive = [&](Face_handle f) {
-    return orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) ==
-           CGAL::LEFT_TURN;
-  };
+// Sets vertex(i) to target(i) for every i of `pending`, in chunks on `threads` threads,
+// remembering where each was in `b.from`.
+template <class CDT, class VertexAt, class TargetAt>
+void set_targets(const std::vector<std::size_t>& pending, const VertexAt& vertex,
+                 const TargetAt& target, unsigned threads, Move_buffers<CDT>& b) {
   const std::size_t n = pending.size();
   constexpr std::size_t distance = 8, chunk_size = 4096;
   b.from.resize(n);
@@ -75,17 +43,25 @@ void move_all_at_once(CDT& cdt, const Diagram& diagram, unsigned threads,
     const std::size_t end = std::min(n, (c + 1) * chunk_size);
     for (std::size_t k = c * chunk_size; k < end; ++k) {
       if (k + distance < end) prefetch(&*vertex(pending[k + distance]));
-      const Vertex_handle v = vertex(pending[k]);
+      const typename CDT::Vertex_handle v = vertex(pending[k]);
       b.from[k] = v->point();
       v->set_point(target(pending[k]));
     }
   });
-  // The faces around a moved vertex are all in the domain (it is free and has a cell). An
-  // in-circle test next to a face that is not positive means nothing, but that face's edges
-  // are all pushed again below, with its vertices put back.
-  b.chunk_inverted.resize(diagram.number_of_chunks());
-  b.chunk_stack.resize(diagram.number_of_chunks());
-  diagram.for_each_face_chunk(
+}
+
+// One pass over the domain faces after a bulk move: the faces that are not positive into
+// `b.inverted`, and the edges of the positive ones that fail their in-circle test (each edge
+// once) onto `b.stack`. Each chunk of faces has its own outputs, joined in chunk order.
+template <class CDT>
+void check_moved_faces(const CDT& cdt, const Face_chunks<CDT>& chunks, unsigned threads,
+                       Move_buffers<CDT>& b) {
+  using Face_handle = typename CDT::Face_handle;
+  const auto orientation = cdt.geom_traits().orientation_2_object();
+  const auto less_xy = cdt.geom_traits().less_xy_2_object();
+  b.chunk_inverted.resize(chunks.size());
+  b.chunk_stack.resize(chunks.size());
+  chunks.for_each(
       [&](std::size_t c, auto first, auto last) {
         std::vector<Face_handle>& inverted = b.chunk_inverted[c];
         std::vector<Flip_candidate<CDT>>& stack = b.chunk_stack[c];
@@ -93,7 +69,8 @@ void move_all_at_once(CDT& cdt, const Diagram& diagram, unsigned threads,
         stack.clear();
         for_each_face_prefetched(first, last, [&](Face_handle f) {
           if (!f->is_inside_domain() || cdt.is_infinite(f)) return;
-          if (!positive(f)) {
+          if (orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) !=
+              CGAL::LEFT_TURN) {
             inverted.push_back(f);
             return;
           }
@@ -105,19 +82,28 @@ void move_all_at_once(CDT& cdt, const Diagram& diagram, unsigned threads,
       threads);
   b.inverted.clear();
   b.stack.clear();
-  for (std::size_t c = 0; c < b.chunk_stack.size(); ++c) {
+  for (std::size_t c = 0; c < chunks.size(); ++c) {
     b.inverted.insert(b.inverted.end(), b.chunk_inverted[c].begin(), b.chunk_inverted[c].end());
     b.stack.insert(b.stack.end(), b.chunk_stack[c].begin(), b.chunk_stack[c].end());
   }
-  // Rounds of putting back: a face that is not positive has a vertex that moved (at their old
-  // places, its vertices made a positive face), so each round puts back at least one and the
-  // rounds end, at the latest with the old triangulation. A round looks its vertices up in one
-  // pass over `pending`, so that everything happens in the order of `pending`, not of addresses.
+}
+
+// Rounds of putting back: a face that is not positive has a vertex that moved (at their old
+// places, its vertices made a positive face), so each round puts back at least one and the
+// rounds end, at the latest with the old triangulation. A round looks its vertices up in one
+// pass over `pending`, so that everything happens in the order of `pending`, not of addresses.
+// The vertices put back are listed in `b.kept_back`, in the order of `pending`.
+template <class CDT, class VertexAt>
+void put_back_inverted(const CDT& cdt, const std::vector<std::size_t>& pending,
+                       const VertexAt& vertex, Move_buffers<CDT>& b) {
+  using Vertex_handle = typename CDT::Vertex_handle;
+  const auto orientation = cdt.geom_traits().orientation_2_object();
+  const std::size_t n = pending.size();
   std::vector<bool> put_back(b.inverted.empty() ? 0 : n, false);
   std::unordered_set<Vertex_handle> wanted;
   while (!b.inverted.empty()) {
     wanted.clear();
-    for (const Face_handle f : b.inverted)
+    for (const auto f : b.inverted)
       for (int i = 0; i < 3; ++i) wanted.insert(f->vertex(i));
     b.inverted.clear();
     for (std::size_t k = 0; k < n; ++k) {
@@ -127,13 +113,40 @@ void move_all_at_once(CDT& cdt, const Diagram& diagram, unsigned threads,
       v->set_point(b.from[k]);
       auto fc = cdt.incident_faces(v), end = fc;
       do {
-        if (!positive(fc)) b.inverted.push_back(fc);
+        if (orientation(fc->vertex(0)->point(), fc->vertex(1)->point(),
+                        fc->vertex(2)->point()) != CGAL::LEFT_TURN)
+          b.inverted.push_back(fc);
       } while (++fc != end);
     }
   }
   b.kept_back.clear();
   for (std::size_t k = 0; k < put_back.size(); ++k)
     if (put_back[k]) b.kept_back.push_back(pending[k]);
+}
+
+// Sets vertex(i) to target(i) for every i of `pending`, all at once, then puts back where it
+// was every vertex of a face that this left without a positive orientation, and the vertices
+// of the faces that this in turn leaves so, until every face is positive: the triangulation is
+// then valid again (a vertex moved crossed no edge, hence no constraint), and every vertex is
+// at its target but those put back, listed in `b.kept_back` in the order of `pending`.
+//
+// This is one linear pass over the vertices and one over the faces, both in memory order and
+// prefetched, instead of a walk around each vertex's star; when most vertices move, as in
+// Lloyd iteration, only a few are put back. Both passes run in chunks on `threads` threads,
+// each chunk with its own output, put together in the order of the chunks: the same bits
+// whatever the threads. The pass over the faces also runs the in-circle test of every edge of
+// the domain once and pushes those that fail on `b.stack`: with the edges around the vertices
+// put back (push_star_edges), the stack then holds every edge that can have lost the Delaunay
+// property, ready for lawson_flips(). The faces around a moved vertex are all in the domain (it
+// is free and has a cell). An in-circle test next to a face that is not positive means nothing,
+// but that face's edges are all pushed again, with its vertices put back.
+template <class CDT, class VertexAt, class TargetAt>
+void move_all_at_once(CDT& cdt, const Face_chunks<CDT>& chunks, unsigned threads,
+                      const std::vector<std::size_t>& pending, const VertexAt& vertex,
+                      const TargetAt& target, Move_buffers<CDT>& b) {
+  set_targets(pending, vertex, target, threads, b);
+  check_moved_faces(cdt, chunks, threads, b);
+  put_back_inverted(cdt, pending, vertex, b);
 }
 
 // Moves each free vertex vertex(i) toward target(i), for i in `order` (a range of numbers in
@@ -143,8 +156,8 @@ void move_all_at_once(CDT& cdt, const Diagram& diagram, unsigned threads,
 // goes on from the new stars. When most vertices move, the first pass moves them all at once
 // instead (move_all_at_once) and only those it puts back within their stars. A vertex that
 // reaches its target is at it to the bit. Returns how many did not reach it.
-template <class CDT, class Diagram, class OrderRange, class VertexAt, class TargetAt>
-std::size_t move_free_vertices(CDT& cdt, const Diagram& diagram, unsigned threads,
+template <class CDT, class OrderRange, class VertexAt, class TargetAt>
+std::size_t move_free_vertices(CDT& cdt, const Face_chunks<CDT>& chunks, unsigned threads,
                                const OrderRange& order, const VertexAt& vertex,
                                const TargetAt& target, std::size_t passes, Move_buffers<CDT>& b) {
   std::vector<std::size_t>& pending = b.pending;
@@ -154,38 +167,24 @@ std::size_t move_free_vertices(CDT& cdt, const Diagram& diagram, unsigned thread
   for (std::size_t pass = 0; pass < passes && !pending.empty(); ++pass) {
     const bool at_once = pass == 0 && pending.size() * 8 > order.size();
     if (at_once) {
-      move_all_at_once(cdt, diagram, threads, pending, vertex, target, b);  // fills b.stack
+      move_all_at_once(cdt, chunks, threads, pending, vertex, target, b);  // fills b.stack
       pending.swap(b.kept_back);
     } else {
       b.moved.clear();
     }
-    // The stars are far apart in memory: each is prefetched in steps ahead of its move (its
-    // vertex, the vertex's face, that face's neighbors, theirs).
     std::size_t kept = 0;
-    const std::size_t n = pending.size(), d = 6;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (k + 4 * d < n) prefetch(&*vertex(pending[k + 4 * d]));
-      if (k + 3 * d < n) prefetch(&*vertex(pending[k + 3 * d])->face());
-      if (k + 2 * d < n) {
-        const auto f = vertex(pending[k + 2 * d])->face();
-        for (int j = 0; j < 3; ++j) prefetch(&*f->neighbor(j));
-      }
-      if (k + d < n) {
-        const auto f = vertex(pending[k + d])->face();
-        for (int j = 0; j < 3; ++j) {
-          prefetch(&*f->vertex(j));
-          for (int l = 0; l < 3; ++l) prefetch(&*f->neighbor(j)->neighbor(l));
-        }
-      }
-      const std::size_t i = pending[k];
-      const double done = move_free_vertex(cdt, vertex(i), target(i));
-      if (at_once) {
-        push_star_edges(cdt, vertex(i), b.stack);  // put back, then perhaps moved: retest
-      } else if (done > 0) {
-        b.moved.push_back(i);
-      }
-      if (done < 1) pending[kept++] = i;
-    }
+    for_each_star_prefetched(
+        pending.size(), [&](std::size_t k) { return vertex(pending[k]); },
+        [&](std::size_t k) {
+          const std::size_t i = pending[k];
+          const double done = move_free_vertex(cdt, vertex(i), target(i));
+          if (at_once) {
+            push_star_edges(cdt, vertex(i), b.stack);  // put back, then perhaps moved: retest
+          } else if (done > 0) {
+            b.moved.push_back(i);
+          }
+          if (done < 1) pending[kept++] = i;
+        });
     pending.resize(kept);
     if (at_once) {
       lawson_flips(cdt, b.stack);
@@ -206,15 +205,15 @@ std::size_t move_free_vertices(CDT& cdt, const Diagram& diagram, unsigned thread
 }
 
 // The same with the vertices and targets in two vectors.
-template <class CDT, class Diagram>
-std::size_t move_free_vertices(CDT& cdt, const Diagram& diagram, unsigned threads,
+template <class CDT>
+std::size_t move_free_vertices(CDT& cdt, const Face_chunks<CDT>& chunks, unsigned threads,
                                const std::vector<typename CDT::Vertex_handle>& vertices,
                                const std::vector<typename CDT::Point_2>& targets,
                                const std::vector<std::size_t>& order, std::size_t passes,
                                Move_buffers<CDT>& b) {
   CGAL_precondition(vertices.size() == targets.size() && order.size() == vertices.size());
   return move_free_vertices(
-      cdt, diagram, threads, order, [&](std::size_t i) { return vertices[i]; },
+      cdt, chunks, threads, order, [&](std::size_t i) { return vertices[i]; },
       [&](std::size_t i) -> const typename CDT::Point_2& { return targets[i]; }, passes, b);
 }
 

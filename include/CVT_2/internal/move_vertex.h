@@ -1,9 +1,7 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// Moving a free vertex in place: within its star, then edge flips back to constrained Delaunay.
+// Moving a free vertex in place, within its star: no edge, hence no constraint, is crossed.
 #ifndef CVT_2_INTERNAL_MOVE_VERTEX_H
 #define CVT_2_INTERNAL_MOVE_VERTEX_H
-
-#include <CVT_2/internal/prefetch.h>
 
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
@@ -12,107 +10,9 @@
 
 #include <algorithm>
 #include <utility>
-#include <vector>
 
 namespace CVT_2 {
 namespace internal {
-
-// An edge to examine: a face and an index, and the edge's vertices, which tell whether a flip
-// since has made (face, index) another edge.
-template <class CDT>
-struct Flip_candidate {
-  typename CDT::Face_handle f;
-  int i;
-  typename CDT::Vertex_handle a, b;
-
-  // The edge i of f, as it is now.
-  static Flip_candidate of(typename CDT::Face_handle f, int i) {
-    return {f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))};
-  }
-};
-
-// Lawson's flips: an edge on the stack that is not constrained and fails the (symbolically
-// perturbed) empty-circle test is flipped, and the four edges around it are examined in turn.
-// From any valid constrained triangulation this ends at the constrained Delaunay one.
-template <class CDT>
-void lawson_flips(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
-  using Face_handle = typename CDT::Face_handle;
-  while (!stack.empty()) {
-    Flip_candidate<CDT> e = stack.back();
-    stack.pop_back();
-    if (e.f->vertex(CDT::ccw(e.i)) != e.a || e.f->vertex(CDT::cw(e.i)) != e.b) {
-      if (!cdt.is_edge(e.a, e.b, e.f, e.i)) continue;  // flipped away
-    }
-    if (!cdt.is_flipable(e.f, e.i)) continue;
-    Face_handle f = e.f;
-    const Face_handle g = f->neighbor(e.i);
-    cdt.flip(f, e.i);
-    // The two faces now share the new edge; their four other edges are examined.
-    for (const Face_handle h : {f, g}) {
-      const int k = h->index(h == f ? g : f);
-      stack.push_back(Flip_candidate<CDT>::of(h, CDT::ccw(k)));
-      stack.push_back(Flip_candidate<CDT>::of(h, CDT::cw(k)));
-    }
-  }
-}
-
-// Calls visit(f) for every face f of [first, last), in memory order. The vertices and neighbors
-// of a face some steps ahead, then the neighbors' vertices opposite to it, are prefetched:
-// orientation and in-circle tests read all of them.
-template <class Face_iterator, class Visit>
-void for_each_face_prefetched(Face_iterator first, Face_iterator last, const Visit& visit) {
-  constexpr int distance = 8;
-  auto ahead = first, ahead2 = first;
-  for (int i = 0; i < 2 * distance && ahead != last; ++i) ++ahead;
-  for (int i = 0; i < distance && ahead2 != last; ++i) ++ahead2;
-  for (auto f = first; f != last; ++f) {
-    if (ahead != last) {
-      for (int i = 0; i < 3; ++i) {
-        prefetch(&*ahead->vertex(i));
-        prefetch(&*ahead->neighbor(i));
-      }
-      ++ahead;
-    }
-    if (ahead2 != last) {
-      for (int i = 0; i < 3; ++i) {
-        const auto g = ahead2->neighbor(i);
-        prefetch(&*g->vertex(g->index(ahead2)));
-      }
-      ++ahead2;
-    }
-    visit(f);
-  }
-}
-
-// Whether the domain face f is the one to test its unconstrained edge i, so that a pass over
-// the domain faces tests each edge once: the edge's only domain face, or of its two the one
-// that sees the edge's smaller endpoint in (x, y) order first, counterclockwise (the other sees
-// the endpoints the other way round). Not by address: the flips, hence the faces' layout and all
-// sums over them, must be the same from run to run.
-template <class CDT, class Less_xy>
-bool tests_edge(const CDT& cdt, typename CDT::Face_handle f, int i, const Less_xy& less_xy) {
-  if (f->is_constrained(i)) return false;
-  const auto g = f->neighbor(i);
-  return !g->is_inside_domain() || cdt.is_infinite(g) ||
-         !less_xy(f->vertex(CDT::cw(i))->point(), f->vertex(CDT::ccw(i))->point());
-}
-
-// Restores the constrained Delaunay property of the domain after its free vertices moved:
-// every edge with a domain face on its side is tested in place, and Lawson's flips start from
-// those that fail, so the stack holds only the few edges around flips.
-template <class CDT>
-void restore_delaunay(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
-  const auto less_xy = cdt.geom_traits().less_xy_2_object();
-  for_each_face_prefetched(cdt.finite_faces_begin(), cdt.finite_faces_end(),
-                           [&](typename CDT::Face_handle f) {
-    if (!f->is_inside_domain()) return;
-    for (int i = 0; i < 3; ++i) {
-      if (!tests_edge(cdt, f, i, less_xy) || !cdt.is_flipable(f, i)) continue;
-      stack.assign(1, Flip_candidate<CDT>::of(f, i));
-      lawson_flips(cdt, stack);
-    }
-  });
-}
 
 // Moves the free vertex v toward `target`, as far as its star stays valid: every face around v
 // keeps its orientation, so the move changes no topology and crosses no edge, constrained or

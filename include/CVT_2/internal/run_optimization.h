@@ -3,7 +3,9 @@
 #ifndef CVT_2_INTERNAL_RUN_OPTIMIZATION_H
 #define CVT_2_INTERNAL_RUN_OPTIMIZATION_H
 
+#include <CVT_2/Bvd_traits_2.h>
 #include <CVT_2/Lloyd_optimizer_2.h>
+#include <CVT_2/Optimization_result.h>
 #include <CVT_2/Sizing_field_density_2.h>
 #include <CVT_2/Uniform_density_2.h>
 #include <CVT_2/parameters.h>
@@ -14,9 +16,11 @@
 #include <cstddef>
 #include <functional>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 namespace CVT_2 {
 namespace internal {
@@ -29,19 +33,33 @@ inline std::size_t quadrature_resolution(double max_move_ratio, double p, std::s
   if (max_move_ratio >= 10 * p) return lo;
   if (max_move_ratio <= 2 * p) return hi;
   const double s = std::log(10 * p / max_move_ratio) / std::log(5.0);
-  return std::clamp(static_cast<std::size_t>(std::lround(double(lo) * std::pow(double(hi) / double(lo), s))), lo, hi);
+  return std::clamp(static_cast<std::size_t>(
+                        std::lround(double(lo) * std::pow(double(hi) / double(lo), s))),
+                    lo, hi);
 }
 
-// The options both optimizers read, with their defaults, checked.
+// A count option: an integer >= 0, or std::invalid_argument naming the option.
+template <class T>
+std::size_t checked_count(const T& value, const char* name) {
+  static_assert(std::is_integral_v<T>, "a count option takes an integer");
+  if constexpr (std::is_signed_v<T>)
+    if (value < 0)
+      throw std::invalid_argument(std::string(name) + " must be >= 0, not " +
+                                  std::to_string(value));
+  return static_cast<std::size_t>(value);
+}
+
+// The options both optimizers read; the defaults are written here only.
 struct Run_options {
   std::chrono::steady_clock::time_point start;
   std::size_t max_iterations = 1000;
-  double time_limit = 0;
-  double bound = 0.01;
-  std::size_t lo = 10, hi = 100;
+  double time_limit = 0;  // seconds; 0: none
+  double bound = 0.01;    // on the move ratios; 0: no such stop
+  std::size_t lo = 10, hi = 100;  // quadrature resolutions
   bool verbose = false;
   unsigned threads = 0;  // 0: one per core
-  std::function<bool(const Lloyd_result&)> callback;
+  std::size_t lbfgs_memory = 7;
+  std::function<bool(const Optimization_result&)> callback;
 };
 
 template <class NP>
@@ -49,43 +67,71 @@ Run_options read_run_options(const NP& np) {
   using namespace internal_np;
   Run_options o;
   o.start = std::chrono::steady_clock::now();
-  o.max_iterations = choose_parameter(get_parameter(np, number_of_iterations_t()), std::size_t(1000));
-  o.time_limit = choose_parameter(get_parameter(np, maximum_running_time_t()), 0.0);
-  o.bound = choose_parameter(get_parameter(np, move_ratio_bound_t()), 0.01);
-  o.lo = choose_parameter(get_parameter(np, minimum_quadrature_resolution_t()), std::size_t(10));
-  o.hi = choose_parameter(get_parameter(np, maximum_quadrature_resolution_t()), std::size_t(100));
-  o.verbose = choose_parameter(get_parameter(np, verbose_t()), false);
-  const auto threads = choose_parameter(get_parameter(np, number_of_threads_t()), 0);
-  if constexpr (std::is_signed_v<std::decay_t<decltype(threads)>>)
-    if (threads < 0) throw std::invalid_argument("number_of_threads must be >= 0, not " + std::to_string(threads));
-  o.threads = static_cast<unsigned>(threads);
-  o.callback =
-      choose_parameter(get_parameter(np, callback_t()), std::function<bool(const Lloyd_result&)>());
-  if (!(o.bound >= 0)) throw std::invalid_argument("move_ratio_bound must be >= 0, not " + std::to_string(o.bound));
-  if (!(o.time_limit >= 0)) throw std::invalid_argument("maximum_running_time must be >= 0 seconds, not " + std::to_string(o.time_limit));
+  o.max_iterations = checked_count(
+      choose_parameter(get_parameter(np, number_of_iterations_t()), o.max_iterations),
+      "number_of_iterations");
+  o.time_limit = choose_parameter(get_parameter(np, maximum_running_time_t()), o.time_limit);
+  o.bound = choose_parameter(get_parameter(np, move_ratio_bound_t()), o.bound);
+  o.lo = checked_count(choose_parameter(get_parameter(np, minimum_quadrature_resolution_t()), o.lo),
+                       "minimum_quadrature_resolution");
+  o.hi = checked_count(choose_parameter(get_parameter(np, maximum_quadrature_resolution_t()), o.hi),
+                       "maximum_quadrature_resolution");
+  o.verbose = choose_parameter(get_parameter(np, verbose_t()), o.verbose);
+  o.threads = static_cast<unsigned>(checked_count(
+      choose_parameter(get_parameter(np, number_of_threads_t()), o.threads), "number_of_threads"));
+  o.lbfgs_memory = checked_count(choose_parameter(get_parameter(np, lbfgs_memory_t()), o.lbfgs_memory),
+                                 "lbfgs_memory");
+  o.callback = choose_parameter(get_parameter(np, callback_t()), o.callback);
+  if (!(o.bound >= 0))
+    throw std::invalid_argument("move_ratio_bound must be >= 0, not " + std::to_string(o.bound));
+  if (!(o.time_limit >= 0))
+    throw std::invalid_argument("maximum_running_time must be >= 0 seconds, not " +
+                                std::to_string(o.time_limit));
   if (o.lo == 0 || o.hi < o.lo)
-    throw std::invalid_argument("quadrature resolutions must satisfy 1 <= minimum (" + std::to_string(o.lo) +
-                                ") <= maximum (" + std::to_string(o.hi) + ")");
+    throw std::invalid_argument("quadrature resolutions must satisfy 1 <= minimum (" +
+                                std::to_string(o.lo) + ") <= maximum (" + std::to_string(o.hi) +
+                                ")");
   return o;
 }
 
-// Calls run(rho, quadrature) with the density (`density`, or `sizing_field` as 1/mu^4, or
-// uniform) and the quadrature (`quadrature`, or the default for that density) of `np`.
-template <class K, class NP, class Run>
-decltype(auto) with_density_and_quadrature(const NP& np, Run&& run) {
+// The density of `np`: `density`, or `sizing_field` as 1/mu^4, or uniform.
+template <class K, class NP>
+auto read_density(const NP& np) {
   using namespace internal_np;
-  const auto go = [&](const auto& rho) -> decltype(auto) {
-    using Density = std::decay_t<decltype(rho)>;
-    const auto quadrature =
-        choose_parameter(get_parameter(np, quadrature_t()), Default_quadrature<K, Density>());
-    return run(rho, quadrature);
-  };
-  if constexpr (has_parameter<NP, sizing_field_t>) {
-    return go(make_sizing_field_density_2<K>(get_parameter(np, sizing_field_t())));
-  } else {
-    return go(choose_parameter(get_parameter(np, density_t()), Uniform_density_2<K>()));
-  }
+  static_assert(!(has_parameter<NP, density_t> && has_parameter<NP, sizing_field_t>),
+                "give either density() or sizing_field(), not both");
+  if constexpr (has_parameter<NP, sizing_field_t>)
+    return make_sizing_field_density_2<K>(get_parameter(np, sizing_field_t()));
+  else
+    return choose_parameter(get_parameter(np, density_t()), Uniform_density_2<K>());
 }
+
+// What both optimizers take from their named parameters: the policies, with their types, and
+// the options.
+template <class CDT, class NP>
+struct Optimization_parameters {
+  using K = typename CDT::Geom_traits;
+  using Density = decltype(read_density<K>(std::declval<const NP&>()));
+  using Quadrature = std::decay_t<decltype(internal_np::choose_parameter(
+      internal_np::get_parameter(std::declval<const NP&>(), internal_np::quadrature_t()),
+      Default_quadrature<K, Density>()))>;
+  using Traits = std::decay_t<decltype(internal_np::choose_parameter(
+      internal_np::get_parameter(std::declval<const NP&>(), internal_np::geom_traits_t()),
+      Bvd_traits_2<K>()))>;
+
+  explicit Optimization_parameters(const NP& np)
+      : options(read_run_options(np)),
+        density(read_density<K>(np)),
+        quadrature(internal_np::choose_parameter(
+            internal_np::get_parameter(np, internal_np::quadrature_t()), Quadrature())),
+        traits(internal_np::choose_parameter(
+            internal_np::get_parameter(np, internal_np::geom_traits_t()), Traits())) {}
+
+  Run_options options;
+  Density density;
+  Quadrature quadrature;
+  Traits traits;
+};
 
 // Lloyd iteration as run_optimization() drives it: a step moves to the centroids, evaluates.
 template <class Optimizer>
@@ -99,61 +145,60 @@ struct Lloyd_steps {
   std::size_t number_of_evaluations() const { return lloyd.number_of_evaluations(); }
 };
 
+// Why to stop after evaluation `e`, if at all; `r` holds the figures so far.
+template <class Evaluation>
+std::optional<Stop_reason> stop_reason(const Evaluation& e, const Optimization_result& r,
+                                       const Run_options& o) {
+  if (e.number_of_free_generators == 0) return NO_FREE_GENERATOR;
+  if (o.bound > 0 && e.max_move_ratio < o.bound) return CONVERGED;
+  if (r.number_of_iterations >= o.max_iterations) return MAX_ITERATIONS_REACHED;
+  if (o.time_limit > 0 && r.seconds >= o.time_limit) return TIME_LIMIT_REACHED;
+  if (o.callback && !o.callback(r)) return CALLBACK_REQUESTED_STOP;
+  return std::nullopt;
+}
+
+// The figures of evaluation `e` into `r`, and a line on std::clog if verbose.
+template <class Evaluation>
+void record(const Evaluation& e, std::size_t evaluations, const Run_options& o, const char* name,
+            Optimization_result& r) {
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - o.start).count();
+  r.energy = e.energy;
+  r.max_move_ratio = e.max_move_ratio;
+  r.mean_move_ratio = e.mean_move_ratio;
+  r.energy_history.push_back(e.energy);
+  r.max_move_ratio_history.push_back(e.max_move_ratio);
+  r.mean_move_ratio_history.push_back(e.mean_move_ratio);
+  r.number_of_evaluations = evaluations;
+  if (o.verbose)
+    std::clog << name << ": iteration " << r.number_of_iterations << " energy " << e.energy
+              << " max move ratio " << e.max_move_ratio << " resolution " << e.resolution << " "
+              << r.seconds << " s\n";
+}
+
 // The loop both optimizers run. `Optimizer` has evaluate(resolution), which evaluates the
 // generators where they are, and step(resolution), which moves them and evaluates them there;
-// both return a Lloyd_optimizer_2 Evaluation; number_of_evaluations() counts them. It stops by the paper's rule (every move ratio of
-// the last evaluation below the bound, confirmed at the highest resolution) or a limit, and
-// returns the figures of the final points.
+// both return a Lloyd_optimizer_2 Evaluation; number_of_evaluations() counts them. It stops by
+// the paper's rule (every move ratio of the last evaluation below the bound, confirmed at the
+// highest resolution) or a limit, and returns the figures of the final points.
 template <class Optimizer>
-Lloyd_result run_optimization(Optimizer& optimizer, const Run_options& o, const char* name) {
-  Lloyd_result r;
-  std::size_t resolution = o.lo;
-  auto e = optimizer.evaluate(resolution);
+Optimization_result run_optimization(Optimizer&& optimizer, const Run_options& o,
+                                     const char* name) {
+  Optimization_result r;
+  auto e = optimizer.evaluate(o.lo);
   while (true) {
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - o.start).count();
-    if (o.bound > 0 && e.max_move_ratio < o.bound && resolution < o.hi && e.number_of_free_generators > 0) {
-      resolution = o.hi;  // converged at a low resolution: confirm at the highest before stopping
-      e = optimizer.evaluate(resolution);
+    if (o.bound > 0 && e.max_move_ratio < o.bound && e.resolution < o.hi &&
+        e.number_of_free_generators > 0) {
+      e = optimizer.evaluate(o.hi);  // converged at a low resolution: confirm at the highest
       continue;
     }
-    r.energy = e.energy;
-    r.max_move_ratio = e.max_move_ratio;
-    r.mean_move_ratio = e.mean_move_ratio;
-    r.energy_history.push_back(e.energy);
-    r.max_move_ratio_history.push_back(e.max_move_ratio);
-    r.mean_move_ratio_history.push_back(e.mean_move_ratio);
-    r.seconds = seconds;
-    r.number_of_evaluations = optimizer.number_of_evaluations();
-    if (o.verbose)
-      std::clog << name << ": iteration " << r.number_of_iterations << " energy " << e.energy
-                << " max move ratio " << e.max_move_ratio << " resolution " << resolution << " "
-                << seconds << " s\n";
-    if (e.number_of_free_generators == 0) {
-      r.stop_reason = NO_FREE_GENERATOR;
-      break;
+    record(e, optimizer.number_of_evaluations(), o, name, r);
+    if (const auto reason = stop_reason(e, r, o)) {
+      r.stop_reason = *reason;
+      return r;
     }
-    if (o.bound > 0 && e.max_move_ratio < o.bound) {
-      r.stop_reason = CONVERGED;
-      break;
-    }
-    if (r.number_of_iterations >= o.max_iterations) {
-      r.stop_reason = MAX_ITERATIONS_REACHED;
-      break;
-    }
-    if (o.time_limit > 0 && seconds >= o.time_limit) {
-      r.stop_reason = TIME_LIMIT_REACHED;
-      break;
-    }
-    if (o.callback && !o.callback(r)) {
-      r.stop_reason = CALLBACK_REQUESTED_STOP;
-      break;
-    }
-    resolution = quadrature_resolution(e.max_move_ratio, o.bound, o.lo, o.hi);
-    e = optimizer.step(resolution);
+    e = optimizer.step(quadrature_resolution(e.max_move_ratio, o.bound, o.lo, o.hi));
     ++r.number_of_iterations;
   }
-  return r;
 }
 
 }  // namespace internal

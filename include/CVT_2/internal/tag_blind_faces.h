@@ -19,42 +19,60 @@ bool is_same_constraint(const typename CDT::Edge& e1, const typename CDT::Edge& 
   return (a1 == a2 && b1 == b2) || (a1 == b2 && b1 == a2);
 }
 
-// Alg. 1: the faces blinded by a constrained edge e are connected through unconstrained edges
-// and reach e (the Voronoi diagram of their vertices on one side of e is a tree rooted at the
-// dual ray of e), so a stack walk from each side of e finds them all. A face can be blinded by
-// several nested constraints; it keeps the first one met on the way to its circumcenter, which
-// is where Algorithm 2 must clip. The walk therefore goes on through faces tagged by another
-// constraint, and remembers them in `elsewhere` so as to visit each face once per walk.
-// Returns the number of blinded faces. `on_face(f)` is called for every face in memory order
-// as its tag is cleared, first of all (the caller's chance to pass over the faces for free).
-template <class CDT, class Traits, class OnFace>
-std::size_t tag_blind_faces(const CDT& cdt, const Traits& traits, const OnFace& on_face) {
-  using Face_handle = typename CDT::Face_handle;
-  using Edge = typename CDT::Edge;
-  const auto is_blinded = traits.is_blinded_2_object();
-  const auto compare = traits.compare_blinding_distance_2_object();
+// Which of two blinding edges a face keeps: the first one met on the way to its circumcenter,
+// where Algorithm 2 must clip (with nested constraints the farther one is not). True if e, met
+// now, replaces the face's tag t.
+template <class CDT, class Traits>
+bool blinds_first(const Traits& traits, typename CDT::Face_handle f, const typename CDT::Edge& e,
+                  const typename CDT::Edge& t) {
+  if (is_same_constraint<CDT>(t, e)) return false;
+  const auto& a = e.first->vertex(CDT::ccw(e.second))->point();
+  const auto& b = e.first->vertex(CDT::cw(e.second))->point();
+  const auto& ta = t.first->vertex(CDT::ccw(t.second))->point();
+  const auto& tb = t.first->vertex(CDT::cw(t.second))->point();
+  return traits.compare_blinding_distance_2_object()(f->vertex(0)->point(), f->vertex(1)->point(),
+                                                     f->vertex(2)->point(), a, b, ta,
+                                                     tb) == CGAL::SMALLER;
+}
 
-  // One pass over the faces: clear the tags (writing only to the faces that have one), and
-  // list the sides of constrained edges that domain faces lie on.
-  std::vector<Edge> sides;
+// Clears every tag (writing only to the faces that have one) and returns the sides of
+// constrained edges that domain faces lie on: Algorithm 1's loop runs over them.
+template <class CDT>
+std::vector<typename CDT::Edge> clear_tags_and_list_constraint_sides(const CDT& cdt) {
+  std::vector<typename CDT::Edge> sides;
   const bool planar = cdt.dimension() == 2;
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) {
     if (f->is_blinded()) f->clear_blinding();
-    on_face(f);
     if (planar && f->is_inside_domain() && !cdt.is_infinite(f))
       for (int i = 0; i < 3; ++i)
         if (f->is_constrained(i)) sides.emplace_back(f, i);
   }
-  if (!planar) return 0;
+  return sides;
+}
 
-  std::size_t count = 0;
-  std::vector<Face_handle> stack;
-  std::unordered_set<Face_handle> elsewhere;  // blinded by e, but first by another constraint
+// Algorithm 1: tags every face of the domain that a constraint hides from its circumcenter with
+// the first such constraint; returns the number of blinded faces.
+//
+// The faces blinded by a constrained edge e are connected through unconstrained edges and reach
+// e (the Voronoi diagram of their vertices on one side of e is a tree rooted at the dual ray of
+// e), so a stack walk from each side of e finds them all. A face can be blinded by several
+// nested constraints; it keeps the first one met (blinds_first). The walk therefore goes on
+// through faces tagged by another constraint, and remembers them in `elsewhere` so as to visit
+// each face once per walk.
+template <class CDT, class Traits>
+std::size_t tag_blind_faces(const CDT& cdt, const Traits& traits) {
+  using Face_handle = typename CDT::Face_handle;
+  using Edge = typename CDT::Edge;
+  const auto is_blinded = traits.is_blinded_2_object();
+  const std::vector<Edge> sides = clear_tags_and_list_constraint_sides(cdt);
   const auto tagged_by = [](Face_handle f, const Edge& e) {
     if (!f->is_blinded()) return false;
     const Edge t = f->blinding_edge();
     return t.first == e.first && t.second == e.second;
   };
+  std::size_t count = 0;
+  std::vector<Face_handle> stack;
+  std::unordered_set<Face_handle> elsewhere;  // blinded by e, but first by another constraint
   for (const Edge& e : sides) {
     const auto& a = e.first->vertex(CDT::ccw(e.second))->point();
     const auto& b = e.first->vertex(CDT::cw(e.second))->point();
@@ -64,21 +82,15 @@ std::size_t tag_blind_faces(const CDT& cdt, const Traits& traits, const OnFace& 
       const Face_handle f = stack.back();
       stack.pop_back();
       if (tagged_by(f, e) || elsewhere.count(f) != 0) continue;
-      const auto& p = f->vertex(0)->point();
-      const auto& q = f->vertex(1)->point();
-      const auto& r = f->vertex(2)->point();
-      if (!is_blinded(p, q, r, a, b)) continue;
+      if (!is_blinded(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(), a, b))
+        continue;
       if (!f->is_blinded()) {
         f->set_blinding_edge(e);
         ++count;
+      } else if (blinds_first<CDT>(traits, f, e, f->blinding_edge())) {
+        f->set_blinding_edge(e);
       } else {
-        const Edge t = f->blinding_edge();
-        const auto& ta = t.first->vertex(CDT::ccw(t.second))->point();
-        const auto& tb = t.first->vertex(CDT::cw(t.second))->point();
-        if (!is_same_constraint<CDT>(t, e) && compare(p, q, r, a, b, ta, tb) == CGAL::SMALLER)
-          f->set_blinding_edge(e);
-        else
-          elsewhere.insert(f);
+        elsewhere.insert(f);
       }
       for (int i = 0; i < 3; ++i) {
         const Face_handle n = f->neighbor(i);

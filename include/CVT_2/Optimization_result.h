@@ -1,0 +1,65 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Optimization_result: what lloyd_optimize_2() and lbfgs_optimize_2() return, and why they stop.
+#ifndef CVT_2_OPTIMIZATION_RESULT_H
+#define CVT_2_OPTIMIZATION_RESULT_H
+
+#include <cstddef>
+#include <vector>
+
+namespace CVT_2 {
+
+/// \ingroup PkgCvt2Ref
+/// Why an optimization stopped.
+enum Stop_reason {
+  CONVERGED,                ///< every free generator's move ratio is below the bound
+  MAX_ITERATIONS_REACHED,   ///< `number_of_iterations` moves were done
+  TIME_LIMIT_REACHED,       ///< `maximum_running_time` passed
+  CALLBACK_REQUESTED_STOP,  ///< the callback returned `false`
+  NO_FREE_GENERATOR         ///< nothing can move
+};
+
+/// \ingroup PkgCvt2Ref
+/// The name `Stop_reason` had before L-BFGS shared it.
+using Lloyd_stop_reason = Stop_reason;
+
+/// \ingroup PkgCvt2Ref
+/// A short name of `reason` for messages and logs: `converged`, `max_iterations`,
+/// `time_limit`, `callback` or `no_free_generator`.
+inline const char* to_string(Stop_reason reason) {
+  switch (reason) {
+    case CONVERGED: return "converged";
+    case MAX_ITERATIONS_REACHED: return "max_iterations";
+    case TIME_LIMIT_REACHED: return "time_limit";
+    case CALLBACK_REQUESTED_STOP: return "callback";
+    case NO_FREE_GENERATOR: return "no_free_generator";
+  }
+  return "unknown";
+}
+
+/// \ingroup PkgCvt2Ref
+/// What an optimization (`lloyd_optimize_2()`, `lbfgs_optimize_2()`) did. The figures describe
+/// the generators as they are at the end: an independent evaluation of the final points finds
+/// the same energy and move ratios.
+struct Optimization_result {
+  std::size_t number_of_iterations = 0;  ///< moves of all free generators done
+  /// evaluations of the diagram, energy and centroids done (one per Lloyd iteration, plus the
+  /// first and a confirmation at the highest quadrature resolution; L-BFGS adds its line
+  /// searches)
+  std::size_t number_of_evaluations = 0;
+  Stop_reason stop_reason = MAX_ITERATIONS_REACHED;  ///< why it stopped
+  double energy = 0;           ///< \f$E = \sum_i \int_{V_i} \rho(y)\|y - x_i\|^2 dy\f$, all cells
+  double max_move_ratio = 0;   ///< \f$\max_i mr(x_i)\f$ over free generators
+  double mean_move_ratio = 0;  ///< the mean of \f$mr(x_i)\f$ over free generators
+  std::vector<double> energy_history;           ///< one per evaluation, the first before any move
+  std::vector<double> max_move_ratio_history;   ///< likewise
+  std::vector<double> mean_move_ratio_history;  ///< likewise
+  double seconds = 0;                           ///< running time
+};
+
+/// \ingroup PkgCvt2Ref
+/// The name `Optimization_result` had before L-BFGS shared it.
+using Lloyd_result = Optimization_result;
+
+}  // namespace CVT_2
+
+#endif  // CVT_2_OPTIMIZATION_RESULT_H

@@ -1,0 +1,61 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Face_chunks: the faces of a triangulation cut into runs, in memory order, for parallel passes.
+#ifndef CVT_2_INTERNAL_FACE_CHUNKS_H
+#define CVT_2_INTERNAL_FACE_CHUNKS_H
+
+#include <CVT_2/internal/run_chunks.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CVT_2 {
+namespace internal {
+
+// The faces of a triangulation (infinite ones included) in runs of `chunk_size`, in memory
+// order, for passes that run on several threads. A chunk has a fixed size, so that chunks, and
+// any sum made chunk by chunk and then over the chunks in order, do not depend on the number
+// of threads. Moving vertices and flipping edges create and delete no face, so the chunks stay
+// valid across them; inserting or removing vertices invalidates them.
+template <class CDT>
+class Face_chunks {
+ public:
+  using Face_iterator = typename CDT::All_faces_iterator;
+  static constexpr std::size_t chunk_size = 4096;
+
+  Face_chunks() = default;
+  explicit Face_chunks(const CDT& cdt) { update(cdt); }
+
+  // Cuts the faces of `cdt` into chunks again.
+  void update(const CDT& cdt) {
+    m_cdt = &cdt;
+    m_starts.clear();
+    if (cdt.dimension() < 2) return;
+    std::size_t i = 0;
+    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f, ++i)
+      if (i % chunk_size == 0) m_starts.push_back(f);
+  }
+
+  std::size_t size() const { return m_starts.size(); }  // the number of chunks
+
+  // Calls visit(chunk, first, last) for every chunk, with the range of its faces, on `threads`
+  // threads (0: one per core; 1: in order, in this thread), as run_chunks() does: `visit` must
+  // allow concurrent calls for different chunks, and writing to an output of its own chunk
+  // makes the outcome independent of the threads.
+  template <class Visit>
+  void for_each(const Visit& visit, unsigned threads) const {
+    run_chunks(m_starts.size(), threads, [&](std::size_t c) {
+      const Face_iterator last =
+          c + 1 < m_starts.size() ? m_starts[c + 1] : m_cdt->all_faces_end();
+      visit(c, m_starts[c], last);
+    });
+  }
+
+ private:
+  const CDT* m_cdt = nullptr;
+  std::vector<Face_iterator> m_starts;  // the first face of each chunk
+};
+
+}  // namespace internal
+}  // namespace CVT_2
+
+#endif  // CVT_2_INTERNAL_FACE_CHUNKS_H

@@ -1,0 +1,103 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Edge flips back to the constrained Delaunay property after free vertices moved.
+#ifndef CVT_2_INTERNAL_DELAUNAY_FLIPS_H
+#define CVT_2_INTERNAL_DELAUNAY_FLIPS_H
+
+#include <CVT_2/internal/prefetch.h>
+
+#include <vector>
+
+// CGAL's own CDT::propagating_flip(f, i) follows only the edges opposite one new vertex, as after
+// an insertion, while a moved vertex can break edges anywhere in its link; its List_edges
+// overload orders the edges by face address, which would make the flips, and so every later
+// result, depend on where the allocator put the faces. Hence Lawson's flips from a stack here.
+
+namespace CVT_2 {
+namespace internal {
+
+// An edge to examine: a face and an index, and the edge's vertices, which tell whether a flip
+// since has made (face, index) another edge.
+template <class CDT>
+struct Flip_candidate {
+  typename CDT::Face_handle f;
+  int i;
+  typename CDT::Vertex_handle a, b;
+
+  // The edge i of f, as it is now.
+  static Flip_candidate of(typename CDT::Face_handle f, int i) {
+    return {f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))};
+  }
+};
+
+// Lawson's flips: an edge on the stack that is not constrained and fails the (symbolically
+// perturbed) empty-circle test is flipped, and the four edges around it are examined in turn.
+// From any valid constrained triangulation this ends at the constrained Delaunay one.
+template <class CDT>
+void lawson_flips(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
+  using Face_handle = typename CDT::Face_handle;
+  while (!stack.empty()) {
+    Flip_candidate<CDT> e = stack.back();
+    stack.pop_back();
+    if (e.f->vertex(CDT::ccw(e.i)) != e.a || e.f->vertex(CDT::cw(e.i)) != e.b) {
+      if (!cdt.is_edge(e.a, e.b, e.f, e.i)) continue;  // flipped away
+    }
+    if (!cdt.is_flipable(e.f, e.i)) continue;
+    Face_handle f = e.f;
+    const Face_handle g = f->neighbor(e.i);
+    cdt.flip(f, e.i);
+    // The two faces now share the new edge; their four other edges are examined.
+    for (const Face_handle h : {f, g}) {
+      const int k = h->index(h == f ? g : f);
+      stack.push_back(Flip_candidate<CDT>::of(h, CDT::ccw(k)));
+      stack.push_back(Flip_candidate<CDT>::of(h, CDT::cw(k)));
+    }
+  }
+}
+
+// Pushes every edge of the faces around v on the stack: the edges whose in-circle tests a move
+// of v changes.
+template <class CDT>
+void push_star_edges(const CDT& cdt, typename CDT::Vertex_handle v,
+                     std::vector<Flip_candidate<CDT>>& stack) {
+  auto fc = cdt.incident_faces(v), end = fc;
+  do {
+    const typename CDT::Face_handle f = fc;
+    for (int j = 0; j < 3; ++j) stack.push_back(Flip_candidate<CDT>::of(f, j));
+  } while (++fc != end);
+}
+
+// Whether the domain face f is the one to test its unconstrained edge i, so that a pass over
+// the domain faces tests each edge once: the edge's only domain face, or of its two the one
+// that sees the edge's smaller endpoint in (x, y) order first, counterclockwise (the other sees
+// the endpoints the other way round). Not by address: the flips, hence the faces' layout and all
+// sums over them, must be the same from run to run.
+template <class CDT, class Less_xy>
+bool tests_edge(const CDT& cdt, typename CDT::Face_handle f, int i, const Less_xy& less_xy) {
+  if (f->is_constrained(i)) return false;
+  const auto g = f->neighbor(i);
+  return !g->is_inside_domain() || cdt.is_infinite(g) ||
+         !less_xy(f->vertex(CDT::cw(i))->point(), f->vertex(CDT::ccw(i))->point());
+}
+
+// Restores the constrained Delaunay property of the domain after its free vertices moved:
+// every edge with a domain face on its side is tested in place, and Lawson's flips start from
+// those that fail, so the stack holds only the few edges around flips.
+template <class CDT>
+void restore_delaunay(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
+  const auto less_xy = cdt.geom_traits().less_xy_2_object();
+  for_each_face_prefetched(cdt.finite_faces_begin(), cdt.finite_faces_end(),
+                           [&](typename CDT::Face_handle f) {
+                             if (!f->is_inside_domain()) return;
+                             for (int i = 0; i < 3; ++i) {
+                               if (!tests_edge(cdt, f, i, less_xy) || !cdt.is_flipable(f, i))
+                                 continue;
+                               stack.assign(1, Flip_candidate<CDT>::of(f, i));
+                               lawson_flips(cdt, stack);
+                             }
+                           });
+}
+
+}  // namespace internal
+}  // namespace CVT_2
+
+#endif  // CVT_2_INTERNAL_DELAUNAY_FLIPS_H
