@@ -294,11 +294,12 @@ class Boundary_lipschitz_sizing_2 {
 
   void initialize(std::vector<Segment_2> segments, const FT& k, const std::optional<FT>& size) {
     if (!is_positive_finite(k))
-      throw std::invalid_argument("Boundary_lipschitz_sizing_2: k = " + internal::number_to_string(k) +
-                                  " must be positive and finite");
+      throw std::invalid_argument("Boundary_lipschitz_sizing_2: k = " +
+                                  internal::number_to_string(k) + " must be positive and finite");
     if (size && !is_positive_finite(*size))
-      throw std::invalid_argument("Boundary_lipschitz_sizing_2: size = " + internal::number_to_string(*size) +
-                                  " must be positive and finite");
+      throw std::invalid_argument(
+          "Boundary_lipschitz_sizing_2: size = " + internal::number_to_string(*size) +
+          " must be positive and finite");
     if (segments.empty()) throw Domain_error("Boundary_lipschitz_sizing_2: no boundary segment");
     auto data = std::make_shared<Data>();
     data->k = k;

@@ -9,10 +9,10 @@
 #include <CVT_2/Concepts/BvdTraits_2.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/insert_generators_2.h>
-#include <CVT_2/mark_domain_2.h>
 #include <CVT_2/internal/construct_cell.h>
 #include <CVT_2/internal/for_each_cell_in_faces.h>
 #include <CVT_2/internal/tag_blind_faces.h>
+#include <CVT_2/mark_domain_2.h>
 
 #include <CGAL/Polygon_2.h>
 #include <CGAL/circulator.h>
@@ -58,14 +58,14 @@ class Bounded_voronoi_diagram_2 {
                 "Point_2 construct_circumcenter_2_object()(p, q, r)");
 
  public:
-  using Triangulation = CDT;                                   ///< the triangulation type
-  using Geom_traits = Traits;                                  ///< the traits type
-  using FT = typename Traits::FT;                              ///< the number type
-  using Point_2 = typename Traits::Point_2;                     ///< the point type
+  using Triangulation = CDT;                                     ///< the triangulation type
+  using Geom_traits = Traits;                                    ///< the traits type
+  using FT = typename Traits::FT;                                ///< the number type
+  using Point_2 = typename Traits::Point_2;                      ///< the point type
   using Polygon_2 = CGAL::Polygon_2<typename CDT::Geom_traits>;  ///< a cell as a polygon
-  using Vertex_handle = typename CDT::Vertex_handle;           ///< a generator
-  using Face_handle = typename CDT::Face_handle;               ///< a face of the triangulation
-  using Edge = typename CDT::Edge;                             ///< an edge of the triangulation
+  using Vertex_handle = typename CDT::Vertex_handle;             ///< a generator
+  using Face_handle = typename CDT::Face_handle;                 ///< a face of the triangulation
+  using Edge = typename CDT::Edge;                               ///< an edge of the triangulation
 
   /// A vertex of a cell.
   struct Cell_vertex {
@@ -126,7 +126,7 @@ class Bounded_voronoi_diagram_2 {
     bool operator==(std::nullptr_t) const { return m_cell == nullptr; }  // empty cell
     bool operator!=(std::nullptr_t) const { return m_cell != nullptr; }
     size_type size() const { return m_cell ? m_cell->size() : 0; }  ///< the cell's vertex count
-    /// @}
+                                                                    /// @}
 
    private:
     friend class Bounded_voronoi_diagram_2;
@@ -145,8 +145,8 @@ class Bounded_voronoi_diagram_2 {
   /// Tags the blind faces again, after the triangulation or its domain changed.
   void update() { m_number_of_blinded_faces = internal::tag_blind_faces(m_cdt, m_traits); }
 
-  const CDT& triangulation() const { return m_cdt; }         ///< the triangulation
-  const Traits& geom_traits() const { return m_traits; }     ///< the traits
+  const CDT& triangulation() const { return m_cdt; }      ///< the triangulation
+  const Traits& geom_traits() const { return m_traits; }  ///< the traits
   /// the number of domain faces that a constraint hides from their circumcenter
   std::size_t number_of_blinded_faces() const { return m_number_of_blinded_faces; }
 
@@ -169,8 +169,7 @@ class Bounded_voronoi_diagram_2 {
   template <class Visitor>
   void for_each_cell(Visitor visit) const {
     if (m_cdt.dimension() < 2) return;
-    internal::for_each_cell_in_faces(*this, m_cdt.all_faces_begin(), m_cdt.all_faces_end(),
-                                     visit);
+    internal::for_each_cell_in_faces(*this, m_cdt.all_faces_begin(), m_cdt.all_faces_end(), visit);
   }
 
   /// A circulator over the cell of `v`, counterclockwise; equal to `nullptr` if `v` has no cell.

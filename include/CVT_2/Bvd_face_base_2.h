@@ -30,7 +30,7 @@ namespace CVT_2 {
 template <class Gt, class Fb = CGAL::Constrained_triangulation_face_base_2<Gt>>
 class Bvd_face_base_2 : public Fb {
  public:
-  using Geom_traits = Gt;                             ///< the geometric traits
+  using Geom_traits = Gt;                            ///< the geometric traits
   using Vertex_handle = typename Fb::Vertex_handle;  ///< a vertex of the TDS
   using Face_handle = typename Fb::Face_handle;      ///< a face of the TDS
   using Edge = std::pair<Face_handle, int>;          ///< an edge, as a face and an index

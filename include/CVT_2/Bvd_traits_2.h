@@ -102,9 +102,8 @@ struct Bvd_traits_2 : K {
 
  public:
   /// The predicate \f$\mathcal{P}\f$, filtered.
-  using Is_blinded_2 =
-      CGAL::Filtered_predicate<internal::Is_blinded_2<Exact_kernel>,
-                               internal::Is_blinded_2<Interval_kernel>, C2E, C2A>;
+  using Is_blinded_2 = CGAL::Filtered_predicate<internal::Is_blinded_2<Exact_kernel>,
+                                                internal::Is_blinded_2<Interval_kernel>, C2E, C2A>;
   /// Which of two blinding segments comes first, filtered.
   using Compare_blinding_distance_2 =
       CGAL::Filtered_predicate<internal::Compare_blinding_distance_2<Exact_kernel>,
@@ -132,7 +131,8 @@ struct Bvd_traits_2 : K {
                      sd = std::abs(qx * ry) + std::abs(qy * rx);
         const double dx = qx - rx, dy = qy - ry;
         const double shortest2 = std::min({q2, r2, dx * dx + dy * dy});
-        if (!internal::accurate_quotients(cx, cy, sx, sy, den, sd, shortest2)) return exact(p, q, r);
+        if (!internal::accurate_quotients(cx, cy, sx, sy, den, sd, shortest2))
+          return exact(p, q, r);
       }
       return Point_2(p.x() + internal::scaled(cx, e), p.y() + internal::scaled(cy, e));
     }

@@ -1,5 +1,6 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// Cell_moments_2: mass, first moment and energy of a cell under a density, relative to its generator.
+// Cell_moments_2: mass, first moment and energy of a cell under a density, relative to its
+// generator.
 #ifndef CVT_2_CELL_MOMENTS_2_H
 #define CVT_2_CELL_MOMENTS_2_H
 
@@ -12,9 +13,9 @@ namespace CVT_2 {
 /// `energy` \f$= \int_V \rho(y)\|y - x\|^2 dy\f$. The centroid is `x + first_moment / mass`.
 template <class K>
 struct Cell_moments_2 {
-  typename K::FT mass = 0;                 ///< \f$\int_V \rho\f$
+  typename K::FT mass = 0;                  ///< \f$\int_V \rho\f$
   typename K::Vector_2 first_moment{0, 0};  ///< \f$\int_V \rho(y)(y - x)\,dy\f$
-  typename K::FT energy = 0;               ///< \f$\int_V \rho(y)\|y - x\|^2 dy\f$
+  typename K::FT energy = 0;                ///< \f$\int_V \rho(y)\|y - x\|^2 dy\f$
 
   /// adds the moments of another part of the cell, relative to the same generator
   Cell_moments_2& operator+=(const Cell_moments_2& m) {

@@ -117,6 +117,7 @@ class Lbfgs_optimizer_2 {
     const bool descent =
         m_history.size() > 0 && m_history.direction(m_current.g, m_current.h, m_direction);
     if (!descent) {
+      if (m_history.size() > 0) ++m_restarts;
       m_history.clear();
       lloyd_step(resolution);
     } else if (!line_search(resolution)) {
@@ -133,16 +134,21 @@ class Lbfgs_optimizer_2 {
   void set_number_of_threads(unsigned n) { m_lloyd.set_number_of_threads(n); }
   unsigned number_of_threads() const { return m_lloyd.number_of_threads(); }  ///< as set
 
-  const Evaluation& last_evaluation() const { return m_current.evaluation; }  ///< of the current point
+  const Evaluation& last_evaluation() const {
+    return m_current.evaluation;
+  }  ///< of the current point
   /// evaluations done so far
   std::size_t number_of_evaluations() const { return m_lloyd.number_of_evaluations(); }
-  std::size_t number_of_steps() const { return m_steps; }              ///< done so far
+  std::size_t number_of_steps() const { return m_steps; }  ///< done so far
   /// the steps whose line search failed and that were Lloyd steps instead
   std::size_t number_of_fallbacks() const { return m_fallbacks; }
+  /// the steps whose quasi-Newton direction did not go downhill and that were Lloyd steps
+  /// instead (with positive curvature pairs it always does, up to rounding)
+  std::size_t number_of_restarts() const { return m_restarts; }
   std::size_t memory() const { return m_history.capacity(); }  ///< the most curvature pairs kept
   std::size_t number_of_curvature_pairs() const { return m_history.size(); }  ///< kept now
-  const Diagram& diagram() const { return m_lloyd.diagram(); }  ///< as last evaluated
-  const CDT& triangulation() const { return m_cdt; }           ///< the triangulation
+  const Diagram& diagram() const { return m_lloyd.diagram(); }                ///< as last evaluated
+  const CDT& triangulation() const { return m_cdt; }                          ///< the triangulation
 
  private:
   static constexpr std::size_t max_passes = 8;    // of moves and flips toward the targets
@@ -263,7 +269,8 @@ class Lbfgs_optimizer_2 {
       move_to_targets(max_passes);
       evaluate_trial(resolution);
       double slope = 0;  // g . s, with the displacement done
-      for (std::size_t j = 0; j < 2 * n; ++j) slope += m_current.g[j] * (m_trial.x[j] - m_current.x[j]);
+      for (std::size_t j = 0; j < 2 * n; ++j)
+        slope += m_current.g[j] * (m_trial.x[j] - m_current.x[j]);
       if (m_trial.evaluation.energy <= e0 + armijo * std::min(slope, 0.0)) {
         accept();
         return true;
@@ -284,7 +291,7 @@ class Lbfgs_optimizer_2 {
   std::vector<std::size_t> m_order;  // the numbers in the last evaluation's visit order
   std::vector<std::size_t> m_previous_order, m_position;  // the one before, and its inverse
   internal::Move_buffers<CDT> m_buffers;
-  std::size_t m_steps = 0, m_fallbacks = 0;
+  std::size_t m_steps = 0, m_fallbacks = 0, m_restarts = 0;
 };
 
 }  // namespace CVT_2

@@ -1,5 +1,6 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// Lloyd_optimizer_2: Lloyd iteration on a bounded Voronoi diagram, one evaluation or move at a time.
+// Lloyd_optimizer_2: Lloyd iteration on a bounded Voronoi diagram, one evaluation or move at a
+// time.
 #ifndef CVT_2_LLOYD_OPTIMIZER_2_H
 #define CVT_2_LLOYD_OPTIMIZER_2_H
 
@@ -46,9 +47,8 @@ struct Checked_density {
 };
 
 template <class K, class Density>
-using Default_quadrature =
-    std::conditional_t<is_uniform_density<Density>::value, Exact_quadrature_2<K>,
-                       Midpoint_quadrature_2<K>>;
+using Default_quadrature = std::conditional_t<is_uniform_density<Density>::value,
+                                              Exact_quadrature_2<K>, Midpoint_quadrature_2<K>>;
 
 }  // namespace internal
 
@@ -79,14 +79,14 @@ template <class CDT, class Density = Uniform_density_2<typename CDT::Geom_traits
           class Traits = Bvd_traits_2<typename CDT::Geom_traits>>
 class Lloyd_optimizer_2 {
  public:
-  using Triangulation = CDT;                                ///< the triangulation type
-  using Kernel = typename CDT::Geom_traits;                 ///< its kernel
-  using FT = typename Kernel::FT;                           ///< number type
-  using Point_2 = typename Kernel::Point_2;                 ///< point type
-  using Vertex_handle = typename CDT::Vertex_handle;        ///< a generator
+  using Triangulation = CDT;                               ///< the triangulation type
+  using Kernel = typename CDT::Geom_traits;                ///< its kernel
+  using FT = typename Kernel::FT;                          ///< number type
+  using Point_2 = typename Kernel::Point_2;                ///< point type
+  using Vertex_handle = typename CDT::Vertex_handle;       ///< a generator
   using Diagram = Bounded_voronoi_diagram_2<CDT, Traits>;  ///< the diagram it iterates on
-  using Density_function = Density;                         ///< the density policy
-  using Cell_quadrature = Quadrature;                       ///< the quadrature policy
+  using Density_function = Density;                        ///< the density policy
+  using Cell_quadrature = Quadrature;                      ///< the quadrature policy
 
   static_assert(is_density_function_2<Density, Kernel>::value,
                 "Density must model DensityFunction_2: FT operator()(const Point_2&) const");
@@ -97,9 +97,9 @@ class Lloyd_optimizer_2 {
 
   /// What one evaluation found.
   struct Evaluation {
-    double energy = 0;           ///< of all cells
-    double max_move_ratio = 0;   ///< over the free generators
-    double mean_move_ratio = 0;  ///< over the free generators
+    double energy = 0;                          ///< of all cells
+    double max_move_ratio = 0;                  ///< over the free generators
+    double mean_move_ratio = 0;                 ///< over the free generators
     std::size_t number_of_free_generators = 0;  ///< that have a cell
     std::size_t resolution = 0;                 ///< the quadrature resolution used
   };
@@ -217,9 +217,10 @@ auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::evaluate(std::size_t r
   m_chunk_sums.assign(m_chunks.size(), Chunk());
   m_chunks.for_each(
       [&](std::size_t c, auto first, auto last) {
-        internal::for_each_cell_in_faces(m_diagram, first, last, [&](Vertex_handle v, const auto& cell) {
-          m_chunk_sums[c].add(cell_figures(v, cell, resolution));
-        });
+        internal::for_each_cell_in_faces(m_diagram, first, last,
+                                         [&](Vertex_handle v, const auto& cell) {
+                                           m_chunk_sums[c].add(cell_figures(v, cell, resolution));
+                                         });
       },
       m_number_of_threads);
   m_evaluation = Evaluation();
@@ -231,8 +232,10 @@ auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::evaluate(std::size_t r
 // The moments of the cell of v, checked, and for a free generator its centroid and move ratio.
 template <class CDT, class Density, class Quadrature, class Traits>
 template <class Cell>
-auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::cell_figures(
-    Vertex_handle v, const Cell& cell, std::size_t resolution) const -> Cell_figures {
+auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::cell_figures(Vertex_handle v,
+                                                                       const Cell& cell,
+                                                                       std::size_t resolution) const
+    -> Cell_figures {
   Cell_points points;
   Cell_figures f;
   f.is_free = true;
@@ -252,8 +255,7 @@ auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::cell_figures(
   const typename Kernel::Vector_2 shift =
       f.mass > 0 ? m.first_moment / m.mass : typename Kernel::Vector_2(CGAL::NULL_VECTOR);
   const double diameter2 = squared_diameter(points);
-  f.move_ratio =
-      diameter2 > 0 ? std::sqrt(CGAL::to_double(shift.squared_length()) / diameter2) : 0;
+  f.move_ratio = diameter2 > 0 ? std::sqrt(CGAL::to_double(shift.squared_length()) / diameter2) : 0;
   f.generator = {v, v->point() + shift, m.mass};
   return f;
 }
@@ -320,8 +322,9 @@ std::string Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::bad_moments_mes
                      internal::number_to_string(mass) + " and energy " +
                      internal::number_to_string(energy);
   if (overflow)
-    return what + ": its moments do not fit in double precision (the domain's size or the "
-                  "density's range is too extreme for Lloyd iteration)";
+    return what +
+           ": its moments do not fit in double precision (the domain's size or the "
+           "density's range is too extreme for Lloyd iteration)";
   return what + ": its " + std::to_string(points.size()) +
          " vertices do not make a polygon with finite moments (a bug in CVT_2: please report "
          "it with the input)";

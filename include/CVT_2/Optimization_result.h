@@ -27,11 +27,16 @@ using Lloyd_stop_reason = Stop_reason;
 /// `time_limit`, `callback` or `no_free_generator`.
 inline const char* to_string(Stop_reason reason) {
   switch (reason) {
-    case CONVERGED: return "converged";
-    case MAX_ITERATIONS_REACHED: return "max_iterations";
-    case TIME_LIMIT_REACHED: return "time_limit";
-    case CALLBACK_REQUESTED_STOP: return "callback";
-    case NO_FREE_GENERATOR: return "no_free_generator";
+    case CONVERGED:
+      return "converged";
+    case MAX_ITERATIONS_REACHED:
+      return "max_iterations";
+    case TIME_LIMIT_REACHED:
+      return "time_limit";
+    case CALLBACK_REQUESTED_STOP:
+      return "callback";
+    case NO_FREE_GENERATOR:
+      return "no_free_generator";
   }
   return "unknown";
 }

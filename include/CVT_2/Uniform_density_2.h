@@ -8,17 +8,17 @@
 #include <CGAL/number_utils.h>
 
 #include <cmath>
-#include <string>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 
 namespace CVT_2 {
 
 /// \ingroup PkgCvt2Policies
 /// The constant density \f$\rho = c\f$: the cells of the centroidal Voronoi tessellation get
-/// about the same size everywhere. It is the default density of the Lloyd iteration; `is_uniform_density`
-/// recognizes it, so that the optimizer integrates its cells with exact formulas. The value
-/// scales the mass and the energy of every cell but moves no centroid.
+/// about the same size everywhere. It is the default density of the Lloyd iteration;
+/// `is_uniform_density` recognizes it, so that the optimizer integrates its cells with exact
+/// formulas. The value scales the mass and the energy of every cell but moves no centroid.
 ///
 /// \tparam K a CGAL kernel.
 /// \cgalModels `DensityFunction_2`

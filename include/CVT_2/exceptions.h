@@ -43,7 +43,7 @@ class Parse_error : public std::invalid_argument {
         m_line(line),
         m_token(token) {}
   const std::string& file() const { return m_file; }    ///< the file
-  std::size_t line() const { return m_line; }            ///< the line, from 1 (0: none)
+  std::size_t line() const { return m_line; }           ///< the line, from 1 (0: none)
   const std::string& token() const { return m_token; }  ///< the token, printable, shortened
 
  private:

@@ -4,8 +4,8 @@
 #define CVT_2_INSERT_GENERATORS_2_H
 
 #include <CVT_2/exceptions.h>
-#include <CVT_2/mark_domain_2.h>
 #include <CVT_2/internal/valid_point.h>
+#include <CVT_2/mark_domain_2.h>
 
 #include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/property_map.h>
@@ -97,7 +97,8 @@ void insert_generators_2(CDT& cdt, const PointRange& points) {
     const bool other = on_edge && f->neighbor(li)->is_inside_domain();
     const Point_2 a = on_edge ? f->vertex(CDT::ccw(li))->point() : p;
     const Point_2 b = on_edge ? f->vertex(CDT::cw(li))->point() : p;
-    const CGAL::Orientation f_side = on_edge ? CGAL::orientation(a, b, f->vertex(li)->point()) : CGAL::COLLINEAR;
+    const CGAL::Orientation f_side =
+        on_edge ? CGAL::orientation(a, b, f->vertex(li)->point()) : CGAL::COLLINEAR;
     const auto v = cdt.insert(p, lt, f, li);
     auto fc = cdt.incident_faces(v), done = fc;
     do {

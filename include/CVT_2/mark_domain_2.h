@@ -140,8 +140,7 @@ void mark_domain_2(const CDT& cdt, const PointRange& hole_seeds) {
   using Face_handle = typename CDT::Face_handle;
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_inside_domain(true);
   if (cdt.dimension() < 2) {
-    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
-      f->set_inside_domain(false);
+    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_inside_domain(false);
     return;
   }
   std::vector<Face_handle> stack{cdt.infinite_face()};
@@ -195,8 +194,7 @@ void mark_domain_from_polygons_2(const CDT& cdt, const PolygonWithHolesRange& po
                 ? CGAL::LEFT_TURN
                 : CGAL::RIGHT_TURN;
         for (std::size_t i = 0; i < loop.size(); ++i)
-          stack.push_back(
-              internal::face_beside(cdt, loop[i], loop[(i + 1) % loop.size()], inside));
+          stack.push_back(internal::face_beside(cdt, loop[i], loop[(i + 1) % loop.size()], inside));
       }
     }
   }

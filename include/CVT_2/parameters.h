@@ -1,5 +1,6 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// CVT_2::parameters: named parameters in CGAL's idiom (chained calls, get_parameter, choose_parameter).
+// CVT_2::parameters: named parameters in CGAL's idiom (chained calls, get_parameter,
+// choose_parameter).
 #ifndef CVT_2_PARAMETERS_H
 #define CVT_2_PARAMETERS_H
 
@@ -26,8 +27,8 @@ struct Named_function_parameters;
 
 // The chained calls, `np.density(rho).number_of_iterations(10)`: a member function a parameter,
 // stamped in each chain type from the list.
-#define CVT_2_add_named_parameter(TAG, NAME)                                   \
-  template <class T_>                                                          \
+#define CVT_2_add_named_parameter(TAG, NAME)                                       \
+  template <class T_>                                                              \
   Named_function_parameters<T_, internal_np::TAG, SELF_> NAME(const T_& v) const { \
     return Named_function_parameters<T_, internal_np::TAG, SELF_>(v, *this);       \
   }
@@ -36,7 +37,7 @@ struct Named_function_parameters;
 /// No named parameter: every option takes its default. `CVT_2::parameters::default_values()`.
 struct No_named_parameters {
   using SELF_ = No_named_parameters;  ///< the chain type, for the chained calls
-#ifndef DOXYGEN_RUNNING  // the options are documented where they are read
+#ifndef DOXYGEN_RUNNING               // the options are documented where they are read
 #include <CVT_2/internal/parameters_interface.h>
 #endif
 };
@@ -47,8 +48,8 @@ struct No_named_parameters {
 template <class T, class Tag, class Base>
 struct Named_function_parameters {
   using SELF_ = Named_function_parameters;  ///< the chain type, for the chained calls
-  T v;        ///< the value
-  Base base;  ///< the rest of the chain
+  T v;                                      ///< the value
+  Base base;                                ///< the rest of the chain
   /// `value` for `Tag`, before the options of `rest`
   Named_function_parameters(const T& value, const Base& rest) : v(value), base(rest) {}
 #ifndef DOXYGEN_RUNNING  // the options are documented where they are read
@@ -65,10 +66,10 @@ namespace parameters {
 /// every option at its default
 inline No_named_parameters default_values() { return {}; }
 
-#define CVT_2_add_named_parameter(TAG, NAME)                                        \
-  template <class T>                                                                \
+#define CVT_2_add_named_parameter(TAG, NAME)                                             \
+  template <class T>                                                                     \
   Named_function_parameters<T, internal_np::TAG, No_named_parameters> NAME(const T& v) { \
-    return Named_function_parameters<T, internal_np::TAG, No_named_parameters>(v, {});     \
+    return Named_function_parameters<T, internal_np::TAG, No_named_parameters>(v, {});   \
   }
 #ifndef DOXYGEN_RUNNING  // the options are documented where they are read
 #include <CVT_2/internal/parameters_interface.h>

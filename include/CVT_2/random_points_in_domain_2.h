@@ -67,9 +67,8 @@ Domain_triangles<typename CDT::Point_2> domain_triangles(const CDT& cdt) {
   double extent = 0;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!f->is_inside_domain()) continue;
-    const auto& t =
-        d.triangles.emplace_back(std::array{f->vertex(0)->point(), f->vertex(1)->point(),
-                                            f->vertex(2)->point()});
+    const auto& t = d.triangles.emplace_back(
+        std::array{f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()});
     for (int i = 1; i < 3; ++i)
       extent = std::max({extent, std::abs(CGAL::to_double(t[i].x() - t[0].x())),
                          std::abs(CGAL::to_double(t[i].y() - t[0].y()))});
@@ -161,8 +160,8 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   double total = 0;
   if constexpr (has_parameter<NP, density_t>) {
     const auto& rho = get_parameter(np, density_t());
-    cut = internal::bisect_triangles(
-        domain, domain_area / double(std::max<std::size_t>(n, 10000)), face_of);
+    cut = internal::bisect_triangles(domain, domain_area / double(std::max<std::size_t>(n, 10000)),
+                                     face_of);
     pieces = &cut;
     for (const Triangle& t : cut) {
       double s = 0;

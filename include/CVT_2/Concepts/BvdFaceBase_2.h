@@ -76,8 +76,8 @@ using Is_blinded_result_t = decltype(std::declval<const Face&>().is_blinded());
 template <class Face>
 using Blinding_edge_result_t = decltype(std::declval<const Face&>().blinding_edge());
 template <class Face>
-using Set_blinding_edge_result_t = decltype(std::declval<Face&>().set_blinding_edge(
-    std::declval<const Bvd_face_edge_t<Face>&>()));
+using Set_blinding_edge_result_t =
+    decltype(std::declval<Face&>().set_blinding_edge(std::declval<const Bvd_face_edge_t<Face>&>()));
 template <class Face>
 using Clear_blinding_result_t = decltype(std::declval<Face&>().clear_blinding());
 
@@ -97,11 +97,11 @@ struct is_bvd_face_base_2 : std::false_type {};
 /// \cond SKIP_IN_MANUAL
 template <class Face>
 struct is_bvd_face_base_2<
-    Face, std::void_t<typename Face::Face_handle, internal::Is_inside_domain_result_t<Face>,
-                      internal::Set_inside_domain_result_t<Face>,
-                      internal::Is_blinded_result_t<Face>, internal::Blinding_edge_result_t<Face>,
-                      internal::Set_blinding_edge_result_t<Face>,
-                      internal::Clear_blinding_result_t<Face>>>
+    Face,
+    std::void_t<typename Face::Face_handle, internal::Is_inside_domain_result_t<Face>,
+                internal::Set_inside_domain_result_t<Face>, internal::Is_blinded_result_t<Face>,
+                internal::Blinding_edge_result_t<Face>, internal::Set_blinding_edge_result_t<Face>,
+                internal::Clear_blinding_result_t<Face>>>
     : std::bool_constant<
           std::is_convertible<internal::Is_inside_domain_result_t<Face>, bool>::value &&
           std::is_convertible<internal::Is_blinded_result_t<Face>, bool>::value &&

@@ -137,14 +137,13 @@ struct is_bvd_traits_2<
                    internal::Compare_blinding_distance_2_result_t<T>,
                    internal::Construct_clip_point_2_result_t<T>,
                    internal::Construct_circumcenter_2_result_t<T>>>
-    : std::bool_constant<
-          std::is_convertible<internal::Is_blinded_2_result_t<T>, bool>::value &&
-          std::is_convertible<internal::Compare_blinding_distance_2_result_t<T>,
-                              CGAL::Comparison_result>::value &&
-          std::is_convertible<internal::Construct_clip_point_2_result_t<T>,
-                              typename T::Point_2>::value &&
-          std::is_convertible<internal::Construct_circumcenter_2_result_t<T>,
-                              typename T::Point_2>::value> {};
+    : std::bool_constant<std::is_convertible<internal::Is_blinded_2_result_t<T>, bool>::value &&
+                         std::is_convertible<internal::Compare_blinding_distance_2_result_t<T>,
+                                             CGAL::Comparison_result>::value &&
+                         std::is_convertible<internal::Construct_clip_point_2_result_t<T>,
+                                             typename T::Point_2>::value &&
+                         std::is_convertible<internal::Construct_circumcenter_2_result_t<T>,
+                                             typename T::Point_2>::value> {};
 /// \endcond
 
 /// \ingroup PkgCvt2Concepts

@@ -79,10 +79,11 @@ struct has_restrict_to_disk : std::false_type {};
 
 /// \cond SKIP_IN_MANUAL
 template <class F, class K>
-struct has_restrict_to_disk<F, K,
-                            std::void_t<decltype(std::declval<const F&>().restrict_to_disk(
-                                std::declval<const typename K::Point_2&>(),
-                                std::declval<const typename K::FT&>()))>> : std::true_type {};
+struct has_restrict_to_disk<
+    F, K,
+    std::void_t<decltype(std::declval<const F&>().restrict_to_disk(
+        std::declval<const typename K::Point_2&>(), std::declval<const typename K::FT&>()))>>
+    : std::true_type {};
 /// \endcond
 
 /// \ingroup PkgCvt2Concepts

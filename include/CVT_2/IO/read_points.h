@@ -19,9 +19,9 @@ namespace IO {
 /// Points read from a text file, each with its line.
 template <class Point_2>
 struct Point_data {
-  std::string source;               ///< file name, for messages
-  std::vector<Point_2> points;      ///< in file order
-  std::vector<std::size_t> lines;   ///< the line of each point
+  std::string source;              ///< file name, for messages
+  std::vector<Point_2> points;     ///< in file order
+  std::vector<std::size_t> lines;  ///< the line of each point
   /// each point equal to an earlier one, as (its line, the earlier one's line): inserting them
   /// merges them
   std::vector<std::array<std::size_t, 2>> repeated_points;

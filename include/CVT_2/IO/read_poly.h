@@ -4,9 +4,9 @@
 #define CVT_2_IO_READ_POLY_H
 
 #include <CVT_2/exceptions.h>
-#include <CVT_2/mark_domain_2.h>
 #include <CVT_2/internal/line_reader.h>
 #include <CVT_2/internal/valid_point.h>
+#include <CVT_2/mark_domain_2.h>
 
 #include <array>
 #include <cstddef>
@@ -21,13 +21,13 @@ namespace IO {
 /// line it was read from, so that later errors can say where.
 template <class Point_2>
 struct Poly_data {
-  std::string source;                                  ///< file name, for messages
-  std::vector<Point_2> vertices;                       ///< in file order
-  std::vector<std::size_t> vertex_lines;               ///< the line of each vertex
-  std::vector<std::array<std::size_t, 2>> segments;    ///< 0-based indices into `vertices`
-  std::vector<std::size_t> segment_lines;              ///< the line of each segment
-  std::vector<Point_2> holes;                          ///< one seed point inside each hole
-  std::vector<std::size_t> hole_lines;                 ///< the line of each hole point
+  std::string source;                                ///< file name, for messages
+  std::vector<Point_2> vertices;                     ///< in file order
+  std::vector<std::size_t> vertex_lines;             ///< the line of each vertex
+  std::vector<std::array<std::size_t, 2>> segments;  ///< 0-based indices into `vertices`
+  std::vector<std::size_t> segment_lines;            ///< the line of each segment
+  std::vector<Point_2> holes;                        ///< one seed point inside each hole
+  std::vector<std::size_t> hole_lines;               ///< the line of each hole point
   /// each vertex at the same point as an earlier one, as (its line, the earlier one's line):
   /// `insert_poly()` merges them
   std::vector<std::array<std::size_t, 2>> repeated_vertices;
@@ -122,7 +122,8 @@ Poly_data<Point_2> read_poly(std::istream& is, const std::string& source = "<pol
   if (t.size() > 1) in.fail("too many fields in the region header", t[1]);
   for (std::size_t k = 0; k < nr; ++k) {
     in.expect(t, "region " + std::to_string(k + 1) + " of " + std::to_string(nr));
-    if (t.size() < 4 || t.size() > 5) in.fail("expected '<index> <x> <y> <attribute> [<area>]'", t.back());
+    if (t.size() < 4 || t.size() > 5)
+      in.fail("expected '<index> <x> <y> <attribute> [<area>]'", t.back());
     for (std::size_t f = 1; f < t.size(); ++f) in.real(t[f]);
   }
   if (in.next(t)) in.fail("unexpected content after the last section", t[0]);

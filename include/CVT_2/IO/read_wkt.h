@@ -31,15 +31,15 @@ namespace IO {
 /// \tparam K a CGAL kernel.
 template <class K>
 struct Wkt_data {
-  using Point_2 = typename K::Point_2;                  ///< the point type
+  using Point_2 = typename K::Point_2;                         ///< the point type
   using Polygon_with_holes_2 = CGAL::Polygon_with_holes_2<K>;  ///< a polygon
-  std::string source;                                   ///< file name, for messages
-  std::vector<Polygon_with_holes_2> polygons;           ///< from POLYGON and MULTIPOLYGON
-  std::vector<std::size_t> polygon_lines;               ///< the line of each polygon
-  std::vector<std::vector<Point_2>> polylines;          ///< from LINESTRING, MULTILINESTRING
-  std::vector<std::size_t> polyline_lines;              ///< the line of each polyline
-  std::vector<Point_2> points;                          ///< from POINT and MULTIPOINT
-  std::vector<std::size_t> point_lines;                 ///< the line of each point
+  std::string source;                                          ///< file name, for messages
+  std::vector<Polygon_with_holes_2> polygons;                  ///< from POLYGON and MULTIPOLYGON
+  std::vector<std::size_t> polygon_lines;                      ///< the line of each polygon
+  std::vector<std::vector<Point_2>> polylines;                 ///< from LINESTRING, MULTILINESTRING
+  std::vector<std::size_t> polyline_lines;                     ///< the line of each polyline
+  std::vector<Point_2> points;                                 ///< from POINT and MULTIPOINT
+  std::vector<std::size_t> point_lines;                        ///< the line of each point
   /// each point equal to an earlier one, as (its line, the earlier one's line): inserting
   /// them merges them
   std::vector<std::array<std::size_t, 2>> repeated_points;
@@ -167,7 +167,8 @@ Wkt_data<K> read_wkt(std::istream& is, const std::string& source = "<wkt>") {
     const std::string upper_rest = internal::upper_case(rest);
     if (upper_rest == "EMPTY") continue;  // adds nothing (CGAL's reader would crash on it)
     if (upper_rest.find("EMPTY") != std::string::npos)
-      throw Parse_error(source, number, "an EMPTY part inside a geometry is not supported", "EMPTY");
+      throw Parse_error(source, number, "an EMPTY part inside a geometry is not supported",
+                        "EMPTY");
     if (rest.empty() || rest[0] != '(')
       throw Parse_error(source, number, "malformed " + type + ": expected '(' or EMPTY after it",
                         rest.empty() ? type : rest.substr(0, 20));
@@ -203,9 +204,9 @@ Wkt_data<K> read_wkt(std::istream& is, const std::string& source = "<wkt>") {
     if (!ok) throw Parse_error(source, number, "malformed " + type, type);
     const auto check = [&](const Point_2& p) {
       if (!CVT_2::internal::is_valid_point(p))
-        throw Parse_error(source, number,
-                          CVT_2::internal::invalid_point_message(
-                              "point " + CVT_2::internal::to_string(p)));
+        throw Parse_error(
+            source, number,
+            CVT_2::internal::invalid_point_message("point " + CVT_2::internal::to_string(p)));
     };
     for (const Point_2& p : points) {
       check(p);
@@ -257,7 +258,9 @@ Wkt_data<K> read_wkt(const std::string& filename) {
 template <class CDT>
 void insert_wkt(CDT& cdt, const Wkt_data<typename CDT::Geom_traits>& w) {
   using Point_2 = typename CDT::Point_2;
-  const auto where = [&w](std::size_t line) { return w.source + ":" + std::to_string(line) + ": "; };
+  const auto where = [&w](std::size_t line) {
+    return w.source + ":" + std::to_string(line) + ": ";
+  };
   const auto constrain = [&](const auto& points, bool closed, std::size_t line) {
     std::vector<Point_2> p;
     for (const Point_2& q : points)
@@ -272,12 +275,14 @@ void insert_wkt(CDT& cdt, const Wkt_data<typename CDT::Geom_traits>& w) {
   for (std::size_t i = 0; i < w.polygons.size(); ++i) {
     const auto& pwh = w.polygons[i];
     constrain(pwh.outer_boundary(), true, w.polygon_lines[i]);
-    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) constrain(*h, true, w.polygon_lines[i]);
+    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h)
+      constrain(*h, true, w.polygon_lines[i]);
   }
   for (std::size_t i = 0; i < w.polylines.size(); ++i)
     constrain(w.polylines[i], false, w.polyline_lines[i]);
   mark_domain_from_polygons_2(cdt, w.polygons);
-  if (!internal::has_domain_face(cdt)) throw Domain_error(w.source + ": the domain is empty: no polygon has an area");
+  if (!internal::has_domain_face(cdt))
+    throw Domain_error(w.source + ": the domain is empty: no polygon has an area");
   try {
     insert_generators_2(cdt, w.points);
   } catch (const Domain_error& e) {

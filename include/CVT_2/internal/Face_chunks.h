@@ -44,8 +44,7 @@ class Face_chunks {
   template <class Visit>
   void for_each(const Visit& visit, unsigned threads) const {
     run_chunks(m_starts.size(), threads, [&](std::size_t c) {
-      const Face_iterator last =
-          c + 1 < m_starts.size() ? m_starts[c + 1] : m_cdt->all_faces_end();
+      const Face_iterator last = c + 1 < m_starts.size() ? m_starts[c + 1] : m_cdt->all_faces_end();
       visit(c, m_starts[c], last);
     });
   }

@@ -47,7 +47,7 @@ struct Triangle_dual_segment_2 {
   }
   // The sign of orientation(g, c, x).
   CGAL::Sign side_of_point(const typename K::Point_2& x) const {
-    const RT ux = RT(3) * nx - den * gx, uy = RT(3) * ny - den * gy;  // 3 den (c - g)
+    const RT ux = RT(3) * nx - den * gx, uy = RT(3) * ny - den * gy;          // 3 den (c - g)
     const RT xx = RT(3) * (x.x() - px) - gx, xy = RT(3) * (x.y() - py) - gy;  // 3 (x - g)
     const CGAL::Sign s = CGAL::sign(ux * xy - uy * xx);
     return s * CGAL::sign(den);
@@ -57,8 +57,8 @@ struct Triangle_dual_segment_2 {
   void crossing_parameter(const typename K::Point_2& a, const typename K::Point_2& b, RT& num,
                           RT& denom) const {
     const RT ax = a.x() - px, ay = a.y() - py, dx = b.x() - a.x(), dy = b.y() - a.y();
-    num = dx * (RT(3) * ay - gy) - dy * (RT(3) * ax - gx);                  // cross(d, 3a - G)
-    denom = dx * (RT(3) * ny - den * gy) - dy * (RT(3) * nx - den * gx);    // cross(d, 3N - den G)
+    num = dx * (RT(3) * ay - gy) - dy * (RT(3) * ax - gx);                // cross(d, 3a - G)
+    denom = dx * (RT(3) * ny - den * gy) - dy * (RT(3) * nx - den * gx);  // cross(d, 3N - den G)
   }
 };
 
@@ -79,7 +79,8 @@ struct Is_blinded_2 {
     const CGAL::Sign side_c = s.side_of_circumcenter(a, b);
     if (side_c == CGAL::ZERO) return false;
     const CGAL::Sign side_g = s.side_of_centroid(a, b);
-    if (side_g != CGAL::opposite(side_c)) return false;  // same side, or g on the line (then ab is beside g)
+    if (side_g != CGAL::opposite(side_c))
+      return false;  // same side, or g on the line (then ab is beside g)
     // [g, c] crosses the line of ab; the crossing lies on ab unless a and b are strictly on
     // the same side of the line (g, c).
     const CGAL::Sign side_a = s.side_of_point(a);

@@ -87,7 +87,7 @@ void construct_cell(const CDT& cdt, const Traits& traits, typename CDT::Vertex_h
   // The chain's end on the constrained edge e = (v, w) of face f.
   const auto end_node = [&](const Node& fn, const Edge& e) {
     return fn.blind && is_same_constraint<CDT>(fn.constraint, e) ? Node{true, e, Face_handle()}
-                                                                : Node{false, e, Face_handle()};
+                                                                 : Node{false, e, Face_handle()};
   };
   const auto push_midpoint = [&](const Node& n, Vertex_handle w) {
     push(CGAL::midpoint(v->point(), w->point()), Cell_vertex::CLIP_POINT, Face_handle(),

@@ -48,7 +48,8 @@ class Line_reader {
   }
   // Like next(), but the end of the input is an error that says what was expected.
   void expect(std::vector<std::string>& tokens, const std::string& what) {
-    if (!next(tokens)) throw IO::Parse_error(m_source, m_line, "unexpected end of file, expected " + what);
+    if (!next(tokens))
+      throw IO::Parse_error(m_source, m_line, "unexpected end of file, expected " + what);
   }
 
   double real(const std::string& t) const {
@@ -58,7 +59,8 @@ class Line_reader {
     const double x = std::strtod(b, &e);
     // The whole token: a NUL byte inside it would otherwise end it early ("1\0junk" read as 1).
     if (e == b || e != b + t.size()) fail("not a number", t);
-    if (!std::isfinite(x) || (errno == ERANGE && std::fabs(x) > 1)) fail("number not finite or too large", t);
+    if (!std::isfinite(x) || (errno == ERANGE && std::fabs(x) > 1))
+      fail("number not finite or too large", t);
     return x;
   }
   long long integer(const std::string& t) const {
@@ -78,7 +80,8 @@ class Line_reader {
   // The token is quoted in the message: printable characters only, and not too many.
   [[noreturn]] void fail(const std::string& what, const std::string& token = {}) const {
     std::string shown;
-    for (const char c : token.substr(0, 40)) shown += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+    for (const char c : token.substr(0, 40))
+      shown += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
     if (token.size() > 40) shown += "...";
     throw IO::Parse_error(m_source, m_line, what, shown);
   }
@@ -102,8 +105,10 @@ std::vector<std::array<std::size_t, 2>> repeated_points(const std::vector<Point_
                    [&](std::size_t a, std::size_t b) { return points[a] < points[b]; });
   std::vector<std::array<std::size_t, 2>> repeated;
   for (std::size_t k = 1, first = 0; k < order.size(); ++k) {
-    if (points[order[k]] != points[order[first]]) first = k;
-    else repeated.push_back({lines[order[k]], lines[order[first]]});
+    if (points[order[k]] != points[order[first]])
+      first = k;
+    else
+      repeated.push_back({lines[order[k]], lines[order[first]]});
   }
   std::sort(repeated.begin(), repeated.end());
   return repeated;

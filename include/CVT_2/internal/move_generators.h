@@ -113,8 +113,8 @@ void put_back_inverted(const CDT& cdt, const std::vector<std::size_t>& pending,
       v->set_point(b.from[k]);
       auto fc = cdt.incident_faces(v), end = fc;
       do {
-        if (orientation(fc->vertex(0)->point(), fc->vertex(1)->point(),
-                        fc->vertex(2)->point()) != CGAL::LEFT_TURN)
+        if (orientation(fc->vertex(0)->point(), fc->vertex(1)->point(), fc->vertex(2)->point()) !=
+            CGAL::LEFT_TURN)
           b.inverted.push_back(fc);
       } while (++fc != end);
     }

@@ -45,9 +45,9 @@ double move_free_vertex(const CDT& cdt, typename CDT::Vertex_handle v,
   }
   FT t = t_max >= 1 ? FT(1) : t_max / 2;
   for (int attempt = 0; attempt < 16; ++attempt, t /= 2) {
-    const Point_2 p = t == 1 ? target
-                             : Point_2(x.x() + t * (target.x() - x.x()),
-                                       x.y() + t * (target.y() - x.y()));
+    const Point_2 p =
+        t == 1 ? target
+               : Point_2(x.x() + t * (target.x() - x.x()), x.y() + t * (target.y() - x.y()));
     const bool valid = std::all_of(link.begin(), link.end(), [&](const auto& e) {
       return orientation(e.first, e.second, p) == CGAL::LEFT_TURN;
     });

@@ -1,4 +1,5 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// clang-format off
 // The list of named parameters: one line a parameter, CVT_2_add_named_parameter(tag, name).
 // No include guard: included with a different definition of the macro each time.
 

@@ -33,9 +33,9 @@ inline std::size_t quadrature_resolution(double max_move_ratio, double p, std::s
   if (max_move_ratio >= 10 * p) return lo;
   if (max_move_ratio <= 2 * p) return hi;
   const double s = std::log(10 * p / max_move_ratio) / std::log(5.0);
-  return std::clamp(static_cast<std::size_t>(
-                        std::lround(double(lo) * std::pow(double(hi) / double(lo), s))),
-                    lo, hi);
+  return std::clamp(
+      static_cast<std::size_t>(std::lround(double(lo) * std::pow(double(hi) / double(lo), s))), lo,
+      hi);
 }
 
 // A count option: an integer >= 0, or std::invalid_argument naming the option.
@@ -53,8 +53,8 @@ std::size_t checked_count(const T& value, const char* name) {
 struct Run_options {
   std::chrono::steady_clock::time_point start;
   std::size_t max_iterations = 1000;
-  double time_limit = 0;  // seconds; 0: none
-  double bound = 0.01;    // on the move ratios; 0: no such stop
+  double time_limit = 0;          // seconds; 0: none
+  double bound = 0.01;            // on the move ratios; 0: no such stop
   std::size_t lo = 10, hi = 100;  // quadrature resolutions
   bool verbose = false;
   unsigned threads = 0;  // 0: one per core
@@ -67,9 +67,9 @@ Run_options read_run_options(const NP& np) {
   using namespace internal_np;
   Run_options o;
   o.start = std::chrono::steady_clock::now();
-  o.max_iterations = checked_count(
-      choose_parameter(get_parameter(np, number_of_iterations_t()), o.max_iterations),
-      "number_of_iterations");
+  o.max_iterations =
+      checked_count(choose_parameter(get_parameter(np, number_of_iterations_t()), o.max_iterations),
+                    "number_of_iterations");
   o.time_limit = choose_parameter(get_parameter(np, maximum_running_time_t()), o.time_limit);
   o.bound = choose_parameter(get_parameter(np, move_ratio_bound_t()), o.bound);
   o.lo = checked_count(choose_parameter(get_parameter(np, minimum_quadrature_resolution_t()), o.lo),
@@ -79,8 +79,8 @@ Run_options read_run_options(const NP& np) {
   o.verbose = choose_parameter(get_parameter(np, verbose_t()), o.verbose);
   o.threads = static_cast<unsigned>(checked_count(
       choose_parameter(get_parameter(np, number_of_threads_t()), o.threads), "number_of_threads"));
-  o.lbfgs_memory = checked_count(choose_parameter(get_parameter(np, lbfgs_memory_t()), o.lbfgs_memory),
-                                 "lbfgs_memory");
+  o.lbfgs_memory = checked_count(
+      choose_parameter(get_parameter(np, lbfgs_memory_t()), o.lbfgs_memory), "lbfgs_memory");
   o.callback = choose_parameter(get_parameter(np, callback_t()), o.callback);
   if (!(o.bound >= 0))
     throw std::invalid_argument("move_ratio_bound must be >= 0, not " + std::to_string(o.bound));
