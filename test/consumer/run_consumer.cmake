@@ -1,8 +1,10 @@
 # Installs the CVT_2 build tree into a fresh prefix, then configures, builds and runs the
-# consumer project against it. Run by the CTest test consumer_find_package:
+# consumer project against it; with -DBUILD_TREE=ON, against the build tree itself, uninstalled
+# (CVT_2_DIR); with -DSUBPROJECT=<source dir>, through add_subdirectory, with no build type.
+# Run by the CTest tests consumer_find_package, consumer_build_tree and consumer_subproject:
 #   cmake -DCVT_2_BINARY_DIR=... -DCONSUMER_SOURCE_DIR=... -DCONSUMER_BINARY_DIR=...
-#         -DCONSUMER_PREFIX=... [-DGENERATOR=...] [-DCXX_COMPILER=...] [-DCGAL_DIR=...]
-#         -P run_consumer.cmake
+#         -DCONSUMER_PREFIX=... [-DBUILD_TREE=ON | -DSUBPROJECT=...] [-DGENERATOR=...]
+#         [-DCXX_COMPILER=...] [-DCGAL_DIR=...] -P run_consumer.cmake
 foreach(var CVT_2_BINARY_DIR CONSUMER_SOURCE_DIR CONSUMER_BINARY_DIR CONSUMER_PREFIX)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "run_consumer.cmake: ${var} is not set")
@@ -19,11 +21,17 @@ endfunction()
 # A fresh prefix and build each time, so that nothing left from an earlier run is found.
 file(REMOVE_RECURSE ${CONSUMER_PREFIX} ${CONSUMER_BINARY_DIR})
 
-run_step("install into ${CONSUMER_PREFIX}"
-  ${CMAKE_COMMAND} --install ${CVT_2_BINARY_DIR} --prefix ${CONSUMER_PREFIX})
-
-set(configure_args -S ${CONSUMER_SOURCE_DIR} -B ${CONSUMER_BINARY_DIR}
-                   -DCMAKE_PREFIX_PATH=${CONSUMER_PREFIX} -DCMAKE_BUILD_TYPE=Release)
+set(configure_args -S ${CONSUMER_SOURCE_DIR} -B ${CONSUMER_BINARY_DIR})
+if(SUBPROJECT)
+  list(APPEND configure_args -DCVT_2_SOURCE=${SUBPROJECT})
+elseif(BUILD_TREE)
+  list(APPEND configure_args -DCMAKE_BUILD_TYPE=Release -DCVT_2_DIR=${CVT_2_BINARY_DIR})
+  list(APPEND configure_args -DCVT_2_DIR=${CVT_2_BINARY_DIR})
+else()
+  run_step("install into ${CONSUMER_PREFIX}"
+    ${CMAKE_COMMAND} --install ${CVT_2_BINARY_DIR} --prefix ${CONSUMER_PREFIX})
+  list(APPEND configure_args -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${CONSUMER_PREFIX})
+endif()
 if(GENERATOR)
   list(APPEND configure_args -G ${GENERATOR})
 endif()
