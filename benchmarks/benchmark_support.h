@@ -98,8 +98,8 @@ inline void build_cdt2(CDT2& cdt, const Domain& d, const std::vector<Point>& poi
 }
 
 struct Energy {
-  double energy = nan;      // raw, by our evaluator at resolution 100
-  double normalized = nan;  // E n / A² / (5 / (18 √3)), n = generators with a cell
+  double energy = nan;          // raw, by our evaluator at resolution 100
+  double normalized = nan;      // E n / A² / (5 / (18 √3)), n = generators with a cell
   double max_move_ratio = nan;  // over the free generators: below 0.01 is the paper's stop
   std::size_t cells = 0;
   std::size_t outside = 0;  // CGAL's free points that left the domain (dropped)

@@ -1,9 +1,12 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// bvd_benchmark: our BVD and CGAL's Constrained_voronoi_diagram_2, timed against a CDT build.
+// bvd_benchmark: our BVD and CGAL's Constrained_voronoi_diagram_2, timed against a CDT build,
+// and the mesh of our diagram against the cell pass it is built from.
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
-#include <CVT_2/internal/Face_chunks.h>
+#include <CVT_2/Bvd_mesh_2.h>
+#include <CVT_2/Cvt_triangulation_2.h>
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/insert_generators_2.h>
+#include <CVT_2/internal/Face_chunks.h>
 #include <CVT_2/mark_domain_2.h>
 
 #include <CGAL/Bbox_2.h>
@@ -25,17 +28,18 @@
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Itag = CGAL::No_constraint_intersection_requiring_constructions_tag;
 using Vb = CGAL::Triangulation_vertex_base_2<K>;
-using Fb = CVT_2::Bvd_face_base_2<K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, Itag>;
+using CDT = CVT_2::Cvt_triangulation_2<K>;  // ours: ids in the vertices, Bvd_face_base_2 faces
+using Tds = CDT::Triangulation_data_structure;
 using Bvd = CVT_2::Bounded_voronoi_diagram_2<CDT>;
+using Mesh = CVT_2::Bvd_mesh_2<Bvd>;
 // CGAL's diagram keeps its tags in CGAL's constrained Delaunay face base.
 using Tds2 = CGAL::Triangulation_data_structure_2<Vb, CGAL::Delaunay_mesh_face_base_2<K>>;
 using CDT2 = CGAL::Constrained_Delaunay_triangulation_2<K, Tds2, Itag>;
 using Cvd = CGAL::Constrained_voronoi_diagram_2<CDT2>;
 // The baseline: CGAL's constrained Delaunay triangulation with its default face base.
-using Tds0 = CGAL::Triangulation_data_structure_2<
-    Vb, CGAL::Constrained_Delaunay_triangulation_face_base_2<K>>;
+using Tds0 =
+    CGAL::Triangulation_data_structure_2<Vb,
+                                         CGAL::Constrained_Delaunay_triangulation_face_base_2<K>>;
 using CDT0 = CGAL::Constrained_Delaunay_triangulation_2<K, Tds0, Itag>;
 using Poly = CVT_2::IO::Poly_data<K::Point_2>;
 using Clock = std::chrono::steady_clock;
@@ -46,6 +50,7 @@ struct Row {
   std::string domain;
   std::size_t n, vertices, cgal_cells;
   double build, tag, cells, cells2, cgal_tag, cgal_cells_s, bytes;
+  double mesh, mesh2, mesh_bytes;  // the mesh on 1 and 2 threads; its bytes per generator
 };
 std::vector<Row> rows;  // for the table printed after the run
 
@@ -95,7 +100,8 @@ void bm_bvd(benchmark::State& state, const std::string& file) {
   cdt2.insert(points.begin(), points.end());
   Cvd cvd(cdt2);
 
-  std::vector<double> build, mark, tag, cells, cells2, cgal_tag, cgal_cells;
+  std::vector<double> build, mark, tag, cells, cells2, cgal_tag, cgal_cells, mesh, mesh2;
+  double mesh_bytes = 0;
   std::size_t vertices = 0, faces = 0, ours_built = 0, cgal_built = 0;
   for (auto _ : state) {
     auto t = Clock::now();
@@ -136,14 +142,29 @@ void bm_bvd(benchmark::State& state, const std::string& file) {
     chunks.for_each(
         [&](std::size_t c, auto first, auto last) {
           CVT_2::internal::for_each_cell_in_faces(
-              bvd, first, last,
-              [&](Bvd::Vertex_handle, const std::vector<Bvd::Cell_vertex>& cell) {
+              bvd, first, last, [&](Bvd::Vertex_handle, const std::vector<Bvd::Cell_vertex>& cell) {
                 chunk_totals[c] += cell.size();
               });
         },
         2);
     benchmark::DoNotOptimize(chunk_totals.data());
     cells2.push_back(since(t));
+
+    for (const unsigned threads : {1u, 2u}) {
+      t = Clock::now();
+      const Mesh m(bvd, threads);
+      (threads == 1 ? mesh : mesh2).push_back(since(t));
+      // What the mesh keeps: points, cycles with their sides, per cell an offset, a generator,
+      // a flag; the constraints.
+      std::size_t entries = 0;
+      for (std::size_t k = 0; k < m.number_of_cells(); ++k) entries += m.cell(k).size();
+      mesh_bytes =
+          (double(m.number_of_vertices()) * (sizeof(Mesh::Point_2) + 1) +
+           double(entries) * (sizeof(Mesh::Index) + sizeof(Mesh::Side)) +
+           double(m.number_of_cells()) * (sizeof(std::size_t) + sizeof(Mesh::Vertex_handle) + 1) +
+           double(m.constraints().size()) * sizeof(Mesh::Constraint)) /
+          double(m.number_of_cells());
+    }
 
     t = Clock::now();
     cvd.tag_faces_blind();
@@ -161,14 +182,27 @@ void bm_bvd(benchmark::State& state, const std::string& file) {
     cgal_cells.push_back(since(t));
 
     state.SetIterationTime(build.back() + tag.back() + cells.back() + cgal_tag.back() +
-                           cgal_cells.back());
+                           cgal_cells.back() + mesh.back() + mesh2.back());
     vertices = cdt.number_of_vertices();
     faces = cdt.number_of_faces();
   }
 
-  Row r{file.substr(0, file.rfind('.')), n, vertices, cgal_built, median(build), median(tag),
-        median(cells), median(cells2), median(cgal_tag), median(cgal_cells),
-        (double(sizeof(Tds::Face)) - double(sizeof(Tds0::Face))) * double(faces) / double(vertices)};
+  Row r{
+      file.substr(0, file.rfind('.')),
+      n,
+      vertices,
+      cgal_built,
+      median(build),
+      median(tag),
+      median(cells),
+      median(cells2),
+      median(cgal_tag),
+      median(cgal_cells),
+      (double(sizeof(Tds::Face)) - double(sizeof(Tds0::Face))) * double(faces) / double(vertices) +
+          double(sizeof(Tds::Vertex)) - double(sizeof(Tds0::Vertex)),
+      median(mesh),
+      median(mesh2),
+      mesh_bytes};
   auto& c = state.counters;
   c["N"] = double(n);
   c["vertices"] = double(vertices);
@@ -184,9 +218,16 @@ void bm_bvd(benchmark::State& state, const std::string& file) {
   c["ours_cells/vertices"] = double(ours_built) / double(vertices);
   c["cgal_cells/vertices"] = double(cgal_built) / double(vertices);
   c["bytes/vertex"] = r.bytes;
+  c["mesh_s"] = r.mesh;
+  c["mesh_2_threads_s"] = r.mesh2;
+  c["mesh/cells"] = r.mesh / r.cells;
+  c["mesh_bytes/generator"] = r.mesh_bytes;
   const auto same = [&r](const Row& x) { return x.domain == r.domain && x.n == r.n; };
   const auto it = std::find_if(rows.begin(), rows.end(), same);
-  if (it == rows.end()) rows.push_back(r); else *it = r;
+  if (it == rows.end())
+    rows.push_back(r);
+  else
+    *it = r;
 }
 
 }  // namespace
@@ -194,8 +235,7 @@ void bm_bvd(benchmark::State& state, const std::string& file) {
 int main(int argc, char* argv[]) {
   for (const std::string file : {"us_massachusetts_counties.poly", "earcut_eberly6.poly"})
     for (const long n : {10000L, 100000L, 1000000L})
-      benchmark::RegisterBenchmark(("bvd/" + file.substr(0, file.rfind('.'))).c_str(), bm_bvd,
-                                   file)
+      benchmark::RegisterBenchmark(("bvd/" + file.substr(0, file.rfind('.'))).c_str(), bm_bvd, file)
           ->Arg(n)
           ->Iterations(n < 1000000 ? 5 : 3)
           ->UseManualTime()
@@ -205,16 +245,24 @@ int main(int argc, char* argv[]) {
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
 
-  std::printf("\n| domain | N | cdt build s | ours tag s | ours cells s | cells on 2 threads s "
-              "(speed-up) | ours/cdt | cgal tag s | cgal cells s | cgal/cdt | cgal cells / "
-              "vertices | bytes/vertex |\n"
-              "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
+  std::printf(
+      "\n| domain | N | cdt build s | ours tag s | ours cells s | cells on 2 threads s "
+      "(speed-up) | ours/cdt | cgal tag s | cgal cells s | cgal/cdt | cgal cells / "
+      "vertices | bytes/vertex |\n"
+      "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
   for (const Row& r : rows)
-    std::printf("| %s | %zu | %.4f | %.4f | %.4f | %.4f (%.2fx) | %.3f | %.4f | %.4f | %.3f | "
-                "%zu / %zu | %.1f |\n",
-                r.domain.c_str(), r.n, r.build, r.tag, r.cells, r.cells2, r.cells / r.cells2,
-                (r.tag + r.cells) / r.build,
-                r.cgal_tag, r.cgal_cells_s, (r.cgal_tag + r.cgal_cells_s) / r.build, r.cgal_cells,
-                r.vertices, r.bytes);
+    std::printf(
+        "| %s | %zu | %.4f | %.4f | %.4f | %.4f (%.2fx) | %.3f | %.4f | %.4f | %.3f | "
+        "%zu / %zu | %.1f |\n",
+        r.domain.c_str(), r.n, r.build, r.tag, r.cells, r.cells2, r.cells / r.cells2,
+        (r.tag + r.cells) / r.build, r.cgal_tag, r.cgal_cells_s,
+        (r.cgal_tag + r.cgal_cells_s) / r.build, r.cgal_cells, r.vertices, r.bytes);
+  std::printf(
+      "\n| domain | N | ours cells s | mesh s | mesh / cells | mesh on 2 threads s | "
+      "mesh on 2 threads / cells | mesh bytes/generator |\n"
+      "|---|--:|--:|--:|--:|--:|--:|--:|\n");
+  for (const Row& r : rows)
+    std::printf("| %s | %zu | %.4f | %.4f | %.2f | %.4f | %.2f | %.0f |\n", r.domain.c_str(), r.n,
+                r.cells, r.mesh, r.mesh / r.cells, r.mesh2, r.mesh2 / r.cells, r.mesh_bytes);
   return 0;
 }

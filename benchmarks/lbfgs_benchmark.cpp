@@ -51,8 +51,8 @@ using support::nan;  // hides ::nan of <cmath>
 
 const std::size_t lloyd_iterations[] = {20, 50, 100, 200};  // K
 constexpr int number_of_ks = 4;
-const double lipschitz_k = 0.1;                        // as lloyd_adaptive and the Fig. 10 case
-const std::size_t convergence_n = 10000;               // the convergence plot's cases
+const double lipschitz_k = 0.1;           // as lloyd_adaptive and the Fig. 10 case
+const std::size_t convergence_n = 10000;  // the convergence plot's cases
 
 // A domain with a uniform density, or with the automatic k-Lipschitz sizing of its boundary.
 struct Case {
@@ -129,10 +129,10 @@ struct Run {
 
 struct Row {
   std::size_t cells = 0;
-  Run lloyd, lbfgs;                                 // to the 1% stop
+  Run lloyd, lbfgs;                                                // to the 1% stop
   double lloyd_energy_after[number_of_ks] = {nan, nan, nan, nan};  // E after K Lloyd iterations
   std::size_t lbfgs_evaluations_to[number_of_ks] = {};  // to reach it; 0: not within the cap
-  std::vector<Sample> cgal, cgal_uniform;           // CGAL's histories, for the plot
+  std::vector<Sample> cgal, cgal_uniform;               // CGAL's histories, for the plot
 };
 std::map<std::pair<std::string, std::size_t>, Row> rows;
 
@@ -454,8 +454,8 @@ int main(int argc, char* argv[]) {
                                                    : std::to_string(r.lbfgs_evaluations_to[k]);
       };
       const double norm = double(r.cells) / squared_root_mass(c) / hexagon;
-      std::printf("| %s | %ld | %s | %s | %s | %s | %s / %s | %s / %s / %s / %s |\n", c.label().c_str(),
-                  n, run(r.lloyd).c_str(), run(r.lbfgs).c_str(),
+      std::printf("| %s | %ld | %s | %s | %s | %s | %s / %s | %s / %s / %s / %s |\n",
+                  c.label().c_str(), n, run(r.lloyd).c_str(), run(r.lbfgs).c_str(),
                   fmt("%.2f", double(r.lloyd.evaluations) / double(r.lbfgs.evaluations)).c_str(),
                   fmt("%.2f", r.lloyd.seconds / r.lbfgs.seconds).c_str(),
                   fmt("%.4f", r.lloyd.energy * norm).c_str(),

@@ -30,27 +30,28 @@
 #include <utility>
 #include <vector>
 
+using support::build_cdt2;
+using support::build_ours;
 using support::CDT;
 using support::CDT2;
 using support::Clock;
 using support::Domain;
+using support::domain;
 using support::Energy;
+using support::fmt;
 using support::Itag;
 using support::K;
-using support::Point;
-using support::Poly;
-using support::Vb;
-using support::build_cdt2;
-using support::build_ours;
-using support::domain;
-using support::fmt;
 using support::massachusetts;
 using support::measure;
+using support::Point;
+using support::Poly;
 using support::since;
 using support::square;
+using support::Vb;
 // The baseline: CGAL's constrained Delaunay triangulation with its default face base.
-using Tds0 = CGAL::Triangulation_data_structure_2<
-    Vb, CGAL::Constrained_Delaunay_triangulation_face_base_2<K>>;
+using Tds0 =
+    CGAL::Triangulation_data_structure_2<Vb,
+                                         CGAL::Constrained_Delaunay_triangulation_face_base_2<K>>;
 using CDT0 = CGAL::Constrained_Delaunay_triangulation_2<K, Tds0, Itag>;
 using Shipped_move = CGAL::Mesh_2::Lloyd_move_2<CDT2, CGAL::Mesh_2::Mesh_sizing_field<CDT2>>;
 using Uniform_move = CGAL::Mesh_2::Lloyd_move_2<CDT2, CGAL::Mesh_2::Uniform_sizing_field_2<CDT2>>;
@@ -103,13 +104,20 @@ struct Counting_move {
 
 const char* to_string(CGAL::Mesh_optimization_return_code c) {
   switch (c) {
-    case CGAL::BOUND_REACHED: return "bound";
-    case CGAL::TIME_LIMIT_REACHED: return "time";
-    case CGAL::CANT_IMPROVE_ANYMORE: return "cant_improve";
-    case CGAL::CONVERGENCE_REACHED: return "converged";
-    case CGAL::MAX_ITERATION_NUMBER_REACHED: return "max_iterations";
-    case CGAL::ALL_VERTICES_FROZEN: return "all_frozen";
-    default: return "error";
+    case CGAL::BOUND_REACHED:
+      return "bound";
+    case CGAL::TIME_LIMIT_REACHED:
+      return "time";
+    case CGAL::CANT_IMPROVE_ANYMORE:
+      return "cant_improve";
+    case CGAL::CONVERGENCE_REACHED:
+      return "converged";
+    case CGAL::MAX_ITERATION_NUMBER_REACHED:
+      return "max_iterations";
+    case CGAL::ALL_VERTICES_FROZEN:
+      return "all_frozen";
+    default:
+      return "error";
   }
 }
 
@@ -178,11 +186,10 @@ void bm_iteration(benchmark::State& state, const std::string& name) {
       CDT2 cdt2;
       build_cdt2(cdt2, d, points);
       const auto t = Clock::now();
-      CGAL::lloyd_optimize_mesh_2(cdt2, CGAL::parameters::max_iteration_number = int(k),
-                                  CGAL::parameters::convergence = 0,
-                                  CGAL::parameters::freeze_bound = 0,
-                                  CGAL::parameters::seeds_begin = d.poly.holes.begin(),
-                                  CGAL::parameters::seeds_end = d.poly.holes.end());
+      CGAL::lloyd_optimize_mesh_2(
+          cdt2, CGAL::parameters::max_iteration_number = int(k), CGAL::parameters::convergence = 0,
+          CGAL::parameters::freeze_bound = 0, CGAL::parameters::seeds_begin = d.poly.holes.begin(),
+          CGAL::parameters::seeds_end = d.poly.holes.end());
       cgal.push_back(since(t) / double(k));
       r.cgal_k = measure(cdt2, d);
       r.domain_mismatch = domain_mismatches(cdt2, d);
@@ -393,14 +400,12 @@ void measure_memory(const std::string& name, std::size_t n) {
     const std::vector<Point> points = support::initial_points(d, n);
     CDT2 cdt2;
     build_cdt2(cdt2, d, points);
-    CGAL::lloyd_optimize_mesh_2(cdt2, CGAL::parameters::max_iteration_number = 5,
-                                CGAL::parameters::convergence = 0,
-                                CGAL::parameters::freeze_bound = 0,
-                                CGAL::parameters::seeds_begin = d.poly.holes.begin(),
-                                CGAL::parameters::seeds_end = d.poly.holes.end());
+    CGAL::lloyd_optimize_mesh_2(
+        cdt2, CGAL::parameters::max_iteration_number = 5, CGAL::parameters::convergence = 0,
+        CGAL::parameters::freeze_bound = 0, CGAL::parameters::seeds_begin = d.poly.holes.begin(),
+        CGAL::parameters::seeds_end = d.poly.holes.end());
   });
 }
-
 
 }  // namespace
 
@@ -425,7 +430,9 @@ int main(int argc, char* argv[]) {
     for (const long n : sizes)
       benchmark::RegisterBenchmark(("lloyd_iteration/" + name).c_str(), bm_iteration, name)
           ->Arg(n)
-          ->Iterations(n <= 10000 ? 5 : n <= 100000 ? 3 : 1)
+          ->Iterations(n <= 10000    ? 5
+                       : n <= 100000 ? 3
+                                     : 1)
           ->UseManualTime()
           ->Unit(benchmark::kMillisecond);
   for (const auto& name : names)
@@ -463,15 +470,14 @@ int main(int argc, char* argv[]) {
       const auto it = rows.find({name, std::size_t(n)});
       if (it == rows.end()) continue;
       const Row& r = it->second;
-      const std::string ours_conv =
-          r.ours_stop.empty() ? "–"
-                              : std::to_string(r.ours_conv_it) + ", " +
-                                    fmt("%.3f", r.ours_conv_s) + ", " + r.ours_stop;
+      const std::string ours_conv = r.ours_stop.empty()
+                                        ? "–"
+                                        : std::to_string(r.ours_conv_it) + ", " +
+                                              fmt("%.3f", r.ours_conv_s) + ", " + r.ours_stop;
       const std::string cgal_conv =
           r.cgal_stop.empty() ? "–"
-                              : std::to_string(r.cgal_conv_it) + ", " +
-                                    fmt("%.3f", r.cgal_conv_s) + ", " + r.cgal_stop + ", " +
-                                    fmt("%.4f", r.cgal_conv.normalized);
+                              : std::to_string(r.cgal_conv_it) + ", " + fmt("%.3f", r.cgal_conv_s) +
+                                    ", " + r.cgal_stop + ", " + fmt("%.4f", r.cgal_conv.normalized);
       std::printf(
           "| %s | %ld | %zu | %s | %s | %s | %s | %s | %s | %s | %s | %s / %s | %s / %s | %s | "
           "%s | %s / %s / %s |\n",
@@ -486,8 +492,9 @@ int main(int argc, char* argv[]) {
           fmt("%.0f", r.rss_cdt).c_str(), fmt("%.0f", r.rss_ours).c_str(),
           fmt("%.0f", r.rss_cgal).c_str());
     }
-  std::printf("\nChecks (faces whose CGAL domain mark differs from ours after K; CGAL free "
-              "points outside the domain; energy rises over the K iterations):");
+  std::printf(
+      "\nChecks (faces whose CGAL domain mark differs from ours after K; CGAL free "
+      "points outside the domain; energy rises over the K iterations):");
   for (const auto& [key, r] : rows) {
     if (r.k == 0) continue;
     std::printf("\n- %s N=%zu: marks differ %zu; outside after K %zu, uniform %zu",

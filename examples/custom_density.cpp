@@ -3,9 +3,9 @@
 // concentrated along a sine wave across the domain's bounding box (cells there are 4x smaller).
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/Cvt_triangulation_2.h>
-#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/IO/write_svg.h>
+#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 
@@ -41,17 +41,17 @@ int main(int argc, char* argv[]) {
     };
     // Start near the result: a CVT of density rho has about sqrt(rho) generators per unit area.
     const auto start_density = [&rho](const K::Point_2& p) { return std::sqrt(rho(p)); };
-    CVT_2::insert_generators_2(cdt, CVT_2::random_points_in_domain_2(
-        cdt, n, CVT_2::parameters::density(start_density).random_seed(1)));
+    CVT_2::insert_generators_2(
+        cdt, CVT_2::random_points_in_domain_2(
+                 cdt, n, CVT_2::parameters::density(start_density).random_seed(1)));
 
     const CVT_2::Optimization_result r = CVT_2::lloyd_optimize_2(
         cdt, CVT_2::parameters::density(rho).number_of_iterations(iterations));
 
     std::cout << "custom_density: " << n << " generators, " << r.number_of_iterations
               << " iterations, "
-              << "stopped: " << CVT_2::to_string(r.stop_reason)
-              << ", energy " << r.energy << ", largest move ratio " << r.max_move_ratio << ", "
-              << r.seconds << " s\n";
+              << "stopped: " << CVT_2::to_string(r.stop_reason) << ", energy " << r.energy
+              << ", largest move ratio " << r.max_move_ratio << ", " << r.seconds << " s\n";
     if (!CVT_2::IO::write_svg(svg, CVT_2::Bounded_voronoi_diagram_2<CDT>(cdt)))
       throw std::runtime_error("cannot write " + svg);
     std::cout << "custom_density: picture in " << svg << '\n';

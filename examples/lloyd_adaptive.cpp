@@ -5,9 +5,9 @@
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/Cvt_triangulation_2.h>
-#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/IO/write_svg.h>
+#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 
@@ -36,8 +36,9 @@ int main(int argc, char* argv[]) {
 
     // A CVT of density 1/mu^4 has about 1/mu^2 generators per unit area: start from that.
     const auto start_density = [&mu](const K::Point_2& p) { return 1 / (mu(p) * mu(p)); };
-    CVT_2::insert_generators_2(cdt, CVT_2::random_points_in_domain_2(
-        cdt, n, CVT_2::parameters::density(start_density).random_seed(1)));
+    CVT_2::insert_generators_2(
+        cdt, CVT_2::random_points_in_domain_2(
+                 cdt, n, CVT_2::parameters::density(start_density).random_seed(1)));
 
     // sizing_field(mu) iterates with the density 1/mu^4, integrated by the midpoint rule.
     const CVT_2::Optimization_result r = CVT_2::lloyd_optimize_2(
@@ -45,9 +46,8 @@ int main(int argc, char* argv[]) {
 
     std::cout << "lloyd_adaptive: " << n << " generators, k = " << k << ", "
               << r.number_of_iterations << " iterations, "
-              << "stopped: " << CVT_2::to_string(r.stop_reason)
-              << ", energy " << r.energy << ", largest move ratio " << r.max_move_ratio << ", "
-              << r.seconds << " s\n";
+              << "stopped: " << CVT_2::to_string(r.stop_reason) << ", energy " << r.energy
+              << ", largest move ratio " << r.max_move_ratio << ", " << r.seconds << " s\n";
     if (!CVT_2::IO::write_svg(svg, CVT_2::Bounded_voronoi_diagram_2<CDT>(cdt)))
       throw std::runtime_error("cannot write " + svg);
     std::cout << "lloyd_adaptive: picture in " << svg << '\n';

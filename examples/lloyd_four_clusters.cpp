@@ -21,13 +21,14 @@ int main(int argc, char* argv[]) {
   try {
     CDT cdt;
     CVT_2::IO::insert_poly(cdt, CVT_2::IO::read_poly<K::Point_2>(domain));  // its free vertices
-    CVT_2::Lloyd_optimizer_2<CDT> lloyd(cdt);                                 // are the generators
+    CVT_2::Lloyd_optimizer_2<CDT> lloyd(cdt);                               // are the generators
     const double bound = 0.01;  // the paper's stopping rule: every move ratio below 1%
     for (std::size_t it = 0;; ++it) {
       const auto& e = lloyd.evaluate(100);
       const bool converged = e.max_move_ratio < bound;
       if (it == 0 || it == 1 || it == 5 || it == 10 || it == 100 || converged) {
-        const std::string svg = prefix + "_" + (converged ? "converged" : std::to_string(it)) + ".svg";
+        const std::string svg =
+            prefix + "_" + (converged ? "converged" : std::to_string(it)) + ".svg";
         CVT_2::IO::write_svg(svg, lloyd.diagram());
         std::cout << "iteration " << it << ": energy " << e.energy << ", largest move ratio "
                   << e.max_move_ratio << " -> " << svg << '\n';

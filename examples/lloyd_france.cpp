@@ -4,9 +4,9 @@
 // a callback.
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/Cvt_triangulation_2.h>
-#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/IO/write_svg.h>
+#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 
@@ -43,9 +43,8 @@ int main(int argc, char* argv[]) {
 
     std::cout << "lloyd_france: " << n << " generators, " << r.number_of_iterations
               << " iterations, "
-              << "stopped: " << CVT_2::to_string(r.stop_reason)
-              << ", energy " << r.energy << ", largest move ratio " << r.max_move_ratio << ", "
-              << r.seconds << " s\n";
+              << "stopped: " << CVT_2::to_string(r.stop_reason) << ", energy " << r.energy
+              << ", largest move ratio " << r.max_move_ratio << ", " << r.seconds << " s\n";
     if (!CVT_2::IO::write_svg(svg, CVT_2::Bounded_voronoi_diagram_2<CDT>(cdt), 1200))
       throw std::runtime_error("cannot write " + svg);
     std::cout << "lloyd_france: picture in " << svg << '\n';

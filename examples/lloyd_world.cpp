@@ -5,9 +5,9 @@
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/Cvt_triangulation_2.h>
-#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/IO/write_svg.h>
+#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 
@@ -39,15 +39,16 @@ int main(int argc, char* argv[]) {
       CVT_2::insert_generators_2(
           cdt, CVT_2::random_points_in_domain_2(cdt, n, CVT_2::parameters::random_seed(1)));
       const auto np = CVT_2::parameters::number_of_iterations(iterations);
-      const CVT_2::Optimization_result r = adaptive ? CVT_2::lloyd_optimize_2(cdt, np.sizing_field(mu))
-                                             : CVT_2::lloyd_optimize_2(cdt, np);
+      const CVT_2::Optimization_result r = adaptive
+                                               ? CVT_2::lloyd_optimize_2(cdt, np.sizing_field(mu))
+                                               : CVT_2::lloyd_optimize_2(cdt, np);
 
       const std::string svg = prefix + (adaptive ? "_adaptive.svg" : "_uniform.svg");
       std::cout << "lloyd_world: " << (adaptive ? "adaptive, k = 0.1: " : "uniform: ") << n
                 << " generators, " << r.number_of_iterations << " iterations, "
-                << "stopped: " << CVT_2::to_string(r.stop_reason)
-                << ", energy " << r.energy << ", largest move ratio " << r.max_move_ratio << ", "
-                << r.seconds << " s -> " << svg << '\n';
+                << "stopped: " << CVT_2::to_string(r.stop_reason) << ", energy " << r.energy
+                << ", largest move ratio " << r.max_move_ratio << ", " << r.seconds << " s -> "
+                << svg << '\n';
       if (!CVT_2::IO::write_svg(svg, CVT_2::Bounded_voronoi_diagram_2<CDT>(cdt), 1800))
         throw std::runtime_error("cannot write " + svg);
     }

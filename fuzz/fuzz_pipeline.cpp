@@ -41,8 +41,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const auto& s : poly.segments) on_segment[s[0]] = on_segment[s[1]] = true;
     if (std::find(on_segment.begin(), on_segment.end(), false) == on_segment.end())
       CVT_2::insert_generators_2(
-          cdt, CVT_2::random_points_in_domain_2(
-                   cdt, random_generators, CVT_2::parameters::random_seed(fnv1a(data, size))));
+          cdt, CVT_2::random_points_in_domain_2(cdt, random_generators,
+                                                CVT_2::parameters::random_seed(fnv1a(data, size))));
 
     fuzz::Bvd bvd(cdt);
     bvd.update();
@@ -55,7 +55,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool well_conditioned = fuzz::is_well_conditioned(cdt);
     lloyd.move();
     const double e1 = lloyd.evaluate(10).energy;
-    if (!std::isfinite(e0) || !std::isfinite(e1)) fuzz::violated("the energy is not finite", e0, e1);
+    if (!std::isfinite(e0) || !std::isfinite(e1))
+      fuzz::violated("the energy is not finite", e0, e1);
     if (well_conditioned && fuzz::is_well_conditioned(cdt) && e1 > e0 * (1 + 1e-12))
       fuzz::violated("the energy rose after one Lloyd step", e1, e0);
     fuzz::check_cells_tile_domain(lloyd.diagram());

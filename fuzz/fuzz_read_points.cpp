@@ -19,8 +19,8 @@ namespace {
 const fuzz::CDT& four_clusters() {
   static const fuzz::CDT cdt = [] {
     fuzz::CDT d;
-    CVT_2::IO::insert_poly(
-        d, CVT_2::IO::read_poly<fuzz::Point>(CVT_2_DATA_DIR "/four_clusters.poly"));
+    CVT_2::IO::insert_poly(d,
+                           CVT_2::IO::read_poly<fuzz::Point>(CVT_2_DATA_DIR "/four_clusters.poly"));
     return d;
   }();
   return cdt;

@@ -80,8 +80,8 @@ inline Area_meter area_meter(const CDT& cdt) {
       const double dx = std::ldexp(q.x() - p.x(), -m.e), dy = std::ldexp(q.y() - p.y(), -m.e);
       if (dx * dx + dy * dy > longest) longest = dx * dx + dy * dy, o = i;
     }
-    const double twice_area = std::abs(m(f->vertex(o)->point(), f->vertex((o + 1) % 3)->point(),
-                                         f->vertex((o + 2) % 3)->point()));
+    const double twice_area = std::abs(
+        m(f->vertex(o)->point(), f->vertex((o + 1) % 3)->point(), f->vertex((o + 2) % 3)->point()));
     m.condition = std::max(m.condition, twice_area > 0 ? longest / twice_area : HUGE_VAL);
   }
   return m;

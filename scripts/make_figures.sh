@@ -14,7 +14,7 @@ if [ "$1" = convergence ] && [ -z "$csv" ]; then
   echo "make_figures.sh convergence: set CVT_2_CONVERGENCE_CSV to the benchmark's CSV" >&2
   exit 1
 fi
-"$root/scripts/install_dependencies.sh" librsvg2-bin pngquant
+"$root/scripts/install_dependencies.sh" librsvg2-bin pngquant python3-matplotlib
 ex="$build/examples"
 data="$root/examples/data"
 fig="$root/doc/fig"
@@ -51,7 +51,7 @@ cd "$tmp"
 if [ "$1" != convergence ]; then
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
 cmake --build "$build" -j "${JOBS:-2}" --target bvd_cells lloyd_four_clusters lloyd_uniform \
-  custom_density lloyd_adaptive lloyd_france lloyd_world lloyd_curved_hole
+  custom_density lloyd_adaptive lloyd_france lloyd_world lloyd_curved_hole cvt2
 
 "$ex/bvd_cells" "$data/four_clusters.poly" "$data/four_clusters_points.txt" bvd.svg > /dev/null
 png 700 bvd.svg "$fig/bvd_four_clusters.png"
@@ -78,6 +78,13 @@ png 1200 fig.svg "$fig/lloyd_world.png"
 "$ex/lloyd_curved_hole"
 combine row fig.svg lloyd_curved_hole_uniform.svg lloyd_curved_hole_adaptive.svg
 png 1200 fig.svg "$fig/lloyd_curved_hole.png"
+
+"$build/tools/cvt2/cvt2" "$data/us_kentucky_counties.geojson" -n 6000 --quiet \
+  --geojson kentucky.geojson > /dev/null
+/usr/bin/python3 "$root/scripts/plot_geojson_cells.py" kentucky.geojson \
+  "$data/us_kentucky_counties.geojson" kentucky.png \
+  "cvt2 us_kentucky_counties.geojson -n 6000 --geojson: 7135 cells, coloured by county"
+pngquant --force --output "$fig/kentucky_counties.png" 64 kentucky.png
 fi
 
 if [ -n "$csv" ]; then

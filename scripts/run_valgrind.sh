@@ -5,7 +5,7 @@
 set -e
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install_dependencies.sh" valgrind
-if [ ! -x "$root/build/examples/cvt2" ] || [ ! -x "$root/build/examples/bvd_cells" ]; then
+if [ ! -x "$root/build/tools/cvt2/cvt2" ] || [ ! -x "$root/build/examples/bvd_cells" ]; then
   cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release > /dev/null
   cmake --build "$root/build" --target cvt2 bvd_cells -j 2
 fi
@@ -16,10 +16,14 @@ check() {
 }
 check "$root/build/examples/bvd_cells" "$data/four_clusters.poly" "$data/four_clusters_points.txt" \
   "$out/bvd.svg" > /dev/null
-check "$root/build/examples/cvt2" "$data/four_clusters.poly" --iterations 10 --quiet \
-  --svg "$out/a.svg" --geojson "$out/a.geojson" --vtk "$out/a.vtk" --mesh-out "$out/a"
-check "$root/build/examples/cvt2" "$data/earcut_dude.poly" -n 300 --density lipschitz \
+check "$root/build/tools/cvt2/cvt2" "$data/four_clusters.poly" --iterations 10 --quiet \
+  --svg "$out/a.svg" --geojson "$out/a.geojson" --vtu "$out/a.vtu" --disv "$out/a.disv" \
+  --cells-out "$out/a.txt" --mesh-out "$out/a"
+check "$root/build/tools/cvt2/cvt2" "$data/earcut_dude.poly" -n 300 --density lipschitz \
   --iterations 5 --quiet --algorithm lloyd
-check "$root/build/examples/cvt2" "$data/four_clusters.wkt" -n 20000 --iterations 3 --quiet  # threads
+check "$root/build/tools/cvt2/cvt2" "$data/four_clusters.wkt" -n 20000 --iterations 3 --quiet \
+  --geojson "$out/b.geojson"  # threads
+check "$root/build/tools/cvt2/cvt2" "$data/us_kentucky_counties.geojson" -n 3000 --iterations 3 --quiet \
+  --geojson "$out/c.geojson" --disv "$out/c.disv"
 rm -r "$out"
 echo "valgrind: no error, no leak"

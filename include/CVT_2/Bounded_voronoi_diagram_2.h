@@ -75,11 +75,13 @@ class Bounded_voronoi_diagram_2 {
       CLIP_POINT,    ///< where the bisector of the generator and `neighbor` meets `constraint`
       GENERATOR      ///< the generator itself, on the boundary of its cell (constrained vertex)
     };
-    Point_2 point;           ///< where it is
-    Type type;               ///< what it is
-    Face_handle face;        ///< for `CIRCUMCENTER`
-    Edge constraint;         ///< for `CLIP_POINT`: the constrained edge the point lies on
-    Vertex_handle neighbor;  ///< for `CLIP_POINT`: the other generator of the bisector
+    Point_2 point;     ///< where it is
+    Type type;         ///< what it is
+    Face_handle face;  ///< for `CIRCUMCENTER`
+    Edge constraint;   ///< for `CLIP_POINT`: the constrained edge the point lies on
+    /// for `CLIP_POINT`: the other generator of the bisector; for `CIRCUMCENTER`: the generator
+    /// across the cell edge that leaves it, counterclockwise
+    Vertex_handle neighbor;
   };
 
   /// A bidirectional circulator over the vertices of one cell, counterclockwise. It shares the
@@ -125,8 +127,9 @@ class Bounded_voronoi_diagram_2 {
     bool operator!=(const Cell_vertex_circulator& c) const { return !(*this == c); }
     bool operator==(std::nullptr_t) const { return m_cell == nullptr; }  // empty cell
     bool operator!=(std::nullptr_t) const { return m_cell != nullptr; }
-    size_type size() const { return m_cell ? m_cell->size() : 0; }  ///< the cell's vertex count
-                                                                    /// @}
+    /// the cell's vertex count
+    size_type size() const { return m_cell ? m_cell->size() : 0; }
+    /// @}
 
    private:
     friend class Bounded_voronoi_diagram_2;

@@ -5,6 +5,8 @@
 
 #include <CGAL/Constrained_triangulation_face_base_2.h>
 
+#include <cstddef>
+#include <cstdint>
 #include <utility>
 
 namespace CVT_2 {
@@ -54,30 +56,45 @@ class Bvd_face_base_2 : public Fb {
   /// @}
 
   /// whether the face belongs to the domain (set by `mark_domain_2()`).
-  bool is_inside_domain() const { return m_inside_domain; }
-  void set_inside_domain(bool b) { m_inside_domain = b; }  ///< sets the domain flag
+  bool is_inside_domain() const { return (m_bits & inside_bit) != 0; }
+  /// sets the domain flag
+  void set_inside_domain(bool b) { m_bits = b ? m_bits | inside_bit : m_bits & ~inside_bit; }
 
   /// whether a constraint hides the circumcenter from the face (set by the BVD, Algorithm 1).
-  bool is_blinded() const { return m_blinding_index >= 0; }
+  bool is_blinded() const { return (m_bits & index_mask) != 0; }
   /// the first constrained edge on the way from the face to its circumcenter.
   /// \pre `is_blinded()`
   Edge blinding_edge() const {
     CGAL_precondition(is_blinded());
-    return {m_blinding_face, m_blinding_index};
+    return {m_blinding_face, int(m_bits & index_mask) - 1};
   }
   /// tags the face as blinded by the constrained edge `e`.
   void set_blinding_edge(const Edge& e) {
     m_blinding_face = e.first;
-    m_blinding_index = static_cast<signed char>(e.second);
+    m_bits = (m_bits & ~index_mask) | std::uint32_t(e.second + 1);
   }
-  void clear_blinding() { m_blinding_index = -1; }  ///< tags the face as seeing its circumcenter
+  /// tags the face as seeing its circumcenter
+  void clear_blinding() { m_bits &= ~index_mask; }
+
+  /// A number for the algorithms that number faces (`Bvd_mesh_2` numbers the circumcenters
+  /// with it), below `max_id`.
+  std::size_t id() const { return m_bits >> id_shift; }
+  /// sets `id()`. \pre `i <= max_id`
+  void set_id(std::size_t i) {
+    CGAL_precondition(i <= max_id);
+    m_bits = (m_bits & ((1u << id_shift) - 1)) | (std::uint32_t(i) << id_shift);
+  }
+  /// the largest id a face can hold
+  static constexpr std::size_t max_id = (std::size_t(1) << 29) - 1;
 
  private:
-  // The two bytes come first so that they can fill the tail padding of the layer below (after
-  // the constrained flags of Constrained_triangulation_face_base_2): the layer then costs 8
-  // bytes per face instead of 16.
-  signed char m_blinding_index = -1;  // -1: the face sees its circumcenter
-  bool m_inside_domain = false;
+  // One word fills the tail padding of the layer below (after the constrained flags of
+  // Constrained_triangulation_face_base_2), so that the layer costs 8 bytes per face: bits 0-1
+  // the blinding edge's index + 1 (0: the face sees its circumcenter), bit 2 the domain flag,
+  // bits 3-31 the id.
+  static constexpr std::uint32_t index_mask = 3, inside_bit = 4;
+  static constexpr int id_shift = 3;
+  std::uint32_t m_bits = 0;
   Face_handle m_blinding_face{};
 };
 

@@ -7,16 +7,17 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_data_structure_2.h>
-#include <CGAL/Triangulation_vertex_base_2.h>
+#include <CGAL/Triangulation_vertex_base_with_id_2.h>
 
 namespace CVT_2 {
 
 /// \ingroup PkgCvt2Ref
 /// CGAL's constrained Delaunay triangulation with `Bvd_face_base_2` faces, what the diagram and
-/// the optimizers need when nothing else is:
+/// the optimizers need when nothing else is, and vertices with an `id()` (which `Bvd_mesh_2`
+/// numbers the cells with; any vertex base works, a little more slowly):
 ///
 ///     using CDT = CGAL::Constrained_Delaunay_triangulation_2<K,
-///         CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_2<K>,
+///         CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_with_id_2<K>,
 ///                                              CVT_2::Bvd_face_base_2<K>>,
 ///         Itag>;
 ///
@@ -27,7 +28,8 @@ namespace CVT_2 {
 template <class K, class Itag = CGAL::No_constraint_intersection_requiring_constructions_tag>
 using Cvt_triangulation_2 = CGAL::Constrained_Delaunay_triangulation_2<
     K,
-    CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_2<K>, Bvd_face_base_2<K>>,
+    CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_with_id_2<K>,
+                                         Bvd_face_base_2<K>>,
     Itag>;
 
 }  // namespace CVT_2

@@ -134,9 +134,8 @@ class Lbfgs_optimizer_2 {
   void set_number_of_threads(unsigned n) { m_lloyd.set_number_of_threads(n); }
   unsigned number_of_threads() const { return m_lloyd.number_of_threads(); }  ///< as set
 
-  const Evaluation& last_evaluation() const {
-    return m_current.evaluation;
-  }  ///< of the current point
+  /// the evaluation of the current point
+  const Evaluation& last_evaluation() const { return m_current.evaluation; }
   /// evaluations done so far
   std::size_t number_of_evaluations() const { return m_lloyd.number_of_evaluations(); }
   std::size_t number_of_steps() const { return m_steps; }  ///< done so far

@@ -31,13 +31,15 @@ class Domain_error : public std::invalid_argument {
 namespace IO {
 
 /// \ingroup PkgCvt2IO
-/// Thrown by the readers on malformed input; the message reads `file:line: what (near 'token')`.
+/// Thrown by the readers on malformed input; the message reads `file:line: what (near 'token')`,
+/// or `file: what` when no line applies (line 0).
 class Parse_error : public std::invalid_argument {
  public:
   /// an error described by `what` at `line` of `file`, near `token`
   Parse_error(const std::string& file, std::size_t line, const std::string& what,
               const std::string& token = {})
-      : std::invalid_argument(file + ":" + std::to_string(line) + ": " + what +
+      : std::invalid_argument(file + (line > 0 ? ":" + std::to_string(line) : std::string()) +
+                              ": " + what +
                               (token.empty() ? std::string() : " (near '" + token + "')")),
         m_file(file),
         m_line(line),

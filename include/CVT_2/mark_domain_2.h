@@ -67,7 +67,7 @@ std::vector<std::vector<typename std::iterator_traits<PointIterator>::value_type
   std::map<Point_2, std::size_t> position;  // of each vertex on the path
   const auto close = [&](std::vector<Point_2> loop) {
     if (loop.size() >= 3 && !CGAL::is_simple_2(loop.begin(), loop.end()))
-      throw Domain_error("the hole ring through " + to_string(loop.front()) +
+      throw Domain_error("the ring through " + to_string(loop.front()) +
                          " overlaps itself: it has no inside");
     if (loop.size() >= 3) loops.push_back(std::move(loop));
   };
@@ -84,6 +84,21 @@ std::vector<std::vector<typename std::iterator_traits<PointIterator>::value_type
   }
   close(std::move(path));
   return loops;
+}
+
+// For each loop of one ring (simple_loops()), how many of the others contain it. The loops
+// touch at vertices only, so the midpoint of an edge of one is inside or outside each other.
+template <class Point_2>
+std::vector<std::size_t> nesting_depths(const std::vector<std::vector<Point_2>>& loops) {
+  std::vector<std::size_t> depth(loops.size(), 0);
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    const Point_2 m = CGAL::midpoint(loops[i][0], loops[i][1]);
+    for (std::size_t j = 0; j < loops.size(); ++j)
+      if (j != i &&
+          CGAL::bounded_side_2(loops[j].begin(), loops[j].end(), m) == CGAL::ON_BOUNDED_SIDE)
+        ++depth[i];
+  }
+  return depth;
 }
 
 // The face on the given side of the constrained edge that starts at the vertex at `a` and goes
@@ -178,25 +193,39 @@ void mark_domain_2(const CDT& cdt, const PointRange& hole_seeds) {
 /// with holes (for example read by `CGAL::IO::read_WKT()`), without seed points: the faces
 /// inside each hole ring, next to its edges, serve as hole seeds, and Triangle's rule does the
 /// rest. Polygons may share edges and vertices (a map of counties); their union is the domain.
+///
+/// A ring that touches itself at a vertex is read as GEOS reads it (`make_valid()`): cut there
+/// into simple loops, a loop of an outer ring that lies inside another loop of the same ring
+/// (an ESRI-style "inverted hole", a pocket closed off by the ring) is a hole, a loop inside
+/// that one an island again; the loops of a hole ring are holes, those inside them islands.
 /// \tparam PolygonWithHolesRange a range of `CGAL::Polygon_with_holes_2`.
+/// \throws Domain_error for a ring whose loops overlap (no inside).
 template <class CDT, class PolygonWithHolesRange>
 void mark_domain_from_polygons_2(const CDT& cdt, const PolygonWithHolesRange& polygons) {
   using Face_handle = typename CDT::Face_handle;
   mark_domain_2(cdt, std::vector<typename CDT::Point_2>());
   if (cdt.dimension() < 2) return;
   std::vector<Face_handle> stack;
-  for (const auto& pwh : polygons) {
-    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) {
-      for (const auto& loop : internal::simple_loops(h->vertices_begin(), h->vertices_end())) {
-        // The hole lies left of its edges if it turns counterclockwise, right otherwise.
-        const CGAL::Orientation inside =
-            CGAL::orientation_2(loop.begin(), loop.end()) == CGAL::COUNTERCLOCKWISE
-                ? CGAL::LEFT_TURN
-                : CGAL::RIGHT_TURN;
-        for (std::size_t i = 0; i < loop.size(); ++i)
-          stack.push_back(internal::face_beside(cdt, loop[i], loop[(i + 1) % loop.size()], inside));
-      }
+  // The faces just inside the loops of `ring` whose depth has the parity `hole_parity`.
+  const auto seed = [&](auto first, auto last, std::size_t hole_parity) {
+    const auto loops = internal::simple_loops(first, last);
+    const auto depth = internal::nesting_depths(loops);
+    for (std::size_t l = 0; l < loops.size(); ++l) {
+      if (depth[l] % 2 != hole_parity) continue;
+      const auto& loop = loops[l];
+      // The loop's inside lies left of its edges if it turns counterclockwise, right otherwise.
+      const CGAL::Orientation inside =
+          CGAL::orientation_2(loop.begin(), loop.end()) == CGAL::COUNTERCLOCKWISE
+              ? CGAL::LEFT_TURN
+              : CGAL::RIGHT_TURN;
+      for (std::size_t i = 0; i < loop.size(); ++i)
+        stack.push_back(internal::face_beside(cdt, loop[i], loop[(i + 1) % loop.size()], inside));
     }
+  };
+  for (const auto& pwh : polygons) {
+    seed(pwh.outer_boundary().vertices_begin(), pwh.outer_boundary().vertices_end(), 1);
+    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h)
+      seed(h->vertices_begin(), h->vertices_end(), 0);
   }
   internal::flood_outside(cdt, stack);
 }

@@ -139,7 +139,9 @@ const Point_2& nearest_vertex(const std::array<Point_2, 3>& t, const Point_2& p)
 /// unit area in 2D: sampling with \f$\rho^{1/2}\f$ starts Lloyd iteration close to it.
 /// \param cdt a triangulation whose domain is marked
 /// \param n how many points
-/// \param np optional: `density(rho)` (default uniform), `random_seed(s)` (default 0).
+/// \param np optional: `density(rho)` (default uniform), or `sizing_field(mu)` for the density
+///        \f$1/\mu^2\f$ that starts Lloyd iteration under `sizing_field(mu)` (\f$\rho =
+///        1/\mu^4\f$) close to its result; `random_seed(s)` (default 0).
 /// \throws Domain_error if the domain is empty; the density's own errors.
 template <class CDT, class NP = No_named_parameters>
 std::vector<typename CDT::Point_2> random_points_in_domain_2(
@@ -158,8 +160,7 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   std::vector<std::size_t> face_of;
   std::vector<double> cumulative;
   double total = 0;
-  if constexpr (has_parameter<NP, density_t>) {
-    const auto& rho = get_parameter(np, density_t());
+  const auto weigh_pieces = [&](const auto& rho) {
     cut = internal::bisect_triangles(domain, domain_area / double(std::max<std::size_t>(n, 10000)),
                                      face_of);
     pieces = &cut;
@@ -169,6 +170,17 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
       total += domain.area(t) * s / 3;
       cumulative.push_back(total);
     }
+  };
+  static_assert(!(has_parameter<NP, density_t> && has_parameter<NP, sizing_field_t>),
+                "random_points_in_domain_2: give either density() or sizing_field(), not both");
+  if constexpr (has_parameter<NP, density_t>) {
+    weigh_pieces(get_parameter(np, density_t()));
+  } else if constexpr (has_parameter<NP, sizing_field_t>) {
+    const auto& mu = get_parameter(np, sizing_field_t());
+    weigh_pieces([&mu](const Point_2& p) {
+      const double m = CGAL::to_double(mu(p));
+      return 1 / (m * m);
+    });
   } else {
     for (const Triangle& t : domain.triangles) cumulative.push_back(total += domain.area(t));
   }

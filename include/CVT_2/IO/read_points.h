@@ -4,6 +4,7 @@
 #define CVT_2_IO_READ_POINTS_H
 
 #include <CVT_2/exceptions.h>
+#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/internal/line_reader.h>
 
 #include <array>
@@ -50,6 +51,20 @@ template <class Point_2>
 Point_data<Point_2> read_points(const std::string& filename) {
   std::ifstream is = internal::open_input(filename);
   return read_points<Point_2>(is, filename);
+}
+
+/// \ingroup PkgCvt2IO
+/// Inserts the points as generators (`insert_generators_2()`, which keeps the domain's marking).
+/// \throws Domain_error naming the file and line of a point that is outside the domain.
+template <class CDT>
+void insert_points(CDT& cdt, const Point_data<typename CDT::Point_2>& data) {
+  try {
+    insert_generators_2(cdt, data.points);
+  } catch (const Domain_error& e) {
+    if (e.index() >= data.lines.size()) throw;
+    throw Domain_error(data.source + ":" + std::to_string(data.lines[e.index()]) + ": " + e.what(),
+                       e.index());
+  }
 }
 
 }  // namespace IO

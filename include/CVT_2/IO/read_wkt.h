@@ -26,8 +26,9 @@ namespace CVT_2 {
 namespace IO {
 
 /// \ingroup PkgCvt2IO
-/// A domain read from WKT: polygons with holes (their union is the domain), linestrings (inner
-/// constraints) and points (generators), each with the line it was on.
+/// A domain read from WKT (or GeoJSON): polygons with holes (their union is the domain),
+/// linestrings (inner constraints) and points (generators), each with the line it was on (for
+/// GeoJSON, the number of its feature).
 /// \tparam K a CGAL kernel.
 template <class K>
 struct Wkt_data {
@@ -43,6 +44,14 @@ struct Wkt_data {
   /// each point equal to an earlier one, as (its line, the earlier one's line): inserting
   /// them merges them
   std::vector<std::array<std::size_t, 2>> repeated_points;
+  /// for GeoJSON, what to call each feature in messages, by its number from 1
+  std::vector<std::string> item_names;
+
+  /// how messages name line or feature `n`: `file:n: `, or `file: feature n ('name'): `
+  std::string where(std::size_t n) const {
+    if (n >= 1 && n <= item_names.size()) return source + ": " + item_names[n - 1] + ": ";
+    return source + ":" + std::to_string(n) + ": ";
+  }
 };
 
 }  // namespace IO
@@ -258,9 +267,7 @@ Wkt_data<K> read_wkt(const std::string& filename) {
 template <class CDT>
 void insert_wkt(CDT& cdt, const Wkt_data<typename CDT::Geom_traits>& w) {
   using Point_2 = typename CDT::Point_2;
-  const auto where = [&w](std::size_t line) {
-    return w.source + ":" + std::to_string(line) + ": ";
-  };
+  const auto where = [&w](std::size_t line) { return w.where(line); };
   const auto constrain = [&](const auto& points, bool closed, std::size_t line) {
     std::vector<Point_2> p;
     for (const Point_2& q : points)

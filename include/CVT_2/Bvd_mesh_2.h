@@ -1,0 +1,725 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Bvd_mesh_2: the bounded Voronoi diagram as a conforming polygon mesh, with shared vertices,
+// cell adjacency and the constraint under each boundary edge.
+#ifndef CVT_2_BVD_MESH_2_H
+#define CVT_2_BVD_MESH_2_H
+
+#include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/internal/Face_chunks.h>
+#include <CVT_2/internal/Handle_numbering.h>
+#include <CVT_2/internal/construct_cell.h>
+#include <CVT_2/internal/prefetch.h>
+#include <CVT_2/internal/run_chunks.h>
+#include <CVT_2/mark_domain_2.h>
+
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace CVT_2 {
+
+/// \ingroup PkgCvt2Ref
+/// The cells of a bounded Voronoi diagram as one polygon mesh: each circumcenter, clip point and
+/// constrained generator is one mesh vertex, shared by the cells it bounds, found from the
+/// triangulation's topology (never by comparing coordinates, except that points a cell visits
+/// twice in a row, a circumcenter that is also a clip point, say, are one vertex); each cell is
+/// a cycle of vertex indices, counterclockwise; each edge of a cycle knows what lies beyond it:
+/// another cell (a bisector edge), or a constraint, with the cell on its other side if the
+/// constraint is inside the domain.
+///
+/// Cells are numbered in the order of `Bounded_voronoi_diagram_2::for_each_cell()`, vertices
+/// with the circumcenters first, in the order of their faces in memory, then the other vertices
+/// in the order of the cells that first meet them. The same triangulation gives the same mesh,
+/// whatever the number of threads.
+///
+/// How cells that are not simple polygons are represented:
+/// - *slits*: a constraint that ends inside a cell or crosses it at its generator (a vertex on
+///   an inner constraint) is walked there and back, `..., m, v, m, ...`, where `v` is the
+///   generator and `m` where the constraint leaves the cell; both edges have the cell on both
+///   sides and name the constraint.
+/// - *lobes*: a generator where the domain pinches (two holes, or a hole and the boundary, that
+///   touch at it) has a cell of several pieces that meet only there; the cycle goes through the
+///   generator once per piece.
+///
+/// `polygons()` turns a cell into what GIS tools accept as valid: slits dropped (they have no
+/// width), one ring per lobe.
+///
+/// \tparam Diagram a `Bounded_voronoi_diagram_2`. The mesh is fastest when the triangulation's
+///         vertices have an `id()` (CGAL's `Triangulation_vertex_base_with_id_2`, as in
+///         `Cvt_triangulation_2`) and its faces one (`Bvd_face_base_2`); building it writes
+///         them. Without, it keeps its numbering in hash maps.
+template <class Diagram>
+class Bvd_mesh_2 {
+ public:
+  using Triangulation = typename Diagram::Triangulation;  ///< the triangulation type
+  using Point_2 = typename Diagram::Point_2;              ///< the point type
+  using FT = typename Diagram::FT;                        ///< the number type
+  using Vertex_handle = typename Diagram::Vertex_handle;  ///< a generator
+  using Cell_vertex = typename Diagram::Cell_vertex;      ///< a vertex of a diagram cell
+  using Vertex_type = typename Cell_vertex::Type;         ///< circumcenter, clip point, generator
+  using Index = std::uint32_t;                            ///< a vertex, cell or constraint number
+  static constexpr Index none = Index(-1);                ///< no cell, no constraint
+
+  /// What lies beyond an edge of a cell.
+  struct Side {
+    Index cell = none;        ///< the cell beyond, or `none` (the outside or a hole)
+    Index constraint = none;  ///< the constraint the edge lies on, or `none` (a bisector edge)
+  };
+
+  /// An edge of the mesh: `cells[0]` lies left of `vertices[0]` -> `vertices[1]`.
+  struct Edge {
+    std::array<Index, 2> vertices;  ///< its ends
+    std::array<Index, 2> cells;     ///< left and right; `cells[1]` is `none` on the boundary
+    Index constraint;               ///< the constraint it lies on, or `none`
+  };
+
+  /// A constrained edge of the triangulation, by the cells of its two end points (constrained
+  /// vertices have cells), the smaller first. An input segment on which vertices lie is several.
+  using Constraint = std::array<Index, 2>;
+
+  /// Builds the mesh of the diagram `bvd`, its cells on `threads` threads (0: one per core).
+  /// \pre the triangulation has not changed since `bvd` was built or updated.
+  explicit Bvd_mesh_2(const Diagram& bvd, unsigned threads = 0);
+
+  /// \name Vertices
+  /// @{
+  std::size_t number_of_vertices() const { return m_points.size(); }  ///< mesh vertices
+  const Point_2& point(std::size_t i) const { return m_points[i]; }   ///< where vertex `i` is
+  /// what vertex `i` is: a circumcenter, a clip point (on a constraint) or a generator
+  Vertex_type vertex_type(std::size_t i) const { return m_types[i]; }
+  const std::vector<Point_2>& points() const { return m_points; }  ///< all, by index
+  /// @}
+
+  /// \name Cells
+  /// @{
+  std::size_t number_of_cells() const { return m_generators.size(); }  ///< one per generator
+  /// the vertex indices of cell `k`, counterclockwise (`begin()`, `end()`, `size()`)
+  struct Index_range {
+    const Index* first;
+    const Index* last;
+    const Index* begin() const { return first; }
+    const Index* end() const { return last; }
+    std::size_t size() const { return std::size_t(last - first); }
+    Index operator[](std::size_t j) const { return first[j]; }
+  };
+  Index_range cell(std::size_t k) const {
+    return {m_cell_vertices.data() + m_offsets[k], m_cell_vertices.data() + m_offsets[k + 1]};
+  }
+  /// what lies beyond the edge from `cell(k)[j]` to `cell(k)[j + 1]` (the last to the first)
+  const Side& side(std::size_t k, std::size_t j) const { return m_sides[m_offsets[k] + j]; }
+  Vertex_handle generator(std::size_t k) const { return m_generators[k]; }  ///< of cell `k`
+  /// whether the generator of cell `k` is constrained (a vertex of its own cell)
+  bool is_constrained(std::size_t k) const { return m_constrained[k] != 0; }
+  /// the cell of generator `v`. \pre `v` has a cell
+  /// The ids of the triangulation's vertices hold it, until they are written again (by another
+  /// mesh of the triangulation, say).
+  std::size_t cell_of(Vertex_handle v) const { return cell_number(v); }
+  FT area(std::size_t k) const;           ///< of cell `k` (slits add nothing)
+  Point_2 centroid(std::size_t k) const;  ///< of cell `k`, as a uniform polygon
+  /// the cells that share an edge with cell `k`, in the order of its cycle, each once
+  std::vector<Index> neighbors(std::size_t k) const;
+  /// Cell `k` as valid polygons: slits dropped, one counterclockwise ring (vertex indices, not
+  /// closed) per lobe, several rings only where the cell meets itself at its generator.
+  std::vector<std::vector<Index>> polygons(std::size_t k) const;
+  /// Cell `k` as one ring: slits dropped, lobes kept, joined at the generator (a ring that
+  /// touches itself there): the cell for formats with one vertex list a cell.
+  std::vector<Index> outline(std::size_t k) const;
+  /// @}
+
+  /// \name Edges and constraints
+  /// @{
+  /// Each edge once, from the cell on its left (computed at each call).
+  std::vector<Edge> edges() const;
+  /// The constrained edges of the triangulation that cell edges lie on, in the order met.
+  const std::vector<Constraint>& constraints() const { return m_constraints; }
+  /// @}
+
+ private:
+  using Face_handle = typename Triangulation::Face_handle;
+  using Tri_edge = typename Triangulation::Edge;
+
+  // The identity of a cell vertex other than a circumcenter: the generator (kind 1) by its
+  // cell, a clip point (kind 2) by the cells of its bisector and of its constraint's ends.
+  struct Key {
+    int kind;
+    std::array<Index, 4> cells;
+    bool operator<(const Key& k) const { return std::tie(kind, cells) < std::tie(k.kind, k.cells); }
+  };
+  // A cell vertex as the cells pass records it, and the edge that leaves it, in 8 bytes: with
+  // the top bit clear a circumcenter's number and a neighbor's cell, with it set the position
+  // of a key and of a constraint in the chunk's lists.
+  static constexpr Index listed = Index(1) << 31;
+  struct Entry {
+    Index vertex;
+    Index out;
+  };
+  // What a chunk of cells found, in the order of its cells.
+  struct Chunk_cells {
+    std::vector<Index> sizes;
+    std::vector<Entry> entries;
+    std::vector<std::pair<Key, Point_2>> keys;
+    std::vector<Constraint> constraints;
+    std::vector<std::pair<Index, Index>> merges;  // vertices found at one point (as in Entry)
+  };
+
+  void number_cells_and_circumcenters(const Diagram& bvd,
+                                      const internal::Face_chunks<Triangulation>& chunks,
+                                      unsigned threads);
+  template <class Raw>
+  void add_cell(Vertex_handle v, const Raw& raw, Chunk_cells& out) const;
+  Index out_edge(Vertex_handle v, const Cell_vertex& a, const Cell_vertex& b,
+                 Chunk_cells& out) const;
+  Index vertex(Vertex_handle v, const Cell_vertex& c, Chunk_cells& out) const;
+  Constraint constraint_cells(const Tri_edge& e) const;
+  void assemble(std::vector<Chunk_cells>& chunks, unsigned threads);
+  void merge_vertices(const std::vector<std::pair<Index, Index>>& same);
+  void conform_constraints();
+  void pair_constraint_sides();
+
+  // Cells and circumcenters are numbered chunk by chunk in one pass: a vertex's or face's id holds
+  // its chunk and its number in the chunk, the chunks' offsets make it global.
+  static constexpr int cell_bits = 14, center_bits = 12;  // a chunk: 4096 faces, 3 x 4096 vertices
+  Index cell_number(Vertex_handle v) const {
+    const std::size_t id = m_cell_of.get(v);
+    return Index(m_cell_offsets[id >> cell_bits] + (id & ((1u << cell_bits) - 1)));
+  }
+  Index center_number(Face_handle f) const {
+    const std::size_t id = m_circumcenter_of.get(f);
+    return Index(m_center_offsets[id >> center_bits] + (id & ((1u << center_bits) - 1)));
+  }
+
+  std::vector<Point_2> m_points;
+  std::vector<Vertex_type> m_types;
+  std::vector<std::size_t> m_offsets{0};
+  std::vector<Index> m_cell_vertices;
+  std::vector<Side> m_sides;
+  std::vector<Vertex_handle> m_generators;
+  std::vector<unsigned char> m_constrained;
+  std::vector<Constraint> m_constraints;
+  internal::Handle_numbering<Vertex_handle> m_cell_of;
+  internal::Handle_numbering<Face_handle> m_circumcenter_of;
+  std::vector<std::size_t> m_cell_offsets, m_center_offsets;  // of each chunk
+  std::size_t m_number_of_circumcenters = 0;
+  // The sides on constraints, by cell and position in m_sides: the few the last passes visit.
+  std::vector<std::pair<Index, std::size_t>> m_on_constraints;
+  void list_sides_on_constraints();
+};
+
+// Cells are numbered in the order the cells pass visits them, circumcenters of the faces that
+// see them in the order of the faces, in one pass over the faces, chunk by chunk.
+template <class Diagram>
+void Bvd_mesh_2<Diagram>::number_cells_and_circumcenters(
+    const Diagram& bvd, const internal::Face_chunks<Triangulation>& chunks, unsigned threads) {
+  const Triangulation& cdt = bvd.triangulation();
+  if (chunks.size() >= (std::size_t(1) << (29 - center_bits)))
+    throw std::length_error("Bvd_mesh_2: more faces than the ids of faces can number");
+  m_cell_offsets.assign(chunks.size() + 1, 0);
+  m_center_offsets.assign(chunks.size() + 1, 0);
+  std::vector<std::vector<Vertex_handle>> generators(chunks.size());
+  // Hash maps are filled by one thread; the records' ids by all.
+  const unsigned writers = m_cell_of.in_record && m_circumcenter_of.in_record ? threads : 1u;
+  chunks.for_each(
+      [&](std::size_t c, auto first, auto last) {
+        std::size_t cells = 0, centers = 0;
+        for (auto f = first; f != last; ++f) {
+          if (!cdt.is_infinite(f) && f->is_inside_domain() && !f->is_blinded())
+            m_circumcenter_of.set(f, (c << center_bits) | centers++);
+          for (int i = 0; i < 3; ++i) {
+            const Vertex_handle v = f->vertex(i);
+            if (v->face() != f || cdt.is_infinite(v)) continue;
+            if (!f->is_inside_domain() && !internal::has_domain_face(cdt, v)) continue;
+            m_cell_of.set(v, (c << cell_bits) | cells++);
+            generators[c].push_back(v);
+          }
+        }
+        m_cell_offsets[c + 1] = cells;
+        m_center_offsets[c + 1] = centers;
+      },
+      writers);
+  std::partial_sum(m_cell_offsets.begin(), m_cell_offsets.end(), m_cell_offsets.begin());
+  std::partial_sum(m_center_offsets.begin(), m_center_offsets.end(), m_center_offsets.begin());
+  if (m_cell_offsets.back() >= none || m_center_offsets.back() >= none)
+    throw std::length_error("Bvd_mesh_2: more than 2^32 - 1 cells or vertices");
+  m_number_of_circumcenters = m_center_offsets.back();
+  m_generators.reserve(m_cell_offsets.back());
+  for (const auto& g : generators) m_generators.insert(m_generators.end(), g.begin(), g.end());
+}
+
+template <class Diagram>
+auto Bvd_mesh_2<Diagram>::constraint_cells(const Tri_edge& e) const -> Constraint {
+  const Index a = cell_number(e.first->vertex(Triangulation::ccw(e.second)));
+  const Index b = cell_number(e.first->vertex(Triangulation::cw(e.second)));
+  return {std::min(a, b), std::max(a, b)};
+}
+
+// Cell vertex c of the cell of v as an Entry's vertex: a circumcenter by its face's number, the
+// generator or a clip point by its key, listed.
+template <class Diagram>
+auto Bvd_mesh_2<Diagram>::vertex(Vertex_handle v, const Cell_vertex& c, Chunk_cells& out) const
+    -> Index {
+  if (c.type == Cell_vertex::CIRCUMCENTER) return center_number(c.face);
+  Key k{1, {cell_number(v), 0, 0, 0}};
+  if (c.type == Cell_vertex::CLIP_POINT) {
+    const Index a = k.cells[0], b = cell_number(c.neighbor);
+    const Constraint e = constraint_cells(c.constraint);
+    k = {2, {std::min(a, b), std::max(a, b), e[0], e[1]}};
+  }
+  out.keys.emplace_back(k, c.point);
+  return Index(out.keys.size() - 1) | listed;
+}
+
+// What lies beyond the cell edge from a to b, consecutive in the chain of v (before repeated
+// points are merged), as an Entry's `out`: the constraint both lie on, or the bisector of v and
+// the neighbor that a circumcenter at its start, or a clip point at either end, names.
+template <class Diagram>
+auto Bvd_mesh_2<Diagram>::out_edge(Vertex_handle v, const Cell_vertex& a, const Cell_vertex& b,
+                                   Chunk_cells& out) const -> Index {
+  const auto has_end = [](const Tri_edge& e, Vertex_handle u) {
+    return e.first->vertex(Triangulation::ccw(e.second)) == u ||
+           e.first->vertex(Triangulation::cw(e.second)) == u;
+  };
+  const auto on = [&](const Cell_vertex& x, const Tri_edge& e) {
+    if (x.type == Cell_vertex::GENERATOR) return has_end(e, v);
+    return x.type == Cell_vertex::CLIP_POINT &&
+           internal::is_same_constraint<Triangulation>(x.constraint, e);
+  };
+  const auto constraint = [&](const Tri_edge& e) {
+    out.constraints.push_back(constraint_cells(e));
+    return Index(out.constraints.size() - 1) | listed;
+  };
+  if (a.type == Cell_vertex::CLIP_POINT && on(b, a.constraint)) return constraint(a.constraint);
+  if (b.type == Cell_vertex::CLIP_POINT && on(a, b.constraint)) return constraint(b.constraint);
+  return cell_number(a.type == Cell_vertex::GENERATOR ? b.neighbor : a.neighbor);
+}
+
+// The chain of v's cell into `out`: runs of equal points become one vertex (the others of the
+// run recorded as merged into it), with the edge that leaves the run.
+template <class Diagram>
+template <class Raw>
+void Bvd_mesh_2<Diagram>::add_cell(Vertex_handle v, const Raw& raw, Chunk_cells& out) const {
+  const std::size_t m = raw.size();
+  std::size_t start = 0;  // a point that differs from the one before it, so no run wraps
+  while (start < m && raw[start].point == raw[(start + m - 1) % m].point) ++start;
+  if (start == m) start = 0;  // a cell of one point
+  const auto at = [&](std::size_t j) -> const Cell_vertex& { return raw[(start + j) % m]; };
+  std::size_t count = 0;
+  for (std::size_t j = 0; j < m; ++count) {
+    const Index first = vertex(v, at(j), out);
+    std::size_t last = j;
+    for (; last + 1 < m && at(last + 1).point == at(j).point; ++last)
+      out.merges.emplace_back(first, vertex(v, at(last + 1), out));
+    out.entries.push_back({first, out_edge(v, at(last), at(last + 1), out)});
+    j = last + 1;
+  }
+  out.sizes.push_back(Index(count));
+}
+
+template <class Diagram>
+Bvd_mesh_2<Diagram>::Bvd_mesh_2(const Diagram& bvd, unsigned threads) {
+  const Triangulation& cdt = bvd.triangulation();
+  if (cdt.dimension() < 2) return;
+  const internal::Face_chunks<Triangulation> chunks(cdt);
+  number_cells_and_circumcenters(bvd, chunks, threads);
+  // The cells, chunk by chunk, in the order of the numbering.
+  std::vector<Chunk_cells> found(chunks.size());
+  m_points.resize(m_number_of_circumcenters);
+  chunks.for_each(
+      [&](std::size_t c, auto first, auto last) {
+        std::vector<Cell_vertex> raw;
+        internal::for_each_face_prefetched(first, last, [&](auto f) {
+          for (int i = 0; i < 3; ++i) {
+            const Vertex_handle v = f->vertex(i);
+            if (v->face() != f || cdt.is_infinite(v)) continue;
+            raw.clear();
+            internal::construct_cell_chain<Cell_vertex>(
+                cdt, bvd.geom_traits(), v, [&raw](const Cell_vertex& x) { raw.push_back(x); });
+            if (raw.empty()) continue;
+            for (const Cell_vertex& x : raw)  // each circumcenter written by one cell
+              if (x.type == Cell_vertex::CIRCUMCENTER && x.face->vertex(0) == v)
+                m_points[center_number(x.face)] = x.point;
+            add_cell(v, raw, found[c]);
+          }
+        });
+      },
+      threads);
+  assemble(found, threads);
+  conform_constraints();
+  pair_constraint_sides();
+}
+
+// The chunks' cells into the mesh's arrays: the vertices other than circumcenters numbered in
+// the order of the cells that first meet them, constraints likewise (both few, serially), then
+// the cells copied chunk by chunk, and vertices found at one point merged.
+template <class Diagram>
+void Bvd_mesh_2<Diagram>::assemble(std::vector<Chunk_cells>& chunks, unsigned threads) {
+  m_types.assign(m_number_of_circumcenters, Cell_vertex::CIRCUMCENTER);
+  std::map<Key, Index> numbers;
+  std::map<Constraint, Index> constraint_numbers;
+  std::vector<std::pair<Index, Index>> same;
+  std::vector<std::size_t> entries{0};  // before each chunk
+  for (Chunk_cells& c : chunks) {
+    for (auto& [k, p] : c.keys) {  // the key's number replaces it, in cells[0]
+      const auto [it, is_new] = numbers.emplace(k, Index(m_points.size()));
+      if (is_new) {
+        m_points.push_back(p);
+        m_types.push_back(k.kind == 1 ? Cell_vertex::GENERATOR : Cell_vertex::CLIP_POINT);
+      }
+      k.cells[0] = it->second;
+    }
+    for (Constraint& k : c.constraints) {  // likewise, its number in k[0]
+      const auto [it, is_new] = constraint_numbers.emplace(k, Index(m_constraints.size()));
+      if (is_new) m_constraints.push_back(k);
+      k[0] = it->second;
+    }
+    const auto number = [&c](Index i) {
+      return i & listed ? c.keys[i & ~listed].first.cells[0] : i;
+    };
+    for (const auto& [a, b] : c.merges) same.emplace_back(number(a), number(b));
+    entries.push_back(entries.back() + c.entries.size());
+  }
+  m_cell_vertices.resize(entries.back());
+  m_sides.resize(entries.back());
+  m_offsets.resize(m_generators.size() + 1);
+  m_constrained.assign(m_generators.size(), 0);
+  std::vector<std::vector<std::pair<Index, std::size_t>>> on_constraints(chunks.size());
+  internal::run_chunks(chunks.size(), threads, [&](std::size_t ci) {
+    Chunk_cells& c = chunks[ci];
+    std::size_t e = entries[ci], cell = m_cell_offsets[ci];
+    for (const Index size : c.sizes) {
+      for (std::size_t j = 0; j < size; ++j, ++e) {
+        const Entry& x = c.entries[e - entries[ci]];
+        const Index i = x.vertex & listed ? c.keys[x.vertex & ~listed].first.cells[0] : x.vertex;
+        m_cell_vertices[e] = i;
+        if (m_types[i] == Cell_vertex::GENERATOR) m_constrained[cell] = 1;
+        if (x.out & listed) {
+          m_sides[e] = Side{none, c.constraints[x.out & ~listed][0]};
+          on_constraints[ci].emplace_back(Index(cell), e);
+        } else {
+          m_sides[e] = Side{x.out, none};
+        }
+      }
+      m_offsets[++cell] = e;
+    }
+    c = Chunk_cells();  // one copy at a time
+  });
+  for (const auto& o : on_constraints)
+    m_on_constraints.insert(m_on_constraints.end(), o.begin(), o.end());
+  if (!same.empty()) {
+    merge_vertices(same);
+    list_sides_on_constraints();
+  }
+}
+
+template <class Diagram>
+void Bvd_mesh_2<Diagram>::list_sides_on_constraints() {
+  m_on_constraints.clear();
+  for (std::size_t k = 0; k + 1 < m_offsets.size(); ++k)
+    for (std::size_t e = m_offsets[k]; e < m_offsets[k + 1]; ++e)
+      if (m_sides[e].constraint != none) m_on_constraints.emplace_back(Index(k), e);
+}
+
+// Vertices found equal are made one: union-find, then the numbers compacted in order.
+template <class Diagram>
+void Bvd_mesh_2<Diagram>::merge_vertices(const std::vector<std::pair<Index, Index>>& same) {
+  std::vector<Index> parent(m_points.size());
+  std::iota(parent.begin(), parent.end(), Index(0));
+  const auto root = [&](Index i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (const auto& [a, b] : same) {
+    const Index ra = root(a), rb = root(b);
+    if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+  }
+  std::vector<Index> renumber(m_points.size(), none);
+  Index next = 0;
+  for (Index i = 0; i < parent.size(); ++i) {
+    const Index r = root(i);
+    if (r == i) {
+      renumber[i] = next;
+      m_points[next] = m_points[i];
+      m_types[next] = m_types[i];
+      ++next;
+    } else {
+      renumber[i] = renumber[r];
+    }
+  }
+  m_points.resize(next);
+  m_types.resize(next);
+  for (Index& i : m_cell_vertices) i = renumber[i];
+  // A merge can leave a cell with the same vertex twice in a row: one of them goes.
+  std::vector<Index> vertices;
+  std::vector<Side> sides;
+  std::vector<std::size_t> offsets{0};
+  for (std::size_t k = 0; k + 1 < m_offsets.size(); ++k) {
+    const std::size_t b = m_offsets[k], e = m_offsets[k + 1], n = e - b;
+    for (std::size_t j = 0; j < n; ++j) {
+      const Index next_vertex = m_cell_vertices[b + (j + 1) % n];
+      if (n > 1 && m_cell_vertices[b + j] == next_vertex) continue;  // a zero-length edge
+      vertices.push_back(m_cell_vertices[b + j]);
+      sides.push_back(m_sides[b + j]);
+    }
+    if (vertices.size() == offsets.back() && n > 0) {  // all one point
+      vertices.push_back(m_cell_vertices[b]);
+      sides.push_back(m_sides[b]);
+    }
+    offsets.push_back(vertices.size());
+  }
+  m_cell_vertices.swap(vertices);
+  m_sides.swap(sides);
+  m_offsets.swap(offsets);
+}
+
+// The cells on the two sides of an inner constraint end on it at different points: each side's
+// edges along it get the other side's points as vertices too, so that both sides have the same
+// edges there (a conforming mesh, whose cells meet edge to edge across the constraint).
+template <class Diagram>
+void Bvd_mesh_2<Diagram>::conform_constraints() {
+  const auto next = [&](std::size_t k, std::size_t e) {  // the position after e in cell k
+    return e + 1 < m_offsets[k + 1] ? e + 1 : m_offsets[k];
+  };
+  // The vertices on each constraint, in the order of their positions along it.
+  std::vector<std::vector<Index>> on(m_constraints.size());
+  for (const auto& [k, e] : m_on_constraints) {
+    on[m_sides[e].constraint].push_back(m_cell_vertices[e]);
+    on[m_sides[e].constraint].push_back(m_cell_vertices[next(k, e)]);
+  }
+  std::vector<std::vector<std::pair<Index, Index>>> position(on.size());  // (vertex, position)
+  std::vector<std::pair<Index, Index>> same;
+  for (std::size_t c = 0; c < on.size(); ++c) {
+    std::vector<Index>& v = on[c];
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    if (v.size() <= 2) continue;  // one edge, on each side that has one
+    const Point_2& p = m_generators[m_constraints[c][0]]->point();
+    const auto d = m_generators[m_constraints[c][1]]->point() - p;
+    std::vector<std::pair<FT, Index>> t;
+    for (const Index i : v) t.emplace_back((m_points[i] - p) * d, i);
+    std::sort(t.begin(), t.end());
+    // Points of the two sides that are one point (a bisector of each side meets the constraint
+    // there, as at a circumcenter on it), up to the rounding of their constructions, are one
+    // vertex: merged below, and the constraints visited again.
+    const FT close = CGAL::to_double(d * d) * 0x1.0p-80;  // (2^-40 of its length)^2
+    for (std::size_t i = 1; i < t.size(); ++i)
+      if (CGAL::squared_distance(m_points[t[i - 1].second], m_points[t[i].second]) <= close)
+        same.emplace_back(t[i - 1].second, t[i].second);
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      v[i] = t[i].second;
+      position[c].emplace_back(t[i].second, Index(i));
+    }
+    std::sort(position[c].begin(), position[c].end());
+  }
+  if (!same.empty()) {
+    merge_vertices(same);
+    list_sides_on_constraints();
+    return conform_constraints();
+  }
+  const auto at = [&](Index c, Index x) {
+    return std::lower_bound(position[c].begin(), position[c].end(), std::make_pair(x, Index(0)))
+        ->second;
+  };
+  // The edges that skip vertices of their constraint, in the order of m_sides.
+  std::vector<std::size_t> skipping;
+  for (const auto& [k, e] : m_on_constraints) {
+    const Index c = m_sides[e].constraint;
+    if (position[c].empty()) continue;
+    const Index from = at(c, m_cell_vertices[e]), to = at(c, m_cell_vertices[next(k, e)]);
+    if (from + 1 < to || to + 1 < from) skipping.push_back(e);
+  }
+  if (skipping.empty()) return;
+  std::vector<Index> vertices;
+  std::vector<Side> sides;
+  std::vector<std::size_t> offsets{0};
+  vertices.reserve(m_cell_vertices.size() + m_cell_vertices.size() / 64);
+  sides.reserve(vertices.capacity());
+  offsets.reserve(m_offsets.size());
+  std::size_t s = 0;
+  for (std::size_t k = 0; k + 1 < m_offsets.size(); ++k) {
+    for (std::size_t e = m_offsets[k]; e < m_offsets[k + 1]; ++e) {
+      vertices.push_back(m_cell_vertices[e]);
+      sides.push_back(m_sides[e]);
+      if (s == skipping.size() || skipping[s] != e) continue;
+      ++s;
+      const Index c = m_sides[e].constraint;
+      const Index from = at(c, m_cell_vertices[e]), to = at(c, m_cell_vertices[next(k, e)]);
+      for (Index i = from; i + 1 < to;) vertices.push_back(on[c][++i]), sides.push_back(m_sides[e]);
+      for (Index i = from; i > to + 1;) vertices.push_back(on[c][--i]), sides.push_back(m_sides[e]);
+    }
+    offsets.push_back(vertices.size());
+  }
+  m_cell_vertices.swap(vertices);
+  m_sides.swap(sides);
+  m_offsets.swap(offsets);
+  list_sides_on_constraints();
+}
+
+// An edge on a constraint inside the domain has a cell on each side: the same edge, walked the
+// other way in the other cell (or in the same cell, for a slit).
+template <class Diagram>
+void Bvd_mesh_2<Diagram>::pair_constraint_sides() {
+  struct Occurrence {
+    Index a, b;      // the edge's ends, the smaller first
+    std::size_t at;  // its side's position in m_sides
+    Index cell;
+  };
+  std::vector<Occurrence> on;
+  for (const auto& [k, e] : m_on_constraints) {
+    const Index p = m_cell_vertices[e];
+    const Index q = m_cell_vertices[e + 1 < m_offsets[k + 1] ? e + 1 : m_offsets[k]];
+    on.push_back({std::min(p, q), std::max(p, q), e, k});
+  }
+  std::sort(on.begin(), on.end(), [](const Occurrence& x, const Occurrence& y) {
+    return std::tie(x.a, x.b, x.at) < std::tie(y.a, y.b, y.at);
+  });
+  for (std::size_t i = 0; i + 1 < on.size(); ++i) {
+    if (on[i].a != on[i + 1].a || on[i].b != on[i + 1].b) continue;
+    m_sides[on[i].at].cell = on[i + 1].cell;
+    m_sides[on[i + 1].at].cell = on[i].cell;
+    ++i;
+  }
+}
+
+// A bisector edge or an inner constraint's from the smaller of its two cells, a slit from its
+// walk toward its larger vertex number.
+template <class Diagram>
+auto Bvd_mesh_2<Diagram>::edges() const -> std::vector<Edge> {
+  std::vector<Edge> edges;
+  edges.reserve(m_sides.size() / 2 + 1);
+  for (std::size_t k = 0; k + 1 < m_offsets.size(); ++k) {
+    const std::size_t b = m_offsets[k], n = m_offsets[k + 1] - b;
+    if (n < 2) continue;
+    for (std::size_t j = 0; j < n; ++j) {
+      const Side& s = m_sides[b + j];
+      const Index p = m_cell_vertices[b + j], q = m_cell_vertices[b + (j + 1) % n];
+      if (s.cell == none || s.cell > k || (s.cell == k && p < q))
+        edges.push_back(Edge{{p, q}, {Index(k), s.cell}, s.constraint});
+    }
+  }
+  return edges;
+}
+
+template <class Diagram>
+typename Bvd_mesh_2<Diagram>::FT Bvd_mesh_2<Diagram>::area(std::size_t k) const {
+  const Index_range c = cell(k);
+  if (c.size() < 3) return FT(0);
+  const Point_2& o = m_points[c[0]];
+  FT a = 0;
+  for (std::size_t j = 1; j + 1 < c.size(); ++j)
+    a += CGAL::area(o, m_points[c[j]], m_points[c[j + 1]]);
+  return a;
+}
+
+template <class Diagram>
+typename Bvd_mesh_2<Diagram>::Point_2 Bvd_mesh_2<Diagram>::centroid(std::size_t k) const {
+  const Index_range c = cell(k);
+  const Point_2& o = m_points[c[0]];
+  FT a = 0, x = 0, y = 0;
+  for (std::size_t j = 1; j + 1 < c.size(); ++j) {
+    const auto u = m_points[c[j]] - o, w = m_points[c[j + 1]] - o;
+    const FT t = (u.x() * w.y() - u.y() * w.x()) / 2;
+    a += t;
+    x += t * (u.x() + w.x()) / 3;
+    y += t * (u.y() + w.y()) / 3;
+  }
+  if (a == 0) return o;
+  return Point_2(o.x() + x / a, o.y() + y / a);
+}
+
+template <class Diagram>
+auto Bvd_mesh_2<Diagram>::neighbors(std::size_t k) const -> std::vector<Index> {
+  std::vector<Index> n;
+  for (std::size_t j = 0; j < cell(k).size(); ++j) {
+    const Index c = side(k, j).cell;
+    if (c != none && c != k && std::find(n.begin(), n.end(), c) == n.end()) n.push_back(c);
+  }
+  return n;
+}
+
+// The cycle with its slits dropped: at each visit of the generator, the edges in and out lie on
+// the same constraint when a slit passes there (both sides of the constraint are in the cell),
+// on two when the cell's boundary passes through the generator. Slits go; what is left splits
+// at the generator's remaining visits into lobes, or is one ring if none is left.
+template <class Diagram>
+auto Bvd_mesh_2<Diagram>::polygons(std::size_t k) const -> std::vector<std::vector<Index>> {
+  const Index_range c = cell(k);
+  const std::size_t n = c.size();
+  std::vector<std::vector<Index>> rings;
+  if (n < 3) return rings;
+  std::vector<Index> kept;  // positions of the cycle left, the generator's kept visits as none
+  std::vector<std::size_t> cuts;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (m_types[c[j]] == Cell_vertex::GENERATOR) {
+      const Index in = side(k, (j + n - 1) % n).constraint, out = side(k, j).constraint;
+      if (in == out && in != none) continue;  // a slit's tip
+      cuts.push_back(kept.size());
+    }
+    if (!kept.empty() && kept.back() == c[j]) continue;  // the two ends of a slit
+    kept.push_back(c[j]);
+  }
+  while (kept.size() > 1 && kept.back() == kept.front()) kept.pop_back();
+  // A slit with vertices along it leaves a spike a, b, a where its tip was: folded away.
+  for (bool folded = true; folded && kept.size() >= 3;) {
+    folded = false;
+    for (std::size_t j = 0; j < kept.size() && kept.size() >= 3; ++j) {
+      const std::size_t n2 = kept.size(), i = (j + n2 - 1) % n2, l = (j + 1) % n2;
+      if (kept[i] != kept[l] || m_types[kept[j]] == Cell_vertex::GENERATOR ||
+          m_types[kept[l]] == Cell_vertex::GENERATOR)
+        continue;
+      const std::size_t first = std::min(j, l), second = std::max(j, l);
+      for (std::size_t& cut : cuts) cut -= (cut > second) + (cut > first);
+      kept.erase(kept.begin() + std::ptrdiff_t(second));
+      kept.erase(kept.begin() + std::ptrdiff_t(first));
+      folded = true;
+    }
+  }
+  // A vertex where the ring turns back along itself (a circumcenter that rounding puts a hair
+  // beyond the clip point next to it on a constraint) is dropped: a polygon cannot overlap
+  // itself, and the part it had is of no width.
+  const auto add_ring = [&](std::vector<Index> ring) {
+    for (bool dropped = true; dropped && ring.size() >= 3;) {
+      dropped = false;
+      for (std::size_t j = 0; j < ring.size() && ring.size() >= 3; ++j) {
+        const Point_2& a = m_points[ring[(j + ring.size() - 1) % ring.size()]];
+        const Point_2& b = m_points[ring[j]];
+        const Point_2& c = m_points[ring[(j + 1) % ring.size()]];
+        if (CGAL::orientation(a, b, c) != CGAL::COLLINEAR || (b - a) * (c - b) > 0) continue;
+        ring.erase(ring.begin() + std::ptrdiff_t(j));
+        dropped = true;
+      }
+    }
+    if (ring.size() >= 3) rings.push_back(std::move(ring));
+  };
+  if (cuts.size() <= 1) {
+    add_ring(kept);
+    return rings;
+  }
+  for (std::size_t i = 0; i < cuts.size(); ++i) {
+    const std::size_t from = cuts[i],
+                      to = i + 1 < cuts.size() ? cuts[i + 1] : cuts[0] + kept.size();
+    std::vector<Index> ring;
+    for (std::size_t j = from; j < to; ++j) ring.push_back(kept[j % kept.size()]);
+    add_ring(std::move(ring));
+  }
+  return rings;
+}
+
+template <class Diagram>
+auto Bvd_mesh_2<Diagram>::outline(std::size_t k) const -> std::vector<Index> {
+  std::vector<Index> ring;
+  for (const std::vector<Index>& lobe : polygons(k))
+    ring.insert(ring.end(), lobe.begin(), lobe.end());
+  return ring;
+}
+
+}  // namespace CVT_2
+
+#endif  // CVT_2_BVD_MESH_2_H

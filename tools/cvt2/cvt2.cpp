@@ -1,0 +1,497 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// cvt2 DOMAIN [options]: the centroidal Voronoi tessellation of a .poly, .wkt or .geojson domain
+// by L-BFGS or Lloyd iteration, written as GeoJSON, VTU, MODFLOW 6 DISV, Triangle files, text
+// and SVG. `cvt2 --help` says how.
+#include <CVT_2/Boundary_lipschitz_sizing_2.h>
+#include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/Bvd_mesh_2.h>
+#include <CVT_2/Cvt_triangulation_2.h>
+#include <CVT_2/IO/read_domain.h>
+#include <CVT_2/IO/read_points.h>
+#include <CVT_2/IO/write_cells.h>
+#include <CVT_2/IO/write_disv.h>
+#include <CVT_2/IO/write_geojson.h>
+#include <CVT_2/IO/write_svg.h>
+#include <CVT_2/IO/write_triangle.h>
+#include <CVT_2/IO/write_vtu.h>
+#include <CVT_2/lbfgs_optimize_2.h>
+#include <CVT_2/lloyd_optimize_2.h>
+#include <CVT_2/random_points_in_domain_2.h>
+#include <CVT_2/version.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#if defined(__unix__) || defined(__APPLE__)
+#include <unistd.h>
+#define CVT2_POSIX 1
+#endif
+
+#include <cerrno>
+#include <cmath>
+#include <csignal>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <new>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using CDT = CVT_2::Cvt_triangulation_2<K>;
+using BVD = CVT_2::Bounded_voronoi_diagram_2<CDT>;
+using Mesh = CVT_2::Bvd_mesh_2<BVD>;
+using Point_2 = K::Point_2;
+using Sizing = CVT_2::Boundary_lipschitz_sizing_2<K>;
+
+namespace {
+
+// A mistake on the command line: reported with a pointer to --help.
+struct Usage_error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Options {
+  std::string domain;
+  std::optional<std::size_t> points;  // -n; by default from the domain file
+  std::string points_in;
+  std::uint64_t seed = 1;
+  std::size_t iterations = 1000;
+  double move_ratio = 0.01;
+  bool lbfgs = true;
+  bool lipschitz = false;
+  double lipschitz_k = 0.1;
+  std::optional<double> boundary_size;  // default: each boundary edge's length
+  double time_limit = 0;
+  unsigned threads = 0;  // 0: all cores
+  std::string svg, points_out, cells_out, geojson, vtu, disv, mesh_out;
+  bool quiet = false;
+  bool help = false;
+  bool version = false;
+};
+
+void print_help(std::ostream& os) {
+  os << "Usage: cvt2 DOMAIN [options]\n"
+        "Centroidal Voronoi tessellation of DOMAIN by L-BFGS or Lloyd iteration. DOMAIN is\n"
+        "  a Triangle .poly file: segments are constraints, holes are seeds, vertices on no\n"
+        "    segment are generators;\n"
+        "  a .wkt file, one geometry a line, or a .geojson file: POLYGON/MULTIPOLYGON (the\n"
+        "    domain), LINESTRING/MULTILINESTRING (inner constraints), POINT/MULTIPOINT\n"
+        "    (generators). Coordinates are planar: project geographic data first.\n\n"
+        "Generators:\n"
+        "  -n, --points N         N random generators (default 1000 if DOMAIN has none and no\n"
+        "                         --points-in is given, else 0)\n"
+        "      --points-in FILE   generators from FILE, one 'x y' per line ('#' comments)\n"
+        "      --seed S           seed of the random generators (default 1)\n"
+        "Iteration:\n"
+        "      --algorithm A      lbfgs | lloyd (default lbfgs: L-BFGS on the CVT energy, which\n"
+        "                         starts with and falls back to Lloyd steps, and reaches the\n"
+        "                         same stop in fewer evaluations)\n"
+        "      --iterations N     at most N iterations (default 1000)\n"
+        "      --move-ratio P     stop when every move ratio |x - x*| / diameter(cell) < P\n"
+        "                         (default 0.01; 0 turns this stop off)\n"
+        "      --density D        uniform | lipschitz (default uniform)\n"
+        "      --lipschitz-k K    growth of the cell size away from the boundary (default 0.1)\n"
+        "      --boundary-size S  cell size on the boundary (default: the local edge length)\n"
+        "      --time-limit T     stop after T seconds (default 0: no limit)\n"
+        "      --threads N        threads (default 0: one per core); the result is the same\n"
+        "Outputs (written only when the optimization succeeded; an existing file is replaced):\n"
+        "      --geojson FILE     the cells as GeoJSON features, valid polygons (QGIS, GDAL,\n"
+        "                         shapely): cell, generator, constrained, area, neighbors\n"
+        "      --vtu FILE         the cells as a VTK XML grid with shared points (ParaView,\n"
+        "                         meshio): cell, constrained, area, generator\n"
+        "      --disv FILE        the cells as a MODFLOW 6 DISV grid, one layer (flopy)\n"
+        "      --mesh-out PREFIX  the final triangulation: PREFIX.node, .ele, .edge (Triangle)\n"
+        "      --cells-out FILE   one 'x y c k x1 y1 ... xk yk' per cell (bvd_cells format)\n"
+        "      --points-out FILE  one 'x y c' per generator, c = 1 if constrained\n"
+        "      --svg FILE         picture: domain, cells, constraints, generators\n"
+        "Other:\n"
+        "      --quiet            no progress on standard error\n"
+        "  -h, --help             this help\n"
+        "      --version          the version\n\n"
+        "Prints one summary line on standard output: algorithm= iterations= evaluations=\n"
+        "stop= energy= normalized_energy= (1 for a hexagonal tiling, uniform density)\n"
+        "max_move_ratio= mean_move_ratio= generators= seconds=\n";
+}
+
+// --- command line ------------------------------------------------------------------------------
+
+double parse_real(const std::string& option, const std::string& text) {
+  errno = 0;
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(x))
+    throw Usage_error(option + " expects a number, not '" + text + "'");
+  return x;
+}
+
+std::uint64_t parse_count(const std::string& option, const std::string& text) {
+  errno = 0;
+  char* end = nullptr;
+  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+  const unsigned long long x = std::strtoull(text.c_str(), &end, 10);
+  if (!digits || *end != '\0' || errno == ERANGE)
+    throw Usage_error(option + " expects a non-negative integer, not '" + text + "'");
+  return x;
+}
+
+double parse_positive(const std::string& option, const std::string& text) {
+  const double x = parse_real(option, text);
+  if (!(x > 0)) throw Usage_error(option + " must be positive, not '" + text + "'");
+  return x;
+}
+
+double parse_non_negative(const std::string& option, const std::string& text) {
+  const double x = parse_real(option, text);
+  if (!(x >= 0)) throw Usage_error(option + " must be >= 0, not '" + text + "'");
+  return x;
+}
+
+std::string parse_choice(const std::string& option, const std::string& text, const char* a,
+                         const char* b) {
+  if (text != a && text != b)
+    throw Usage_error(option + " expects '" + a + "' or '" + b + "', not '" + text + "'");
+  return text;
+}
+
+// The options that take a value, by long name, with what to do with it.
+using Setter = std::function<void(Options&, const std::string& option, const std::string& value)>;
+const std::map<std::string, Setter>& valued_options() {
+  static const std::map<std::string, Setter> table{
+      {"--points", [](Options& o, auto& n, auto& v) { o.points = parse_count(n, v); }},
+      {"--points-in", [](Options& o, auto&, auto& v) { o.points_in = v; }},
+      {"--seed", [](Options& o, auto& n, auto& v) { o.seed = parse_count(n, v); }},
+      {"--algorithm", [](Options& o, auto& n,
+                         auto& v) { o.lbfgs = parse_choice(n, v, "lbfgs", "lloyd") == "lbfgs"; }},
+      {"--iterations", [](Options& o, auto& n, auto& v) { o.iterations = parse_count(n, v); }},
+      {"--move-ratio",
+       [](Options& o, auto& n, auto& v) { o.move_ratio = parse_non_negative(n, v); }},
+      {"--density",
+       [](Options& o, auto& n, auto& v) {
+         o.lipschitz = parse_choice(n, v, "uniform", "lipschitz") == "lipschitz";
+       }},
+      {"--lipschitz-k", [](Options& o, auto& n, auto& v) { o.lipschitz_k = parse_positive(n, v); }},
+      {"--boundary-size",
+       [](Options& o, auto& n, auto& v) { o.boundary_size = parse_positive(n, v); }},
+      {"--time-limit",
+       [](Options& o, auto& n, auto& v) { o.time_limit = parse_non_negative(n, v); }},
+      {"--threads",
+       [](Options& o, auto& n, auto& v) {
+         const std::uint64_t t = parse_count(n, v);
+         if (t > 4096) throw Usage_error(n + " expects at most 4096, not '" + v + "'");
+         o.threads = static_cast<unsigned>(t);
+       }},
+      {"--svg", [](Options& o, auto&, auto& v) { o.svg = v; }},
+      {"--points-out", [](Options& o, auto&, auto& v) { o.points_out = v; }},
+      {"--cells-out", [](Options& o, auto&, auto& v) { o.cells_out = v; }},
+      {"--geojson", [](Options& o, auto&, auto& v) { o.geojson = v; }},
+      {"--vtu", [](Options& o, auto&, auto& v) { o.vtu = v; }},
+      {"--disv", [](Options& o, auto&, auto& v) { o.disv = v; }},
+      {"--mesh-out", [](Options& o, auto&, auto& v) { o.mesh_out = v; }},
+      {"--vtk",
+       [](Options&, auto&, auto&) {
+         throw Usage_error(
+             "--vtk (legacy VTK) is gone: use --vtu FILE (VTK XML with shared "
+             "points, read by ParaView and meshio)");
+       }},
+  };
+  return table;
+}
+
+// GNU style: --name VALUE, --name=VALUE, -n VALUE, -nVALUE; "--" ends the options.
+Options parse_command_line(int argc, char* argv[]) {
+  Options o;
+  std::vector<std::string> positional;
+  bool options_ended = false;
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (options_ended || arg.size() < 2 || arg[0] != '-') {
+      positional.push_back(arg);
+    } else if (arg == "--") {
+      options_ended = true;
+    } else if (arg == "-h" || arg == "--help") {
+      o.help = true;
+    } else if (arg == "--version") {
+      o.version = true;
+    } else if (arg == "--quiet") {
+      o.quiet = true;
+    } else {
+      std::string name = arg;
+      std::optional<std::string> value;
+      if (arg.rfind("--", 0) == 0) {
+        if (const auto eq = arg.find('='); eq != std::string::npos)
+          name = arg.substr(0, eq), value = arg.substr(eq + 1);
+      } else if (arg.rfind("-n", 0) == 0) {
+        name = "--points";
+        if (arg.size() > 2) value = arg.substr(2);
+      }
+      const auto it = valued_options().find(name);
+      if (it == valued_options().end()) throw Usage_error("unknown option '" + arg + "'");
+      if (!value) {
+        if (i + 1 >= argc) throw Usage_error(arg + " expects a value");
+        value = argv[++i];
+      }
+      it->second(o, name, *value);
+    }
+  }
+  if (o.help || o.version) return o;
+  if (positional.empty()) throw Usage_error("no DOMAIN file given");
+  if (positional.size() > 1)
+    throw Usage_error("one DOMAIN file only, not also '" + positional[1] + "'");
+  o.domain = positional[0];
+  if (!o.lipschitz && o.boundary_size)
+    throw Usage_error("--boundary-size needs --density lipschitz");
+  return o;
+}
+
+// --- domain and generators ---------------------------------------------------------------------
+
+// Said once per file: the triangulation merges points that repeat earlier ones.
+void note_repeated(const std::vector<std::string>& notes) {
+  if (notes.empty()) return;
+  std::cerr << "cvt2: note: " << notes[0];
+  if (notes.size() > 1) std::cerr << " (and " << notes.size() - 1 << " more repeat earlier ones)";
+  std::cerr << "; merged\n";
+}
+
+// The physical memory, or 0 where the system does not say.
+double physical_memory() {
+#ifdef CVT2_POSIX
+  return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+#else
+  return 0;
+#endif
+}
+
+// Peak memory per generator, at most (triangulation, cells, moves; L-BFGS's history): what
+// memory cannot hold is refused rather than killed after minutes of work.
+double bytes_per_generator(const Options& o) { return o.lbfgs ? 750 : 280; }
+
+void insert_random_points(std::size_t n, const Options& o, const std::optional<Sizing>& sizing,
+                          CDT& cdt) {
+  if (n == 0) return;
+  const double needed = bytes_per_generator(o) * double(n), memory = physical_memory();
+  if (memory > 0 && needed > memory)
+    throw Usage_error("--points " + std::to_string(n) + " needs about " +
+                      std::to_string(static_cast<long long>(needed / 1e9)) +
+                      " GB; this machine has " +
+                      std::to_string(static_cast<long long>(memory / 1e9)) + " GB");
+  const auto np = CVT_2::parameters::random_seed(o.seed);
+  CVT_2::insert_generators_2(
+      cdt, sizing ? CVT_2::random_points_in_domain_2(cdt, n, np.sizing_field(std::cref(*sizing)))
+                  : CVT_2::random_points_in_domain_2(cdt, n, np));
+}
+
+// --- optimization ------------------------------------------------------------------------------
+
+volatile std::sig_atomic_t interrupted = 0;
+// The first Ctrl-C ends the iteration early and keeps its result; a second one kills.
+extern "C" void on_interrupt(int) {
+  interrupted = 1;
+  std::signal(SIGINT, SIG_DFL);
+}
+
+bool stderr_is_terminal() {
+#ifdef CVT2_POSIX
+  return isatty(2) != 0;
+#else
+  return false;
+#endif
+}
+
+// Progress on standard error: one updating line on a terminal, a line every 10 iterations else.
+class Progress {
+ public:
+  explicit Progress(bool quiet) : m_quiet(quiet), m_terminal(stderr_is_terminal()) {}
+  bool operator()(const CVT_2::Optimization_result& r) {
+    if (!m_quiet && (m_terminal || r.number_of_iterations % 10 == 0)) {
+      std::ostringstream line;
+      line << "cvt2: iteration " << r.number_of_iterations << "  energy " << std::setprecision(8)
+           << r.energy << "  max move ratio " << std::setprecision(4) << r.max_move_ratio << "  "
+           << std::fixed << std::setprecision(2) << r.seconds << " s";
+      if (m_terminal)
+        std::cerr << '\r' << line.str() << "\033[K" << std::flush, m_line_open = true;
+      else
+        std::cerr << line.str() << '\n';
+    }
+    return !interrupted;
+  }
+  void finish() {
+    if (m_line_open) std::cerr << '\n';
+    m_line_open = false;
+  }
+
+ private:
+  bool m_quiet, m_terminal, m_line_open = false;
+};
+
+// The optimization, with progress on standard error; Ctrl-C ends it early.
+CVT_2::Optimization_result optimize(CDT& cdt, const Options& o,
+                                    const std::optional<Sizing>& sizing) {
+  Progress progress(o.quiet);
+  const std::function<bool(const CVT_2::Optimization_result&)> callback = std::ref(progress);
+  const auto np = CVT_2::parameters::number_of_iterations(o.iterations)
+                      .move_ratio_bound(o.move_ratio)
+                      .maximum_running_time(o.time_limit)
+                      .number_of_threads(o.threads)
+                      .callback(callback);
+  const auto run = [&o](CDT& t, const auto& parameters) {
+    return o.lbfgs ? CVT_2::lbfgs_optimize_2(t, parameters)
+                   : CVT_2::lloyd_optimize_2(t, parameters);
+  };
+  std::signal(SIGINT, on_interrupt);
+  try {
+    const CVT_2::Optimization_result r = sizing ? run(cdt, np.sizing_field(*sizing)) : run(cdt, np);
+    progress.finish();
+    std::signal(SIGINT, SIG_DFL);
+    return r;
+  } catch (...) {
+    progress.finish();
+    throw;
+  }
+}
+
+// --- outputs -----------------------------------------------------------------------------------
+
+// Files written as FILE.tmp, renamed together once all were written: nothing half-written, and
+// an existing file is replaced only by a complete one.
+class Output_files {
+ public:
+  ~Output_files() {
+    for (const auto& [file, tmp] : m_files) std::remove(tmp.c_str());
+  }
+  template <class Writer>
+  void write(const std::string& file, Writer writer) {
+    const std::string tmp = file + ".tmp";
+    m_files.emplace_back(file, tmp);
+    std::ofstream os(tmp, std::ios::binary);
+    if (!os) throw std::runtime_error("cannot write '" + file + "': " + std::strerror(errno));
+    writer(os);
+    os.close();
+    if (!os) throw std::runtime_error("error while writing '" + file + "'");
+  }
+  void commit() {
+    for (const auto& [file, tmp] : m_files)
+      if (std::rename(tmp.c_str(), file.c_str()) != 0)
+        throw std::runtime_error("cannot rename '" + tmp + "' to '" + file + "'");
+    m_files.clear();
+  }
+
+ private:
+  std::vector<std::pair<std::string, std::string>> m_files;
+};
+
+void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd) {
+  using namespace CVT_2::IO;
+  Output_files out;
+  if (!o.svg.empty()) out.write(o.svg, [&](std::ostream& os) { write_svg(os, bvd); });
+  if (!o.points_out.empty())
+    out.write(o.points_out, [&](std::ostream& os) { write_points(os, bvd); });
+  if (!o.cells_out.empty()) out.write(o.cells_out, [&](std::ostream& os) { write_cells(os, bvd); });
+  if (!o.geojson.empty() || !o.vtu.empty() || !o.disv.empty()) {
+    const Mesh mesh(bvd, o.threads);
+    if (!o.geojson.empty())
+      out.write(o.geojson, [&](std::ostream& os) { write_geojson(os, mesh); });
+    if (!o.vtu.empty()) out.write(o.vtu, [&](std::ostream& os) { write_vtu(os, mesh); });
+    if (!o.disv.empty()) out.write(o.disv, [&](std::ostream& os) { write_disv(os, mesh); });
+  }
+  if (!o.mesh_out.empty()) {
+    std::ostringstream ele, edge;
+    out.write(o.mesh_out + ".node", [&](std::ostream& os) { write_triangle(os, ele, edge, cdt); });
+    out.write(o.mesh_out + ".ele", [&](std::ostream& os) { os << ele.str(); });
+    out.write(o.mesh_out + ".edge", [&](std::ostream& os) { os << edge.str(); });
+  }
+  out.commit();
+}
+
+double domain_area(const CDT& cdt) {
+  double a = 0;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (f->is_inside_domain()) a += CGAL::to_double(cdt.triangle(f).area());
+  return a;
+}
+
+void print_summary(const Options& o, const CVT_2::Optimization_result& r, const BVD& bvd,
+                   double area) {
+  std::size_t generators = 0;
+  bvd.for_each_cell([&](CDT::Vertex_handle, const auto&) { ++generators; });
+  // E N / A^2 over its value for the regular hexagonal tiling, 5 / (18 sqrt 3) (Gersho).
+  const double hexagon = 5 / (18 * std::sqrt(3.0));
+  const double normalized = r.energy * double(generators) / (area * area) / hexagon;
+  const char* stop = r.stop_reason == CVT_2::CALLBACK_REQUESTED_STOP
+                         ? "interrupted"
+                         : CVT_2::to_string(r.stop_reason);
+  std::cout << std::setprecision(8) << "algorithm=" << (o.lbfgs ? "lbfgs" : "lloyd")
+            << " iterations=" << r.number_of_iterations
+            << " evaluations=" << r.number_of_evaluations << " stop=" << stop
+            << " energy=" << r.energy << " normalized_energy=" << normalized
+            << " max_move_ratio=" << r.max_move_ratio << " mean_move_ratio=" << r.mean_move_ratio
+            << " generators=" << generators << " seconds=" << std::setprecision(3) << r.seconds
+            << '\n';
+}
+
+int run(const Options& o) {
+  if (!std::ifstream(o.domain))
+    throw std::runtime_error("cannot open the domain file '" + o.domain + "'");
+  CDT cdt;
+  const CVT_2::IO::Domain_file domain = CVT_2::IO::read_domain(o.domain, cdt);
+  note_repeated(domain.repeated);
+  // The sizing's default sizes are the boundary edges of the input, before generators split any.
+  std::optional<Sizing> sizing;
+  if (o.lipschitz)
+    sizing.emplace(cdt, o.lipschitz_k,
+                   o.boundary_size ? std::optional<K::FT>(*o.boundary_size) : std::nullopt);
+  if (!o.points_in.empty()) {
+    if (!std::ifstream(o.points_in))
+      throw std::runtime_error("cannot open the points file '" + o.points_in + "'");
+    const auto points = CVT_2::IO::read_points<Point_2>(o.points_in);
+    std::vector<std::string> notes;
+    for (const auto& [line, earlier] : points.repeated_points)
+      notes.push_back(o.points_in + ":" + std::to_string(line) +
+                      ": this point repeats the one on line " + std::to_string(earlier));
+    note_repeated(notes);
+    CVT_2::IO::insert_points(cdt, points);
+  }
+  const std::size_t n =
+      o.points ? *o.points : (domain.number_of_generators == 0 && o.points_in.empty() ? 1000 : 0);
+  insert_random_points(n, o, sizing, cdt);
+  const CVT_2::Optimization_result r = optimize(cdt, o, sizing);
+  const BVD bvd(cdt);
+  write_outputs(o, cdt, bvd);
+  print_summary(o, r, bvd, domain_area(cdt));
+  return EXIT_SUCCESS;
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+  try {
+    const Options o = parse_command_line(argc, argv);
+    if (o.help) {
+      print_help(std::cout);
+      return EXIT_SUCCESS;
+    }
+    if (o.version) {
+      std::cout << "cvt2 " << CVT_2_VERSION_STRING << '\n';
+      return EXIT_SUCCESS;
+    }
+    return run(o);
+  } catch (const Usage_error& e) {
+    std::cerr << "cvt2: " << e.what() << "\ncvt2: try 'cvt2 --help'\n";
+  } catch (const std::bad_alloc&) {
+    std::cerr << "cvt2: out of memory: a generator needs up to " << bytes_per_generator(Options())
+              << " bytes during the optimization (--points, the input files)\n";
+  } catch (const std::exception& e) {
+    std::cerr << "cvt2: " << e.what() << '\n';
+  }
+  return EXIT_FAILURE;
+}
