@@ -55,9 +55,10 @@ std::vector<Point> sample_points(const Cdt& cdt, std::size_t n, unsigned seed) {
   const CGAL::Bbox_2 b = domain_bbox(cdt);
   const double w = b.xmax() - b.xmin(), h = b.ymax() - b.ymin();
   std::mt19937_64 rng(seed + 1);
-  std::uniform_real_distribution<double> ux(b.xmin() - w / 4, b.xmax() + w / 4),
-      uy(b.ymin() - h / 4, b.ymax() + h / 4);
-  for (std::size_t i = 0; i < n; ++i) pts.emplace_back(ux(rng), uy(rng));
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = uniform(rng, b.xmin() - w / 4, b.xmax() + w / 4);
+    pts.emplace_back(x, uniform(rng, b.ymin() - h / 4, b.ymax() + h / 4));
+  }
   return pts;
 }
 
@@ -125,10 +126,10 @@ TEST_CASE("a sizing field density is 1/mu^4 of its sizing field, lambdas include
   const CVT_2::Sizing_field_density_2<K, Sizing> rho_boundary(boundary);
   const auto copy = rho_boundary;
   std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u(-3, 3);
   std::size_t wrong = 0;
   for (int i = 0; i < 2000; ++i) {
-    const Point p(u(rng), u(rng));
+    const double x = uniform(rng, -3, 3);
+    const Point p(x, uniform(rng, -3, 3));
     const double m = mu(p), b = boundary(p);
     if (std::abs(rho(p) - 1 / (m * m * m * m)) > 1e-14 / (m * m * m * m)) ++wrong;
     if (std::abs(rho_boundary(p) - 1 / (b * b * b * b)) > 1e-14 / (b * b * b * b)) ++wrong;
@@ -199,7 +200,6 @@ TEST_CASE("the boundary sizing restricted to a disk equals it bit for bit in the
   STATIC_REQUIRE(CVT_2::has_restrict_to_disk_v<decltype(rho), K>);
   STATIC_REQUIRE(!CVT_2::has_restrict_to_disk_v<Uniform, K>);
   std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> unit(0, 1);
   const double diag = diagonal(d.cdt);
   std::size_t wrong = 0, kept = 0, disks = 0;
   for (const Point& c : sample_points(d.cdt, 200, 23)) {
@@ -210,7 +210,8 @@ TEST_CASE("the boundary sizing restricted to a disk equals it bit for bit in the
       kept += local.number_of_segments();
       ++disks;
       for (int j = 0; j < 20; ++j) {  // on the circle (the worst case) and inside
-        const double a = 2 * CGAL_PI * unit(rng), t = j < 5 ? 1.0 : std::sqrt(unit(rng));
+        const double a = uniform(rng, 0, 2 * CGAL_PI),
+                     t = j < 5 ? 1.0 : std::sqrt(uniform(rng, 0, 1));
         const Point y(c.x() + t * r * std::cos(a), c.y() + t * r * std::sin(a));
         if (local(y) != mu(y) || local_rho(y) != rho(y)) {
           if (++wrong <= 3) {
@@ -239,7 +240,6 @@ TEST_CASE("the boundary sizing is k-Lipschitz", "[density][sizing]") {
                            b = sample_points(d.cdt, 1500, seed + 7);
   const double h = diagonal(d.cdt) * 1e-4;
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-h, h);
   std::size_t violations = 0, compared = 0;
   const auto check = [&](const Point& x, const Point& y) {
     const double mx = mu(x), my = mu(y);
@@ -249,8 +249,9 @@ TEST_CASE("the boundary sizing is k-Lipschitz", "[density][sizing]") {
     if (std::abs(mx - my) > bound) ++violations;
   };
   for (std::size_t i = 0; i < a.size(); ++i) {
-    check(a[i], b[i]);                                         // far apart
-    check(a[i], Point(a[i].x() + u(rng), a[i].y() + u(rng)));  // close
+    check(a[i], b[i]);  // far apart
+    const double dx = uniform(rng, -h, h), dy = uniform(rng, -h, h);
+    check(a[i], Point(a[i].x() + dx, a[i].y() + dy));  // close
   }
   CHECK(compared == 2 * a.size());
   CHECK(violations == 0);

@@ -57,21 +57,29 @@ TEST_CASE("a .poly file is read with its numbering, comments, markers and holes"
 TEST_CASE("malformed .poly files give a parse error that names the line", "[io]") {
   using E = CVT_2::IO::Parse_error;
   const auto err = [](const std::string& text) { return message_of<E>([&] { parse(text); }); };
-  CHECK(err("") == "t.poly:0: unexpected end of file, expected the vertex header '<#vertices> 2 <#attributes> <#markers>'");
+  CHECK(err("") ==
+        "t.poly: unexpected end of file, expected the vertex header '<#vertices> 2 <#attributes> "
+        "<#markers>'");
   CHECK_THAT(err("3 2 0 0\n1 0 0\n2 1 0\n"), Catch::Contains("t.poly:3: unexpected end of file"));
   CHECK_THAT(err("2 2 0 0\n1 0 0\n2 nan 0\n"), Catch::Contains("t.poly:3: number not finite"));
   CHECK_THAT(err("2 2 0 0\n1 0 0\n2 1e999 0\n"), Catch::Contains("t.poly:3"));
-  CHECK_THAT(err("2 2 0 0\n1 0 0\n2 1x 0\n"), Catch::Contains("t.poly:3: not a number (near '1x')"));
-  CHECK_THAT(err("2 2 0 0\n1 0 0\n3 1 0\n"), Catch::Contains("t.poly:3: vertex numbers must be consecutive"));
-  CHECK_THAT(err("2 2 0 0\n1 0 0\n2 1 0\n1 0\n1 1 3\n"), Catch::Contains("t.poly:5: vertex number out of range"));
-  CHECK_THAT(err("2 2 0 0\n1 0 0\n2 1 0\n1 0\n1 2 2\n"), Catch::Contains("t.poly:5: a segment needs two different vertices"));
+  CHECK_THAT(err("2 2 0 0\n1 0 0\n2 1x 0\n"),
+             Catch::Contains("t.poly:3: not a number (near '1x')"));
+  CHECK_THAT(err("2 2 0 0\n1 0 0\n3 1 0\n"),
+             Catch::Contains("t.poly:3: vertex numbers must be consecutive"));
+  CHECK_THAT(err("2 2 0 0\n1 0 0\n2 1 0\n1 0\n1 1 3\n"),
+             Catch::Contains("t.poly:5: vertex number out of range"));
+  CHECK_THAT(err("2 2 0 0\n1 0 0\n2 1 0\n1 0\n1 2 2\n"),
+             Catch::Contains("t.poly:5: a segment needs two different vertices"));
   CHECK_THAT(err("2 3 0 0\n"), Catch::Contains("t.poly:1: only dimension 2"));
   CHECK_THAT(err("-2 2 0 0\n"), Catch::Contains("t.poly:1: negative vertex count"));
   CHECK_THAT(err("2 2 0 0\n1 0 0 7\n"), Catch::Contains("t.poly:2: expected '<index> <x> <y>'"));
-  CHECK_THAT(err(std::string(square) + "1 2 3\n"), Catch::Contains("t.poly:16: too many fields in the region header"));
-  CHECK_THAT(err(std::string(square) + "0\nextra\n"), Catch::Contains("t.poly:17: unexpected content"));
+  CHECK_THAT(err(std::string(square) + "1 2 3\n"),
+             Catch::Contains("t.poly:16: too many fields in the region header"));
+  CHECK_THAT(err(std::string(square) + "0\nextra\n"),
+             Catch::Contains("t.poly:17: unexpected content"));
   CHECK_THAT(message_of<E>([] { CVT_2::IO::read_poly<Point>("/nonexistent.poly"); }),
-             Catch::Contains("/nonexistent.poly:0: cannot open the file"));
+             Catch::Contains("/nonexistent.poly: cannot open the file"));
 }
 
 TEST_CASE("bad domains give a domain error with file, line and coordinates", "[io]") {
@@ -84,7 +92,8 @@ TEST_CASE("bad domains give a domain error with file, line and coordinates", "[i
   };
   // crossing segments
   CHECK_THAT(err("4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n2 0\n1 1 2\n2 3 4\n0\n"),
-             Catch::Contains("t.poly:8: segment (1, 0) - (0, 1) crosses segment (0, 0) - (1, 1) of line 7"));
+             Catch::Contains(
+                 "t.poly:8: segment (1, 0) - (0, 1) crosses segment (0, 0) - (1, 1) of line 7"));
   // an open ring encloses nothing
   CHECK_THAT(err("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n2 2 3\n0\n"),
              Catch::Contains("the domain is empty"));
@@ -126,8 +135,9 @@ TEST_CASE("points files: one 'x y' a line, errors name the line", "[io]") {
   CHECK(d.points.size() == 2);
   CHECK(d.lines == std::vector<std::size_t>{2, 4});
   std::istringstream bad("0.5 0.5\n0.5\n");
-  CHECK_THAT(message_of<CVT_2::IO::Parse_error>([&] { CVT_2::IO::read_points<Point>(bad, "p.txt"); }),
-             Catch::Contains("p.txt:2: expected 'x y'"));
+  CHECK_THAT(
+      message_of<CVT_2::IO::Parse_error>([&] { CVT_2::IO::read_points<Point>(bad, "p.txt"); }),
+      Catch::Contains("p.txt:2: expected 'x y'"));
 }
 
 TEST_CASE("Triangle's rule keeps every region closed by inner constraints", "[io][domain]") {
@@ -145,14 +155,16 @@ TEST_CASE("Triangle's rule keeps every region closed by inner constraints", "[io
   double wkt_area = 0;
   for (const auto& pwh : polygons) {
     wkt_area += CGAL::to_double(pwh.outer_boundary().area());
-    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) wkt_area -= std::abs(CGAL::to_double(h->area()));
+    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h)
+      wkt_area -= std::abs(CGAL::to_double(h->area()));
   }
   CHECK(domain_area(d.cdt) == Approx(wkt_area).epsilon(1e-12));
 
   // The same domain from the polygons' structure, without seed points.
   Cdt cdt;
   for (const auto& pwh : polygons) {
-    cdt.insert_constraint(pwh.outer_boundary().vertices_begin(), pwh.outer_boundary().vertices_end(), true);
+    cdt.insert_constraint(pwh.outer_boundary().vertices_begin(),
+                          pwh.outer_boundary().vertices_end(), true);
     for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h)
       cdt.insert_constraint(h->vertices_begin(), h->vertices_end(), true);
   }
@@ -166,11 +178,13 @@ TEST_CASE("the domain from polygons with holes, and islands in lakes", "[io][dom
   using Polygon = CGAL::Polygon_2<K>;
   Polygon outer, hole, island;
   for (const auto& p : {Point(0, 0), Point(10, 0), Point(10, 10), Point(0, 10)}) outer.push_back(p);
-  for (const auto& p : {Point(2, 2), Point(2, 8), Point(8, 8), Point(8, 2)}) hole.push_back(p);  // clockwise
+  for (const auto& p : {Point(2, 2), Point(2, 8), Point(8, 8), Point(8, 2)})
+    hole.push_back(p);  // clockwise
   for (const auto& p : {Point(4, 4), Point(6, 4), Point(6, 6), Point(4, 6)}) island.push_back(p);
   CGAL::Polygon_with_holes_2<K> a(outer);
   a.add_hole(hole);
-  const std::vector<CGAL::Polygon_with_holes_2<K>> polygons{a, CGAL::Polygon_with_holes_2<K>(island)};
+  const std::vector<CGAL::Polygon_with_holes_2<K>> polygons{a,
+                                                            CGAL::Polygon_with_holes_2<K>(island)};
   Cdt cdt;
   for (const Polygon* ring : {&outer, &hole, &island})
     cdt.insert_constraint(ring->vertices_begin(), ring->vertices_end(), true);
@@ -184,7 +198,8 @@ TEST_CASE("the domain from polygons with holes, and islands in lakes", "[io][dom
   CHECK(domain_area(cdt2) == Approx(64 + 4).epsilon(1e-14));
 }
 
-TEST_CASE("inserting generators keeps a domain marked from polygons, holes included", "[io][domain]") {
+TEST_CASE("inserting generators keeps a domain marked from polygons, holes included",
+          "[io][domain]") {
   // No seed points anywhere: the marking comes from the polygons and must survive insertion,
   // also of points on the hole's boundary and on the outer boundary.
   using Polygon = CGAL::Polygon_2<K>;
@@ -194,10 +209,12 @@ TEST_CASE("inserting generators keeps a domain marked from polygons, holes inclu
   CGAL::Polygon_with_holes_2<K> pwh(outer);
   pwh.add_hole(hole);
   Cdt cdt;
-  for (const Polygon* ring : {&outer, &hole}) cdt.insert_constraint(ring->vertices_begin(), ring->vertices_end(), true);
+  for (const Polygon* ring : {&outer, &hole})
+    cdt.insert_constraint(ring->vertices_begin(), ring->vertices_end(), true);
   CVT_2::mark_domain_from_polygons_2(cdt, std::vector<CGAL::Polygon_with_holes_2<K>>{pwh});
   std::vector<Point> pts = random_points_in_domain(cdt, 500, 3);
-  for (const auto& p : {Point(5, 2), Point(2, 5), Point(5, 0), Point(0, 5), Point(8, 8)}) pts.push_back(p);
+  for (const auto& p : {Point(5, 2), Point(2, 5), Point(5, 0), Point(0, 5), Point(8, 8)})
+    pts.push_back(p);
   CVT_2::insert_generators_2(cdt, pts);
   CHECK(domain_area(cdt) == Approx(64).epsilon(1e-14));
   const Bvd bvd(cdt);
@@ -236,7 +253,8 @@ TEST_CASE("WKT: polygons, linestrings and points, each with its line", "[io][wkt
   int li;
   const auto f = cdt.locate(Point(2.5, 2), lt, li);
   REQUIRE(lt == Cdt::VERTEX);
-  CHECK(cdt.are_there_incident_constraints(f->vertex(li)));  // on the linestring: a constrained vertex
+  CHECK(cdt.are_there_incident_constraints(
+      f->vertex(li)));  // on the linestring: a constrained vertex
 }
 
 TEST_CASE("bad WKT gives an error that names the line and what is wrong", "[io][wkt]") {
@@ -244,14 +262,16 @@ TEST_CASE("bad WKT gives an error that names the line and what is wrong", "[io][
   const auto parse_error = [](const std::string& text) {
     return message_of<Parse_error>([&] { parse_wkt(text); });
   };
-  CHECK_THAT(parse_error("POLYGON((0 0, 1 0, 1 1, 0 1))\n"),
-             Catch::Contains("t.wkt:1: a ring is not closed: it starts at (0 0) and ends at (0 1)"));
+  CHECK_THAT(
+      parse_error("POLYGON((0 0, 1 0, 1 1, 0 1))\n"),
+      Catch::Contains("t.wkt:1: a ring is not closed: it starts at (0 0) and ends at (0 1)"));
   CHECK_THAT(parse_error("\nPOLYGON((0 0, 4 0, 4 4, 0 0), (1 1, 2 1, 2 2))\n"),
              Catch::Contains("t.wkt:2: a ring is not closed"));
   CHECK_THAT(parse_error("MULTIPOLYGON(((0 0, 1 0, 1 1, 0 0)), ((5 5, 6 5, 6 6)))\n"),
              Catch::Contains("a ring is not closed"));
   CHECK_THAT(parse_error("POLYGON((0 0, 1 0, 0 0))\n"), Catch::Contains("3 distinct points"));
-  CHECK_THAT(parse_error("POLYGON((0 0, 1 0, 1 1, 0 0)\n"), Catch::Contains("t.wkt:1: malformed POLYGON"));
+  CHECK_THAT(parse_error("POLYGON((0 0, 1 0, 1 1, 0 0)\n"),
+             Catch::Contains("t.wkt:1: malformed POLYGON"));
   CHECK_THAT(parse_error("POLYGON((0 0, 1 0, nan 1, 0 0))\n"), Catch::Contains("t.wkt:1"));
   CHECK_THAT(parse_error("POLYGON((0 0, 1e301 0, 1 1, 0 0))\n"), Catch::Contains("exceeds 1e300"));
   CHECK_THAT(parse_error("CIRCLE(0 0, 1)\n"), Catch::Contains("t.wkt:1: expected a WKT POLYGON"));
@@ -266,7 +286,8 @@ TEST_CASE("bad WKT gives an error that names the line and what is wrong", "[io][
   };
   CHECK_THAT(domain_error("POLYGON((0 0, 1 0, 1 1, 0 1, 0 0))\nLINESTRING(-1 0.5, 0.5 0.5)\n"),
              Catch::Contains("t.wkt:2: this geometry crosses itself or an earlier one"));
-  CHECK_THAT(domain_error("POLYGON((0 0, 1 0, 0 1, 1 1, 0 0))\n"), Catch::Contains("t.wkt:1: this geometry crosses itself"));
+  CHECK_THAT(domain_error("POLYGON((0 0, 1 0, 0 1, 1 1, 0 0))\n"),
+             Catch::Contains("t.wkt:1: this geometry crosses itself"));
   CHECK_THAT(domain_error("POLYGON((0 0, 1 0, 1 1, 0 1, 0 0))\nPOINT(0.5 0.5)\nPOINT(3 3)\n"),
              Catch::Contains("t.wkt:3: generator (3, 3) lies outside the domain"));
   // a repeated point in a row counts once
@@ -289,15 +310,17 @@ TEST_CASE("regression: empty rings, and hole rings that touch or overlap themsel
   // Found by hand after the fuzzer: "POLYGON EMPTY" made CGAL's reader step before an empty
   // ring too (a crash), "POINT EMPTY" added an uninitialized point, and a third coordinate was
   // read silently.
-  const auto w = parse_wkt("POLYGON((0 0, 1 0, 1 1, 0 0))\nPOINT EMPTY\nmultipoint empty\nLINESTRING EMPTY\n");
+  const auto w =
+      parse_wkt("POLYGON((0 0, 1 0, 1 1, 0 0))\nPOINT EMPTY\nmultipoint empty\nLINESTRING EMPTY\n");
   CHECK(w.polygons.size() == 1);
   CHECK(w.points.empty());
   CHECK(w.polylines.empty());
-  CHECK_THAT(parse_error("POLYGON EMPTY\n"), Catch::Contains("t.wkt:0: no POLYGON or MULTIPOLYGON"));
+  CHECK_THAT(parse_error("POLYGON EMPTY\n"), Catch::Contains("t.wkt: no POLYGON or MULTIPOLYGON"));
   CHECK_THAT(parse_error("POLYGON((0 0 5, 1 0 5, 1 1 5, 0 0 5))\n"),
              Catch::Contains("t.wkt:1: a point has 3 coordinates (0 0 5): only 2D WKT is read"));
   CHECK_THAT(parse_error("MULTIPOINT(EMPTY, (0.5 0.2))\n"), Catch::Contains("an EMPTY part"));
-  CHECK_THAT(parse_error("POLYGON 5\n"), Catch::Contains("t.wkt:1: malformed POLYGON: expected '('"));
+  CHECK_THAT(parse_error("POLYGON 5\n"),
+             Catch::Contains("t.wkt:1: malformed POLYGON: expected '('"));
   const auto area = [](const std::string& text) {
     Cdt cdt;
     CVT_2::IO::insert_wkt(cdt, parse_wkt(text));
@@ -354,7 +377,8 @@ TEST_CASE("regression: numbers, indices, attributes and markers are checked in f
              Catch::Contains("t.poly:7: not an integer (near '2?')"));
   CHECK_THAT(err("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 1\n1 1 2 1\n8/2 2 3 1\n3 3 1 1\n"),
              Catch::Contains("t.poly:7: not an integer (near '8/2')"));
-  CHECK_THAT(err("3 2 1 1\n1 0 0 0.5 1\n2 1 0 x 1\n"), Catch::Contains("t.poly:3: not a number (near 'x')"));
+  CHECK_THAT(err("3 2 1 1\n1 0 0 0.5 1\n2 1 0 x 1\n"),
+             Catch::Contains("t.poly:3: not a number (near 'x')"));
   CHECK_THAT(err("3 2 1 1\n1 0 0 0.5 1\n2 1 0 0.5 1.5\n"),
              Catch::Contains("t.poly:3: not an integer (near '1.5')"));
   std::istringstream points("0.5 0.5\n0.25\0 0.75\n"s);
@@ -385,14 +409,16 @@ TEST_CASE("regression: inserting no generators (an empty points file) changes no
 // one needle thinner than double precision resolves: its area, taken from its tip, cancelled
 // to 0 ("the domain is empty"); taken right, nearly every point drawn in it rounds outside,
 // and the draw went on forever.
-TEST_CASE("regression: random points in a needle thinner than double precision", "[io][regression]") {
+TEST_CASE("regression: random points in a needle thinner than double precision",
+          "[io][regression]") {
   Cdt cdt;
   CVT_2::IO::insert_poly(
-      cdt, parse("3 2 0 0\n1 0 -6.6666666666666668e124\n2 11 0\n3 11 10\n3 0\n1 1 2\n2 2 3\n3 3 1\n"));
+      cdt,
+      parse("3 2 0 0\n1 0 -6.6666666666666668e124\n2 11 0\n3 11 10\n3 0\n1 1 2\n2 2 3\n3 3 1\n"));
   const auto uniform = CVT_2::random_points_in_domain_2(cdt, 20, CVT_2::parameters::random_seed(1));
   const auto rho = [](const Point&) { return 1.0; };
-  const auto weighted = CVT_2::random_points_in_domain_2(
-      cdt, 20, CVT_2::parameters::random_seed(1).density(rho));
+  const auto weighted =
+      CVT_2::random_points_in_domain_2(cdt, 20, CVT_2::parameters::random_seed(1).density(rho));
   for (const auto* points : {&uniform, &weighted}) {
     CHECK(points->size() == 20);
     for (const Point& p : *points) CHECK(CVT_2::is_in_domain_2(cdt, p));
@@ -402,13 +428,15 @@ TEST_CASE("regression: random points in a needle thinner than double precision",
 
 TEST_CASE("the readers report the points that repeat earlier ones, which the triangulation merges",
           "[io]") {
-  const auto poly = parse("5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 1 1\n5 0\n1 1 2\n2 2 5\n3 5 4\n"
-                          "4 4 1\n5 2 3\n0\n");
+  const auto poly = parse(
+      "5 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 1 1\n5 0\n1 1 2\n2 2 5\n3 5 4\n"
+      "4 4 1\n5 2 3\n0\n");
   CHECK(poly.repeated_vertices == std::vector<std::array<std::size_t, 2>>{{6, 4}});
   std::istringstream points("0.5 0.5\n0.25 0.25\n# a comment\n0.5 0.5\n0.5 0.5\n");
   const auto p = CVT_2::IO::read_points<Point>(points, "p.txt");
   CHECK(p.repeated_points == std::vector<std::array<std::size_t, 2>>{{4, 1}, {5, 1}});
-  const auto w = parse_wkt("POLYGON((0 0, 1 0, 1 1, 0 0))\nMULTIPOINT((0.7 0.2), (0.7 0.2))\nPOINT(0.7 0.2)\n");
+  const auto w = parse_wkt(
+      "POLYGON((0 0, 1 0, 1 1, 0 0))\nMULTIPOINT((0.7 0.2), (0.7 0.2))\nPOINT(0.7 0.2)\n");
   CHECK(w.repeated_points == std::vector<std::array<std::size_t, 2>>{{2, 2}, {3, 2}});
   Cdt cdt;
   CVT_2::IO::insert_poly(cdt, poly);

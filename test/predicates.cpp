@@ -1,5 +1,7 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // The filtered blindness predicates against an exact rational construct-then-test reference.
+#include "support/random.h"
+
 #include <CVT_2/Bvd_traits_2.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -42,6 +44,13 @@ CGAL::Comparison_result reference_compare(const P& p, const P& q, const P& r, co
                        CGAL::squared_distance(g, *boost::get<EK::Point_2>(&*x2)));
 }
 
+// A point of the integer grid [-grid, grid]², or for grid = 0 a point uniform in [-1, 1]².
+P random_point(std::mt19937_64& rng, int grid) {
+  const double x = grid ? support::uniform_int(rng, -grid, grid) : support::uniform(rng, -1, 1);
+  const double y = grid ? support::uniform_int(rng, -grid, grid) : support::uniform(rng, -1, 1);
+  return P(x, y);
+}
+
 }  // namespace
 
 TEST_CASE("the blindness predicate equals the exact reference on random input", "[predicates]") {
@@ -51,9 +60,7 @@ TEST_CASE("the blindness predicate equals the exact reference on random input", 
   const int grid = GENERATE(4, 8, 0);
   CAPTURE(grid);
   std::mt19937_64 rng(42 + grid);
-  std::uniform_int_distribution<int> ui(-grid, grid);
-  std::uniform_real_distribution<double> ur(-1, 1);
-  const auto draw = [&] { return grid ? P(ui(rng), ui(rng)) : P(ur(rng), ur(rng)); };
+  const auto draw = [&] { return random_point(rng, grid); };
   std::size_t tested = 0, blind = 0, mismatches = 0;
   for (int i = 0; i < 200000 && tested < 50000; ++i) {
     const P p = draw(), q = draw(), r = draw(), a = draw(), b = draw();
@@ -119,9 +126,7 @@ TEST_CASE("the first-constraint comparison equals the exact reference", "[predic
   const int grid = GENERATE(6, 0);
   CAPTURE(grid);
   std::mt19937_64 rng(7 + grid);
-  std::uniform_int_distribution<int> ui(-grid, grid);
-  std::uniform_real_distribution<double> ur(-1, 1);
-  const auto draw = [&] { return grid ? P(ui(rng), ui(rng)) : P(ur(rng), ur(rng)); };
+  const auto draw = [&] { return random_point(rng, grid); };
   std::size_t tested = 0, mismatches = 0;
   for (int i = 0; i < 2000000 && tested < 5000; ++i) {
     const P p = draw(), q = draw(), r = draw(), a1 = draw(), b1 = draw(), a2 = draw(), b2 = draw();
@@ -143,14 +148,19 @@ TEST_CASE("clip points lie on the constraint's line at equal distance from both 
           "[predicates]") {
   const Traits::Construct_clip_point_2 clip = Traits().construct_clip_point_2_object();
   std::mt19937_64 rng(3);
-  std::uniform_real_distribution<double> u(-1, 1);
+  // the coordinates in the order written, since the order of a call's arguments is unspecified
+  const auto u = [&rng](double offset) { return offset + support::uniform(rng, -1, 1); };
+  const auto draw = [&u](double offset) {
+    const double x = u(offset);
+    return P(x, u(0));
+  };
   for (const double offset : {0.0, 1e6}) {
     for (int i = 0; i < 1000; ++i) {
-      const P v(offset + u(rng), u(rng)), w(offset + u(rng), u(rng)), a(offset + u(rng), u(rng)),
-          b(offset + u(rng), u(rng));
+      const P v = draw(offset), w = draw(offset), a = draw(offset), b = draw(offset);
       const P x = clip(v, w, a, b);
       const double scale = 1 + std::sqrt(CGAL::squared_distance(x, v));
-      CHECK(std::sqrt(CGAL::squared_distance(K::Line_2(a, b), x)) <= 1e-9 * scale * (1 + offset * 1e-6));
+      CHECK(std::sqrt(CGAL::squared_distance(K::Line_2(a, b), x)) <=
+            1e-9 * scale * (1 + offset * 1e-6));
       CHECK(std::sqrt(CGAL::squared_distance(x, v)) ==
             Approx(std::sqrt(CGAL::squared_distance(x, w))).epsilon(1e-6).margin(1e-9));
     }

@@ -22,9 +22,7 @@ namespace support {
 inline CVT_2::IO::Poly_data<Point> random_domain(unsigned seed, std::vector<Point>& generators,
                                                  std::size_t n_points) {
   std::mt19937_64 rng(seed);
-  const auto grid = [&](int lo, int hi) {
-    return std::uniform_int_distribution<int>(lo, hi)(rng) / 8.0;
-  };
+  const auto grid = [&](int lo, int hi) { return uniform_int(rng, lo, hi) / 8.0; };
   CVT_2::IO::Poly_data<Point> poly;
   std::vector<Segment> segments;
   const auto add_vertex = [&](const Point& p) {
@@ -61,15 +59,18 @@ inline CVT_2::IO::Poly_data<Point> random_domain(unsigned seed, std::vector<Poin
   // star-shaped polygon of 5 to 16 grid vertices around (5, 5).
   std::vector<Point> ring{Point(0, 0), Point(5, 0), Point(10, 0), Point(10, 10), Point(0, 10)};
   const auto shape = rng() % 3;
-  if (shape == 1) ring = {Point(0, 0), Point(10, 0), Point(10, 10), Point(6, 10), Point(5, 4), Point(4, 10), Point(0, 10)};
+  if (shape == 1)
+    ring = {Point(0, 0), Point(10, 0), Point(10, 10), Point(6, 10),
+            Point(5, 4), Point(4, 10), Point(0, 10)};
   if (shape == 2) {
     std::vector<double> angles(5 + rng() % 12);
-    for (double& a : angles) a = std::uniform_real_distribution<double>(0, 2 * CGAL_PI)(rng);
+    for (double& a : angles) a = uniform(rng, 0, 2 * CGAL_PI);
     std::sort(angles.begin(), angles.end());
     std::vector<Point> star;
     for (const double a : angles) {
-      const double r = std::uniform_real_distribution<double>(2, 5)(rng);
-      const Point p(std::round((5 + r * std::cos(a)) * 8) / 8, std::round((5 + r * std::sin(a)) * 8) / 8);
+      const double r = uniform(rng, 2, 5);
+      const Point p(std::round((5 + r * std::cos(a)) * 8) / 8,
+                    std::round((5 + r * std::sin(a)) * 8) / 8);
       if (star.empty() || (p != star.back() && p != star.front())) star.push_back(p);
     }
     if (star.size() >= 3 && CGAL::is_simple_2(star.begin(), star.end(), K())) ring = star;
@@ -116,9 +117,11 @@ inline CVT_2::IO::Poly_data<Point> random_domain(unsigned seed, std::vector<Poin
     if (rng() % 3 == 0) p = poly.vertices[rng() % poly.vertices.size()];
     const int steps = 1 + static_cast<int>(rng() % 4);
     for (int s = 0; s < steps; ++s) {
-      const Point q(std::clamp(p.x() + grid(-24, 24), 0.0, 10.0), std::clamp(p.y() + grid(-24, 24), 0.0, 10.0));
+      const Point q(std::clamp(p.x() + grid(-24, 24), 0.0, 10.0),
+                    std::clamp(p.y() + grid(-24, 24), 0.0, 10.0));
       bool in_hole = false;
-      for (std::size_t h = 0; h < poly.holes.size(); ++h) in_hole = in_hole || CGAL::squared_distance(q, poly.holes[h]) < 0.01;
+      for (std::size_t h = 0; h < poly.holes.size(); ++h)
+        in_hole = in_hole || CGAL::squared_distance(q, poly.holes[h]) < 0.01;
       if (!in_hole && add_segment(p, q)) p = q;
     }
   }
@@ -128,7 +131,8 @@ inline CVT_2::IO::Poly_data<Point> random_domain(unsigned seed, std::vector<Poin
   generators = random_points_in_domain(cdt, n_points / 2, seed + 1);
   while (generators.size() < n_points) {
     const Segment& s = segments[rng() % segments.size()];
-    const Point p = rng() % 4 ? Point(grid(1, 79), grid(1, 79)) : CGAL::midpoint(s.source(), s.target());
+    const Point p =
+        rng() % 4 ? Point(grid(1, 79), grid(1, 79)) : CGAL::midpoint(s.source(), s.target());
     if (CVT_2::is_in_domain_2(cdt, p)) generators.push_back(p);
   }
   return poly;

@@ -1,19 +1,24 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// Test support: the triangulation types, loaders, seeded random points and brute-force oracles.
+// Test support: the triangulation types, loaders, seeded random points, cell measures. The
+// invariant checker and the brute-force oracles are in invariants.h, the independent
+// quadrature in cell_quadrature.h.
 #ifndef CVT_2_TEST_SUPPORT_H
 #define CVT_2_TEST_SUPPORT_H
 
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/IO/read_poly.h>
+#include <CVT_2/insert_generators_2.h>
+#include <CVT_2/random_points_in_domain_2.h>
+
+#include "random.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_id_2.h>
 
-#include <algorithm>
 #include <cmath>
-#include <random>
+#include <map>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace support {
@@ -21,7 +26,7 @@ namespace support {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_2;
 using Segment = K::Segment_2;
-using Vb = CGAL::Triangulation_vertex_base_2<K>;
+using Vb = CGAL::Triangulation_vertex_base_with_id_2<K>;  // CVT_2::Cvt_triangulation_2's
 using Fb = CVT_2::Bvd_face_base_2<K>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
@@ -29,7 +34,9 @@ using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
 using Bvd = CVT_2::Bounded_voronoi_diagram_2<Cdt>;
 using Cell = std::vector<Bvd::Cell_vertex>;
 
-inline std::string data_path(const std::string& file) { return std::string(CVT_2_DATA_DIR) + "/" + file; }
+inline std::string data_path(const std::string& file) {
+  return std::string(CVT_2_DATA_DIR) + "/" + file;
+}
 
 // A domain from a bundled .poly file, optionally moved by p -> scale * p + offset.
 struct Domain {
@@ -44,6 +51,16 @@ inline void load_domain(Domain& d, const std::string& file, double scale = 1, do
                         double oy = 0) {
   d.poly = CVT_2::IO::read_poly<Point>(data_path(file));
   transform(d.poly, scale, ox, oy);
+  CVT_2::IO::insert_poly(d.cdt, d.poly);
+}
+
+// The square [0, side]², no generators.
+inline void load_square(Domain& d, double side = 1) {
+  d.poly = CVT_2::IO::Poly_data<Point>();
+  d.poly.vertices = {Point(0, 0), Point(side, 0), Point(side, side), Point(0, side)};
+  d.poly.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  d.poly.vertex_lines.assign(4, 0);
+  d.poly.segment_lines.assign(4, 0);
   CVT_2::IO::insert_poly(d.cdt, d.poly);
 }
 
@@ -86,17 +103,9 @@ inline CGAL::Bbox_2 domain_bbox(const Cdt& cdt) {
   return b;
 }
 
-// n points drawn uniformly in the domain (rejection in its bounding box).
+// n points drawn uniformly in the domain, the same on every platform (the library's sampling).
 inline std::vector<Point> random_points_in_domain(const Cdt& cdt, std::size_t n, unsigned seed) {
-  const CGAL::Bbox_2 b = domain_bbox(cdt);
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> ux(b.xmin(), b.xmax()), uy(b.ymin(), b.ymax());
-  std::vector<Point> pts;
-  while (pts.size() < n) {
-    const Point p(ux(rng), uy(rng));
-    if (CVT_2::is_in_domain_2(cdt, p)) pts.push_back(p);
-  }
-  return pts;
+  return CVT_2::random_points_in_domain_2(cdt, n, CVT_2::parameters::random_seed(seed));
 }
 inline void insert_random_points(Domain& d, std::size_t n, unsigned seed) {
   CVT_2::insert_generators_2(d.cdt, random_points_in_domain(d.cdt, n, seed));
@@ -145,52 +154,39 @@ inline bool polygon_contains(const Cell& c, const Point& y) {
   return in;
 }
 
-// Brute force: the generators that see y, by distance. x sees y when no constrained edge that
-// does not end at x meets the segment [x, y].
-struct Visibility_oracle {
-  std::vector<std::pair<Segment, std::pair<Cdt::Vertex_handle, Cdt::Vertex_handle>>> constraints;
-  std::vector<Cdt::Vertex_handle> generators;
+// The positions of the vertices, in the triangulation's order.
+inline std::vector<Point> vertex_points(const Cdt& cdt) {
+  std::vector<Point> p;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    p.push_back(v->point());
+  return p;
+}
 
-  explicit Visibility_oracle(const Bvd& bvd) {
-    const Cdt& cdt = bvd.triangulation();
-    for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
-      if (cdt.is_constrained(*e)) {
-        const auto a = e->first->vertex(cdt.ccw(e->second)), b = e->first->vertex(cdt.cw(e->second));
-        constraints.push_back({Segment(a->point(), b->point()), {a, b}});
-      }
-    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-      if (bvd.has_cell(v)) generators.push_back(v);
-  }
-  bool sees(Cdt::Vertex_handle x, const Point& y) const {
-    const Segment s(x->point(), y);
-    const CGAL::Bbox_2 sb = s.bbox();
-    for (const auto& c : constraints) {
-      if (c.second.first == x || c.second.second == x) continue;
-      if (CGAL::do_overlap(sb, c.first.bbox()) && CGAL::do_intersect(s, c.first)) return false;
+// The region of each free vertex: its domain faces' component when connected without crossing
+// a constraint (a county of Massachusetts, say).
+inline std::map<Cdt::Vertex_handle, int> regions(const Cdt& cdt) {
+  std::map<Cdt::Face_handle, int> id;
+  int next = 0;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (!f->is_inside_domain() || id.count(f)) continue;
+    std::vector<Cdt::Face_handle> stack{f};
+    id[f] = next;
+    while (!stack.empty()) {
+      const auto g = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 3; ++i)
+        if (!g->is_constrained(i) && !id.count(g->neighbor(i))) {
+          id[g->neighbor(i)] = next;
+          stack.push_back(g->neighbor(i));
+        }
     }
-    return true;
+    ++next;
   }
-  // The nearest and second nearest visible generators' squared distances, and the nearest.
-  std::pair<Cdt::Vertex_handle, std::pair<double, double>> nearest_visible(const Point& y) const {
-    std::vector<std::pair<double, Cdt::Vertex_handle>> by_distance;
-    by_distance.reserve(generators.size());
-    for (const auto v : generators) by_distance.push_back({CGAL::squared_distance(v->point(), y), v});
-    std::sort(by_distance.begin(), by_distance.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    Cdt::Vertex_handle best;
-    double d1 = -1;
-    for (const auto& [d, v] : by_distance) {
-      if (!sees(v, y)) continue;
-      if (d1 < 0) {
-        best = v;
-        d1 = d;
-      } else {
-        return {best, {d1, d}};
-      }
-    }
-    return {best, {d1, HUGE_VAL}};
-  }
-};
+  std::map<Cdt::Vertex_handle, int> region;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    if (!cdt.are_there_incident_constraints(v)) region[v] = id.at(v->face());
+  return region;
+}
 
 }  // namespace support
 

@@ -1,0 +1,436 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// The conforming mesh of the diagram and the readers and writers around it.
+#include "support/random_domain.h"
+#include "support/support.h"
+
+#include <CVT_2/Bvd_mesh_2.h>
+#include <CVT_2/Cvt_triangulation_2.h>
+#include <CVT_2/IO/read_domain.h>
+#include <CVT_2/IO/read_geojson.h>
+#include <CVT_2/IO/write_disv.h>
+#include <CVT_2/IO/write_geojson.h>
+#include <CVT_2/IO/write_triangle.h>
+#include <CVT_2/IO/write_vtu.h>
+
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace support;
+
+namespace {
+
+// The library's default triangulation, whose vertices and faces have ids.
+using Cdt_ids = CVT_2::Cvt_triangulation_2<K>;
+using Bvd_ids = CVT_2::Bounded_voronoi_diagram_2<Cdt_ids>;
+using Mesh = CVT_2::Bvd_mesh_2<Bvd_ids>;
+
+Cdt_ids load(const std::string& file, std::size_t points, unsigned seed) {
+  Cdt_ids cdt;
+  CVT_2::IO::read_domain(data_path(file), cdt);
+  CVT_2::insert_generators_2(
+      cdt, CVT_2::random_points_in_domain_2(cdt, points, CVT_2::parameters::random_seed(seed)));
+  return cdt;
+}
+
+Cdt_ids random_case(unsigned seed) {
+  std::vector<Point> generators;
+  const auto poly = random_domain(seed, generators, 60);
+  Cdt_ids cdt;
+  CVT_2::IO::insert_poly(cdt, poly);
+  CVT_2::insert_generators_2(cdt, generators);
+  return cdt;
+}
+
+double triangulation_area(const Cdt_ids& cdt) {
+  double a = 0;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (f->is_inside_domain()) a += cdt.triangle(f).area();
+  return a;
+}
+
+// The bounded regions outside the domain (holes), each a component of faces not in the domain
+// connected through any edge; and the components of the domain (faces through any edge).
+std::pair<std::size_t, std::size_t> holes_and_components(const Cdt_ids& cdt) {
+  std::map<Cdt_ids::Face_handle, int> seen;
+  std::size_t holes = 0, parts = 0;
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) {
+    if (seen.count(f)) continue;
+    const bool in = f->is_inside_domain();
+    bool bounded = true;
+    std::vector<Cdt_ids::Face_handle> stack{f};
+    seen[f] = 1;
+    while (!stack.empty()) {
+      const auto g = stack.back();
+      stack.pop_back();
+      if (cdt.is_infinite(g)) bounded = false;
+      for (int i = 0; i < 3; ++i) {
+        const auto n = g->neighbor(i);
+        if (n->is_inside_domain() == in && !seen.count(n)) seen[n] = 1, stack.push_back(n);
+      }
+      // Domain faces that touch at a vertex only are one component of the mesh's graph too.
+      if (in)
+        for (int i = 0; i < 3; ++i) {
+          auto fc = cdt.incident_faces(g->vertex(i)), done = fc;
+          do
+            if (fc->is_inside_domain() && !seen.count(fc)) seen[fc] = 1, stack.push_back(fc);
+          while (++fc != done);
+        }
+    }
+    if (in)
+      ++parts;
+    else if (bounded)
+      ++holes;
+  }
+  return {holes, parts};
+}
+
+// The properties every mesh has.
+void check_mesh(const Mesh& mesh, const Cdt_ids& cdt) {
+  const double area = triangulation_area(cdt);
+  double total = 0;
+  std::size_t regions = 0, slit_edges = 0;
+  for (std::size_t k = 0; k < mesh.number_of_cells(); ++k) {
+    const double a = mesh.area(k);
+    CHECK(a > 0);
+    total += a;
+    double lobe_area = 0;
+    const auto rings = mesh.polygons(k);
+    for (const auto& ring : rings) {
+      std::vector<Point> p;
+      for (const auto i : ring) p.push_back(mesh.point(i));
+      CHECK(CGAL::is_simple_2(p.begin(), p.end(), K()));
+      CHECK(CGAL::orientation_2(p.begin(), p.end(), K()) == CGAL::COUNTERCLOCKWISE);
+      lobe_area += CGAL::to_double(CGAL::polygon_area_2(p.begin(), p.end(), K()));
+    }
+    CHECK(lobe_area == Approx(a).epsilon(1e-9));
+    // The constraints at a constrained generator cut its cell into one region per wedge between
+    // them (the cycle visits the generator once per wedge); a free cell is one region.
+    const auto c = mesh.cell(k);
+    std::size_t wedges = 0;
+    for (const auto i : c) wedges += mesh.vertex_type(i) == Bvd_ids::Cell_vertex::GENERATOR ? 1 : 0;
+    CHECK(rings.size() <= std::max<std::size_t>(wedges, 1));
+    regions += std::max<std::size_t>(wedges, 1);
+    // The generator holds its cell: inside a free cell, a vertex of a constrained one.
+    bool generator_is_vertex = false;
+    for (const auto i : c)
+      generator_is_vertex |= mesh.vertex_type(i) == Bvd_ids::Cell_vertex::GENERATOR &&
+                             mesh.point(i) == mesh.generator(k)->point();
+    CHECK(generator_is_vertex == mesh.is_constrained(k));
+    CHECK(mesh.cell_of(mesh.generator(k)) == k);
+  }
+  CHECK(total == Approx(area).epsilon(1e-10));
+  // Edges: a bisector edge has two different cells, each with it the other way; an edge on a
+  // constraint lies on that constrained edge, with a cell beyond it if and only if the
+  // constraint has the domain on both sides.
+  std::map<std::pair<std::size_t, std::size_t>, int> walked;  // directed edges of the cycles
+  for (std::size_t k = 0; k < mesh.number_of_cells(); ++k) {
+    const auto c = mesh.cell(k);
+    for (std::size_t j = 0; j < c.size(); ++j) ++walked[{c[j], c[(j + 1) % c.size()]}];
+  }
+  const auto edges = mesh.edges();
+  for (const auto& e : edges) {
+    const Point& a = mesh.point(e.vertices[0]);
+    const Point& b = mesh.point(e.vertices[1]);
+    CHECK(a != b);
+    if (e.constraint == Mesh::none) {
+      REQUIRE(e.cells[1] != Mesh::none);
+      CHECK(e.cells[0] != e.cells[1]);
+      CHECK(walked[{e.vertices[1], e.vertices[0]}] == 1);
+    } else {
+      const auto& k = mesh.constraints()[e.constraint];
+      const Point& p = mesh.generator(k[0])->point();
+      const Point& q = mesh.generator(k[1])->point();
+      const double length = std::sqrt(CGAL::squared_distance(p, q));
+      for (const Point& x : {a, b}) {
+        CHECK(std::sqrt(CGAL::squared_distance(K::Segment_2(p, q), x)) <= 1e-9 * length);
+      }
+      if (e.cells[1] != Mesh::none) CHECK(walked[{e.vertices[1], e.vertices[0]}] == 1);
+      if (e.cells[0] == e.cells[1]) ++slit_edges;
+    }
+    CHECK(walked[{e.vertices[0], e.vertices[1]}] == 1);
+  }
+  // Euler's formula for the planar graph of the edges: V - E + F = 1 + C, F counting the regions
+  // of the cells, the holes and the outside, C the domain's components.
+  std::set<std::size_t> used;
+  for (const auto& e : edges) used.insert(e.vertices[0]), used.insert(e.vertices[1]);
+  const auto [holes, parts] = holes_and_components(cdt);
+  CAPTURE(used.size(), edges.size(), regions, holes, parts, slit_edges);
+  CHECK(long(used.size()) - long(edges.size()) + long(regions + holes + 1) == long(1 + parts));
+}
+
+}  // namespace
+
+TEST_CASE("the mesh's cells tile the domain, meet edge to edge, and satisfy Euler's formula",
+          "[mesh]") {
+  const std::string file =
+      GENERATE(as<std::string>{}, "four_clusters.poly", "square_inner_constraints.poly",
+               "us_massachusetts_counties.poly", "us_kentucky_counties.poly", "earcut_dude.poly",
+               "world_land_110m.poly");
+  CAPTURE(file);
+  const Cdt_ids cdt = load(file, 1500, 3);
+  const Bvd_ids bvd(cdt);
+  const Mesh mesh(bvd);
+  check_mesh(mesh, cdt);
+  // No two vertices at one point on these domains: one vertex per point, as the cells share it.
+  std::set<Point> points(mesh.points().begin(), mesh.points().end());
+  CHECK(points.size() == mesh.number_of_vertices());
+}
+
+TEST_CASE("the mesh of random domains: holes, touching polylines, points on constraints",
+          "[mesh]") {
+  for (unsigned seed = 1; seed <= random_cases(60); ++seed) {
+    CAPTURE(seed);
+    const Cdt_ids cdt = random_case(seed);
+    const Bvd_ids bvd(cdt);
+    check_mesh(Mesh(bvd), cdt);
+  }
+}
+
+TEST_CASE("each mesh cell is its diagram cell, with the vertices the cells beside it add",
+          "[mesh]") {
+  const Cdt_ids cdt = load("us_massachusetts_counties.poly", 2000, 5);
+  const Bvd_ids bvd(cdt);
+  const Mesh mesh(bvd);
+  std::size_t k = 0;
+  std::vector<Bvd_ids::Cell_vertex> cell;
+  bvd.for_each_cell([&](Cdt_ids::Vertex_handle v, const auto& c) {
+    REQUIRE(mesh.generator(k) == v);
+    const auto m = mesh.cell(k);
+    // Every diagram vertex is a mesh vertex of the cell (to rounding: a clip point is computed
+    // by the cell on its other side too), and the mesh adds only points on the cell's edges.
+    const double size = std::sqrt(CGAL::to_double(mesh.area(k)));
+    for (const auto& x : c) {
+      double nearest = HUGE_VAL;
+      for (const auto i : m)
+        nearest = std::min(nearest, std::sqrt(CGAL::squared_distance(x.point, mesh.point(i))));
+      CHECK(nearest <= 1e-9 * size);
+    }
+    CHECK(m.size() >= c.size());
+    CHECK(CGAL::to_double(mesh.area(k)) == Approx(signed_area(c)).epsilon(1e-9));
+    ++k;
+  });
+  CHECK(k == mesh.number_of_cells());
+}
+
+TEST_CASE("the mesh is the same on any number of threads, and without ids in the records",
+          "[mesh]") {
+  const Cdt_ids cdt = load("us_massachusetts_counties.poly", 20000, 2);
+  const Bvd_ids bvd(cdt);
+  const Mesh one(bvd, 1), three(bvd, 3);
+  REQUIRE(CVT_2::internal::Face_chunks<Cdt_ids>(cdt).size() >= 6);  // enough for 3 threads
+  const auto same = [](const Mesh& a, const Mesh& b) {
+    if (a.points() != b.points() || a.number_of_cells() != b.number_of_cells()) return false;
+    for (std::size_t k = 0; k < a.number_of_cells(); ++k) {
+      const auto x = a.cell(k), y = b.cell(k);
+      if (!std::equal(x.begin(), x.end(), y.begin(), y.end())) return false;
+      for (std::size_t j = 0; j < x.size(); ++j)
+        if (a.side(k, j).cell != b.side(k, j).cell ||
+            a.side(k, j).constraint != b.side(k, j).constraint)
+          return false;
+    }
+    return a.constraints() == b.constraints();
+  };
+  CHECK(same(one, three));
+  // The same triangulation with CGAL's default records, numbered in hash maps.
+  Domain d;
+  load_domain(d, "us_massachusetts_counties.poly");
+  insert_random_points(d, 20000, 2);
+  const Bvd plain(d.cdt);
+  const CVT_2::Bvd_mesh_2<Bvd> mapped(plain, 2);
+  CHECK(mapped.points() == one.points());
+  CHECK(mapped.number_of_cells() == one.number_of_cells());
+  CHECK(mapped.edges().size() == one.edges().size());
+}
+
+TEST_CASE("a vertex on inner constraints has one cell with slits; polygons() drops them",
+          "[mesh]") {
+  // A square with a crack from its middle to the right side and a wall across the left half
+  // that ends inside: generators at the crack's tip and on the wall.
+  CVT_2::IO::Poly_data<Point> poly;
+  add_ring(poly, {{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+  const std::size_t first = poly.vertices.size();
+  poly.vertices.insert(poly.vertices.end(), {{2, 2}, {4, 2}, {0.5, 1}, {1.5, 1}, {1, 1}});
+  poly.segments.push_back({first, first + 1});  // the crack, ending on the side at (4, 2)
+  poly.segments.push_back({first + 2, first + 4});
+  poly.segments.push_back({first + 4, first + 3});  // the wall, through (1, 1)
+  Cdt_ids cdt;
+  poly.vertex_lines.assign(poly.vertices.size(), 0);
+  poly.segment_lines.assign(poly.segments.size(), 0);
+  CVT_2::IO::insert_poly(cdt, poly);
+  CVT_2::insert_generators_2(
+      cdt, CVT_2::random_points_in_domain_2(cdt, 200, CVT_2::parameters::random_seed(4)));
+  const Bvd_ids bvd(cdt);
+  const Mesh mesh(bvd);
+  check_mesh(mesh, cdt);
+  for (const Point p : {Point(2, 2), Point(1, 1), Point(0.5, 1)}) {
+    CAPTURE(p);
+    std::size_t k = Mesh::none;
+    for (std::size_t i = 0; i < mesh.number_of_cells(); ++i)
+      if (mesh.generator(i)->point() == p) k = i;
+    REQUIRE(k != Mesh::none);
+    std::size_t slits = 0;
+    for (std::size_t j = 0; j < mesh.cell(k).size(); ++j)
+      slits += mesh.side(k, j).cell == k ? 1 : 0;
+    CHECK(slits >= 2);  // each slit walked there and back
+    const auto rings = mesh.polygons(k);
+    REQUIRE(rings.size() == 1);
+    for (const auto i : rings[0]) CHECK(mesh.point(i) != p);  // the generator is inside
+  }
+}
+
+TEST_CASE("a cell that meets itself at its generator becomes one ring per lobe", "[mesh]") {
+  // Two triangular holes touching at (2, 2): the cell of that vertex has two lobes.
+  CVT_2::IO::Poly_data<Point> poly;
+  add_ring(poly, {{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+  add_ring(poly, {{2, 2}, {3, 1}, {3, 3}});
+  add_ring(poly, {{2, 2}, {1, 3}, {1, 1}});
+  poly.holes = {Point(2.7, 2), Point(1.3, 2)};
+  const Cdt_ids cdt = [&] {
+    poly.vertex_lines.assign(poly.vertices.size(), 0);
+    poly.segment_lines.assign(poly.segments.size(), 0);
+    poly.hole_lines.assign(poly.holes.size(), 0);
+    Cdt_ids t;
+    CVT_2::IO::insert_poly(t, poly);
+    CVT_2::insert_generators_2(
+        t, CVT_2::random_points_in_domain_2(t, 300, CVT_2::parameters::random_seed(2)));
+    return t;
+  }();
+  const Bvd_ids bvd(cdt);
+  const Mesh mesh(bvd);
+  check_mesh(mesh, cdt);
+  std::size_t k = Mesh::none;
+  for (std::size_t i = 0; i < mesh.number_of_cells(); ++i)
+    if (mesh.generator(i)->point() == Point(2, 2)) k = i;
+  REQUIRE(k != Mesh::none);
+  CHECK(mesh.polygons(k).size() == 2);
+  // The GeoJSON writer makes it a MultiPolygon.
+  std::ostringstream os;
+  CVT_2::IO::write_geojson(os, mesh);
+  const auto fc = nlohmann::json::parse(os.str());
+  REQUIRE(fc["features"].size() == mesh.number_of_cells());
+  CHECK(fc["features"][k]["geometry"]["type"] == "MultiPolygon");
+  CHECK(fc["features"][k]["properties"]["constrained"] == true);
+}
+
+TEST_CASE(
+    "GeoJSON domains: features, inner constraints, generators, and errors naming the "
+    "feature",
+    "[io][geojson]") {
+  const auto read = [](const std::string& text) {
+    std::istringstream is(text);
+    return CVT_2::IO::read_geojson<K>(is, "t.geojson");
+  };
+  const auto w = read(R"({"type": "FeatureCollection", "features": [
+      {"type": "Feature", "properties": {"name": "square"}, "geometry": {"type": "Polygon",
+       "coordinates": [[[0, 0], [4, 0], [4, 4], [0, 4], [0, 0]], [[1, 1], [1, 2], [2, 2], [1, 1]]]}},
+      {"type": "Feature", "properties": {}, "geometry": {"type": "MultiLineString",
+       "coordinates": [[[3, 0.5], [3, 3.5]]]}},
+      {"type": "Feature", "geometry": {"type": "GeometryCollection", "geometries": [
+       {"type": "Point", "coordinates": [0.5, 3, 10]}, {"type": "MultiPoint", "coordinates": [[3.5, 1]]}]}},
+      {"type": "Feature", "geometry": null}]})");
+  CHECK(w.polygons.size() == 1);
+  CHECK(w.polygons[0].number_of_holes() == 1);
+  CHECK(w.polylines.size() == 1);
+  CHECK(w.points == std::vector<Point>{Point(0.5, 3), Point(3.5, 1)});
+  CHECK(w.point_lines == std::vector<std::size_t>{3, 3});
+  Cdt_ids cdt;
+  CVT_2::IO::insert_wkt(cdt, w);
+  CHECK(triangulation_area(cdt) == Approx(16 - 0.5));
+  const auto error = [&](const std::string& text) {
+    try {
+      read(text);
+    } catch (const CVT_2::IO::Parse_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK(error("{\"type\": \"Feature\",\n \"geometry\": [1, 2,}") ==
+        "t.geojson:2: column 20: not JSON: syntax error while parsing value - unexpected '}'; "
+        "expected '[', '{', or a literal");
+  CHECK_THAT(error(R"({"type": "Feature", "properties": {"name": "Adair"}, "geometry":
+      {"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 1]]]}})"),
+             Catch::StartsWith("t.geojson: feature 1 (Adair): a linear ring is not closed"));
+  CHECK_THAT(error(R"({"type": "FeatureCollection", "features": [{"type": "Feature", "id": 7,
+      "geometry": {"type": "Circle", "coordinates": [0, 0]}}]})"),
+             Catch::StartsWith("t.geojson: feature 1 (7): unknown geometry type \"Circle\""));
+  CHECK_THAT(error(R"({"type": "Point", "coordinates": [0, "a"]})"),
+             Catch::Contains("a position must be [x, y] with numbers"));
+  CHECK_THAT(error(R"({"type": "Polygon", "coordinates": [[[0, 0], [1e400, 0], [1, 1], [0, 0]]]})"),
+             Catch::Contains("not JSON"));
+  CHECK_THAT(error(R"({"type": "LineString", "coordinates": [[0, 0], [1, 1]]})"),
+             Catch::Contains("no Polygon or MultiPolygon"));
+  CHECK_THAT(error(R"([1, 2])"), Catch::Contains("not GeoJSON"));
+}
+
+TEST_CASE(
+    "an outer ring that touches itself closes off a pocket outside the domain, as GEOS "
+    "reads it",
+    "[io][wkt]") {
+  // The pocket (5, 10), (3, 7), (7, 7) of area 6, closed off by the outer ring at (5, 10); in the
+  // second, a hole that touches itself around an island, (2, 2), (4, 2), (4, 4): the hole's loop
+  // around it is a hole, the loop inside that one is in the domain again.
+  const auto area = [](const std::string& text) {
+    std::istringstream is(text);
+    Cdt_ids cdt;
+    CVT_2::IO::insert_wkt(cdt, CVT_2::IO::read_wkt<K>(is, "t.wkt"));
+    return triangulation_area(cdt);
+  };
+  CHECK(area("POLYGON((0 0,10 0,10 10,5 10,3 7,7 7,5 10,0 10,0 0))") == Approx(100 - 6));
+  CHECK(area("POLYGON((0 0,10 0,10 10,0 10,0 0),(1 1,1 5,5 5,5 1,3 1,4 2,2 2,3 1,1 1))") ==
+        Approx(100 - 16 + 1));
+}
+
+TEST_CASE("the writers: DISV counts and clockwise cells, VTU cells, Triangle's edges",
+          "[io][mesh]") {
+  const Cdt_ids cdt = load("four_clusters.poly", 300, 1);
+  const Bvd_ids bvd(cdt);
+  const Mesh mesh(bvd);
+  std::ostringstream disv, vtu, node, ele, edge;
+  CVT_2::IO::write_disv(disv, mesh);
+  CVT_2::IO::write_vtu(vtu, mesh);
+  CVT_2::IO::write_triangle(node, ele, edge, cdt);
+  CHECK_THAT(disv.str(), Catch::Contains("NCPL " + std::to_string(mesh.number_of_cells())));
+  CHECK_THAT(vtu.str(),
+             Catch::Contains("NumberOfCells=\"" + std::to_string(mesh.number_of_cells())));
+  // Each CELL2D line: clockwise (negative shoelace), closed, vertices shared with neighbors.
+  std::istringstream lines(disv.str());
+  std::map<std::size_t, Point> vertices;
+  std::string line, block;
+  std::size_t cells = 0;
+  while (std::getline(lines, line)) {
+    std::istringstream t(line);
+    std::string w;
+    t >> w;
+    if (w == "BEGIN") t >> block;
+    if (w == "BEGIN" || w == "END" || w.empty()) continue;
+    if (block == "VERTICES") {
+      double x, y;
+      t >> x >> y;
+      vertices[std::stoul(w)] = Point(x, y);
+    } else if (block == "CELL2D") {
+      double xc, yc;
+      std::size_t n;
+      t >> xc >> yc >> n;
+      std::vector<Point> ring;
+      for (std::size_t i = 0, v; i < n && t >> v; ++i) ring.push_back(vertices.at(v));
+      REQUIRE(ring.size() == n);
+      CHECK(ring.front() == ring.back());
+      ring.pop_back();
+      CHECK(CGAL::polygon_area_2(ring.begin(), ring.end(), K()) < 0);
+      ++cells;
+    }
+  }
+  CHECK(cells == mesh.number_of_cells());
+  std::size_t triangles = 0;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    triangles += f->is_inside_domain() ? 1 : 0;
+  CHECK_THAT(ele.str(), Catch::StartsWith(std::to_string(triangles) + " 3 0\n"));
+}
