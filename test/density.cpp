@@ -27,14 +27,18 @@ using Sizing = CVT_2::Boundary_lipschitz_sizing_2<K>;
 const double not_a_number = std::numeric_limits<double>::quiet_NaN();
 const double infinity = std::numeric_limits<double>::infinity();
 
-// The boundary as the test sees it: every constrained edge with a domain face on a side.
+// The boundary as the test sees it: every constrained edge with a domain face on a side, from
+// its lexicographically smaller end (a distance to a segment rounds differently from the
+// distance to its reverse; the sizing orients them so).
 std::vector<Segment> boundary_segments(const Cdt& cdt) {
   std::vector<Segment> s;
   for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
     const Cdt::Face_handle f = e->first, g = f->neighbor(e->second);
     if (cdt.is_constrained(*e) && ((!cdt.is_infinite(f) && f->is_inside_domain()) ||
-                                   (!cdt.is_infinite(g) && g->is_inside_domain())))
-      s.push_back(cdt.segment(*e));
+                                   (!cdt.is_infinite(g) && g->is_inside_domain()))) {
+      const Segment t = cdt.segment(*e);
+      s.push_back(t.source() < t.target() ? t : t.opposite());
+    }
   }
   return s;
 }
@@ -317,6 +321,38 @@ TEST_CASE("the sizing of a triangulation uses its domain's boundary and inner co
   const Sizing by_length(cdt, 0.5);
   CHECK(by_length(Point(2, 1)) == Approx(2.0).epsilon(1e-15));
   CHECK(by_length(Point(5, 5)) == Approx(2.5).epsilon(1e-15));
+}
+
+TEST_CASE(
+    "regression: the sizing of a triangulation does not depend on where its faces lie in "
+    "memory",
+    "[density][sizing][regression]") {
+  // The edge iterator visits an edge from the face of smaller address, and a segment's distance
+  // rounds differently from its reverse's: the field of the same domain differed in the last
+  // bits from one process to another (the Python module against the cvt2 program, say).
+  // Triangulation b reuses the faces that 3000 vertices removed in random order freed: its faces
+  // lie in memory in another order than a's.
+  Domain a, b;
+  std::mt19937_64 rng(3);
+  std::vector<Cdt::Vertex_handle> scaffold;
+  for (std::size_t i = 0; i < 3000; ++i)
+    scaffold.push_back(b.cdt.insert(Point(uniform(rng, 0, 1), uniform(rng, 0, 1))));
+  std::shuffle(scaffold.begin(), scaffold.end(), rng);
+  for (const auto v : scaffold) b.cdt.remove(v);
+  load_domain(a, "earcut_dude.poly");
+  load_domain(b, "earcut_dude.poly");
+  std::vector<const void*> faces_b;
+  for (auto f = b.cdt.finite_faces_begin(); f != b.cdt.finite_faces_end(); ++f)
+    faces_b.push_back(&*f);
+  REQUIRE(!std::is_sorted(faces_b.begin(), faces_b.end()));  // another layout indeed
+  for (const std::optional<double> size : {std::optional<double>(), std::optional<double>(2.5)}) {
+    const Sizing mu_a(a.cdt, 0.2, size), mu_b(b.cdt, 0.2, size);
+    CHECK(mu_a.segments() == mu_b.segments());
+    const std::vector<Point> points = random_points_in_domain(a.cdt, 2000, 5);
+    std::size_t different = 0;
+    for (const Point& p : points) different += mu_a(p) == mu_b(p) ? 0 : 1;
+    CHECK(different == 0);
+  }
 }
 
 TEST_CASE("the boundary sizing scales with the domain: mu(s x + o) = s mu(x)",

@@ -102,14 +102,23 @@ class Boundary_lipschitz_sizing_2 {
                   "void set_inside_domain(bool), bool is_blinded() const, "
                   "Edge blinding_edge() const, void set_blinding_edge(const Edge&), "
                   "void clear_blinding()");
+    // The triangulation's edge iterator visits an edge from the face of smaller address: the
+    // segments are oriented and ordered by their points instead, so that the field (whose
+    // distances round differently for a segment and its reverse) does not depend on where the
+    // faces lie in memory.
     std::vector<Segment_2> segments;
     for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
       if (!cdt.is_constrained(*e)) continue;
       const auto f = e->first, g = f->neighbor(e->second);
       if ((!cdt.is_infinite(f) && f->is_inside_domain()) ||
-          (!cdt.is_infinite(g) && g->is_inside_domain()))
-        segments.push_back(cdt.segment(*e));
+          (!cdt.is_infinite(g) && g->is_inside_domain())) {
+        const Segment_2 s = cdt.segment(*e);
+        segments.push_back(s.source() < s.target() ? s : s.opposite());
+      }
     }
+    std::sort(segments.begin(), segments.end(), [](const Segment_2& a, const Segment_2& b) {
+      return a.source() < b.source() || (a.source() == b.source() && a.target() < b.target());
+    });
     initialize(std::move(segments), k, size);
   }
 
@@ -183,7 +192,8 @@ class Boundary_lipschitz_sizing_2 {
   }
 
   FT lipschitz_constant() const { return m_data->k; }  ///< \f$k\f$
-  /// the boundary segments, in the order of the input (of the triangulation's edges)
+  /// the boundary segments, in the order of the input; from a triangulation, each from its
+  /// lexicographically smaller end, in lexicographic order
   const std::vector<Segment_2>& segments() const { return m_data->segments; }
   /// \f$\mathrm{size}(s)\f$ of each segment, in the order of `segments()`
   const std::vector<FT>& sizes() const { return m_data->sizes; }
