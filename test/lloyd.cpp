@@ -13,6 +13,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -356,6 +357,120 @@ TEST_CASE("lloyd_optimize_2 takes number_of_threads and gives the same result wi
   load_square(d);
   CHECK_THROWS_AS(CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::number_of_threads(-1)),
                   std::invalid_argument);
+}
+
+namespace {
+
+// A density with the batch member of DensityFunction_2, around a function of a point: counts
+// its batches and their points (from several threads at once).
+template <class F>
+struct Batch_density {
+  F f;
+  std::atomic<std::size_t>* batches;
+  std::atomic<std::size_t>* points;
+  std::ptrdiff_t extra = 0;  // values added (> 0) or left out (< 0), to break the contract
+  double operator()(const Point& p) const { return f(p); }
+  void evaluate(const std::vector<Point>& at, std::vector<double>& values) const {
+    ++*batches;
+    *points += at.size();
+    for (const Point& p : at) values.push_back(f(p));
+    if (extra < 0) values.resize(values.size() - std::size_t(-extra));
+    if (extra > 0) values.resize(values.size() + std::size_t(extra), 1.0);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("a density evaluated in batches gives the same bits as point by point", "[lloyd]") {
+  const auto rho = [](const Point& p) { return 1.0 + 4.0 * std::exp(-p.x() * p.x() / 4000); };
+  std::atomic<std::size_t> batches{0}, points{0};
+  using Batch = Batch_density<decltype(rho)>;
+  const Batch batch{rho, &batches, &points};
+  STATIC_REQUIRE(CVT_2::has_batch_evaluation_v<Batch, K>);
+  STATIC_REQUIRE(!CVT_2::has_batch_evaluation_v<decltype(rho), K>);
+  SECTION("random points") {
+    Domain d;
+    load_domain(d, "us_massachusetts_counties.poly");
+    const auto np = CVT_2::parameters::random_seed(3);
+    const auto a = CVT_2::random_points_in_domain_2(d.cdt, 5000, np.density(rho));
+    const auto b = CVT_2::random_points_in_domain_2(d.cdt, 5000, np.density(batch));
+    CHECK(a == b);
+    CHECK(batches == 1);
+    CHECK(points >= 3 * 10000);  // three midpoints of each of at least 10^4 sub-triangles
+  }
+  SECTION("Lloyd's and L-BFGS's evaluations, one batch a chunk of cells, any threads") {
+    for (const bool lbfgs : {false, true}) {
+      std::vector<std::vector<double>> histories;
+      std::vector<std::vector<Point>> finals;
+      for (const int threads : {1, 2, -1}) {  // -1: point by point
+        CAPTURE(lbfgs, threads);
+        Domain d;
+        load_domain(d, "us_massachusetts_counties.poly");
+        insert_random_points(d, 20000, 4);
+        const Domain_marks marks = snapshot_marks(d.cdt);
+        batches = 0;
+        const auto np =
+            CVT_2::parameters::number_of_iterations(4).move_ratio_bound(0).number_of_threads(
+                threads < 0 ? 2 : threads);
+        const auto run = [&](const auto& parameters) {
+          return lbfgs ? CVT_2::lbfgs_optimize_2(d.cdt, parameters)
+                       : CVT_2::lloyd_optimize_2(d.cdt, parameters);
+        };
+        const auto r = threads < 0 ? run(np.density(rho)) : run(np.density(batch));
+        if (threads < 0) {
+          CHECK(batches == 0);
+        } else {
+          // One batch a chunk of 4096 faces an evaluation.
+          const std::size_t chunks = CVT_2::internal::Face_chunks<Cdt>(d.cdt).size();
+          CHECK(batches == chunks * r.number_of_evaluations);
+        }
+        check_invariants(d.cdt, marks, 50);
+        histories.push_back(r.energy_history);
+        std::vector<Point> final;
+        for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v)
+          final.push_back(v->point());
+        finals.push_back(final);
+      }
+      CHECK(histories[1] == histories[0]);
+      CHECK(histories[2] == histories[0]);
+      CHECK(finals[1] == finals[0]);
+      CHECK(finals[2] == finals[0]);
+    }
+  }
+}
+
+TEST_CASE("a batch density's values are checked: count, sign, finiteness, naming the point",
+          "[lloyd]") {
+  std::atomic<std::size_t> batches{0}, points{0};
+  const auto message = [](auto&& f) -> std::string {
+    try {
+      f();
+    } catch (const CVT_2::Domain_error& e) {
+      return e.what();
+    }
+    return "no exception";
+  };
+  const auto evaluate = [&](const auto& rho) {
+    return message([&] {
+      Domain d;
+      load_square(d);
+      insert_random_points(d, 3000, 9);
+      CVT_2::Lloyd_optimizer_2<Cdt, std::decay_t<decltype(rho)>> lloyd(d.cdt, rho);
+      lloyd.evaluate(10);
+    });
+  };
+  const auto negative = [](const Point& p) { return p.x() < 0.5 ? 1.0 : -1.0; };
+  const auto one = [](const Point&) { return 1.0; };
+  const std::string pointwise = evaluate(negative);
+  CHECK_THAT(pointwise, Catch::Contains("the density is -1"));
+  CHECK(evaluate(Batch_density<decltype(negative)>{negative, &batches, &points}) == pointwise);
+  CHECK_THAT(evaluate(Batch_density<decltype(one)>{one, &batches, &points, -1}),
+             Catch::Matches("the density's batch evaluation gave [0-9]+ values for [0-9]+ points"));
+  CHECK_THAT(evaluate(Batch_density<decltype(one)>{one, &batches, &points, 2}),
+             Catch::Contains("batch evaluation gave"));
+  const auto nan = [](const Point& p) { return p.y() < 0.5 ? 1.0 : std::nan(""); };
+  CHECK_THAT(evaluate(Batch_density<decltype(nan)>{nan, &batches, &points}),
+             Catch::Contains("the density is nan at"));
 }
 
 TEST_CASE("a density error from a worker thread is the one a serial run reports", "[lloyd]") {

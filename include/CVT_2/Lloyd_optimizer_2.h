@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -33,16 +34,63 @@
 namespace CVT_2 {
 namespace internal {
 
+// A density value that is not positive and finite, at p.
+template <class FT, class Point_2>
+Domain_error bad_density_error(const FT& r, const Point_2& p) {
+  return Domain_error("the density is " + std::to_string(CGAL::to_double(r)) + " at " +
+                      to_string(p) + ": it must be positive and finite");
+}
+
 // Checks each value of a user density: a value that is not positive and finite names the point.
 template <class Density, class Point_2>
 struct Checked_density {
   const Density& rho;
   auto operator()(const Point_2& p) const {
     const auto r = rho(p);
-    if (!(r > 0) || !std::isfinite(CGAL::to_double(r)))
-      throw Domain_error("the density is " + std::to_string(CGAL::to_double(r)) + " at " +
-                         to_string(p) + ": it must be positive and finite");
+    if (!(r > 0) || !std::isfinite(CGAL::to_double(r))) throw bad_density_error(r, p);
     return r;
+  }
+};
+
+// The values of a batch density (DensityFunction_2::evaluate()) at `points`, checked as
+// Checked_density checks them, and their count.
+template <class Density, class Point_2, class FT>
+void evaluate_in_batch(const Density& rho, const std::vector<Point_2>& points,
+                       std::vector<FT>& values) {
+  values.clear();
+  rho.evaluate(points, values);
+  if (values.size() != points.size())
+    throw Domain_error("the density's batch evaluation gave " + std::to_string(values.size()) +
+                       " values for " + std::to_string(points.size()) + " points");
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!(values[i] > 0) || !std::isfinite(CGAL::to_double(values[i])))
+      throw bad_density_error(values[i], points[i]);
+}
+
+// The two quadrature passes over a chunk of cells with a batch density: the first records the
+// points the quadrature asks for (its moments, with a density of 1, are not used), the second
+// gives it the batch's values at them, in the same order.
+template <class Point_2, class FT>
+struct Recording_density {
+  std::vector<Point_2>* points;
+  FT operator()(const Point_2& p) const {
+    points->push_back(p);
+    return FT(1);
+  }
+};
+
+template <class Point_2, class FT>
+struct Replaying_density {
+  const std::vector<Point_2>* points;
+  const std::vector<FT>* values;
+  std::size_t* next;
+  FT operator()(const Point_2& p) const {
+    const std::size_t i = (*next)++;
+    if (i >= points->size() || !((*points)[i] == p))
+      throw std::logic_error(
+          "a density evaluated in batches needs a quadrature that asks for the same points, in "
+          "the same order, whatever the density's values");
+    return (*values)[i];
   }
 };
 
@@ -70,7 +118,8 @@ class Lbfgs_optimizer_2;
 /// stay valid; constrained vertices never move.
 ///
 /// \tparam CDT as for `Bounded_voronoi_diagram_2`, with its domain marked.
-/// \tparam Density a model of `DensityFunction_2`.
+/// \tparam Density a model of `DensityFunction_2`; one with the optional batch member is
+///         evaluated once a chunk of cells (the same bits).
 /// \tparam Quadrature a model of `CellQuadrature_2`; by default exact formulas for a uniform
 ///         density, the paper's midpoint rule otherwise.
 /// \tparam Traits a model of `BvdTraits_2` for the diagram; by default `Bvd_traits_2`.
@@ -184,6 +233,13 @@ class Lloyd_optimizer_2 {
 
   template <class Cell>
   Cell_figures cell_figures(Vertex_handle v, const Cell& cell, std::size_t resolution) const;
+  Cell_figures cell_figures(Vertex_handle v, const Cell_points& points, bool is_free,
+                            const Cell_moments_2<Kernel>& m) const;
+  template <class Cell>
+  static bool cell_points(const Cell& cell, Cell_points& points);
+  template <class Face_iterator>
+  void add_cells_in_batch(Face_iterator first, Face_iterator last, std::size_t resolution,
+                          Chunk& sums) const;
   void reduce_chunks();
   Cell_moments_2<Kernel> moments(const Point_2& x, const Cell_points& points,
                                  std::size_t resolution) const;
@@ -217,10 +273,14 @@ auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::evaluate(std::size_t r
   m_chunk_sums.assign(m_chunks.size(), Chunk());
   m_chunks.for_each(
       [&](std::size_t c, auto first, auto last) {
-        internal::for_each_cell_in_faces(m_diagram, first, last,
-                                         [&](Vertex_handle v, const auto& cell) {
-                                           m_chunk_sums[c].add(cell_figures(v, cell, resolution));
-                                         });
+        if constexpr (has_batch_evaluation_v<Density, Kernel>) {
+          add_cells_in_batch(first, last, resolution, m_chunk_sums[c]);
+        } else {
+          internal::for_each_cell_in_faces(m_diagram, first, last,
+                                           [&](Vertex_handle v, const auto& cell) {
+                                             m_chunk_sums[c].add(cell_figures(v, cell, resolution));
+                                           });
+        }
       },
       m_number_of_threads);
   m_evaluation = Evaluation();
@@ -237,13 +297,72 @@ auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::cell_figures(Vertex_ha
                                                                        std::size_t resolution) const
     -> Cell_figures {
   Cell_points points;
-  Cell_figures f;
-  f.is_free = true;
+  const bool is_free = cell_points(cell, points);
+  return cell_figures(v, points, is_free, moments(v->point(), points, resolution));
+}
+
+// The points of `cell` into `points`; whether its generator is free (not one of them).
+template <class CDT, class Density, class Quadrature, class Traits>
+template <class Cell>
+bool Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::cell_points(const Cell& cell,
+                                                                      Cell_points& points) {
+  bool is_free = true;
   for (const auto& c : cell) {
     points.push_back(c.point);
-    f.is_free = f.is_free && c.type != Diagram::Cell_vertex::GENERATOR;
+    is_free = is_free && c.type != Diagram::Cell_vertex::GENERATOR;
   }
-  const Cell_moments_2<Kernel> m = moments(v->point(), points, resolution);
+  return is_free;
+}
+
+// The cells of the faces [first, last) with a batch density (DensityFunction_2::evaluate()):
+// their quadrature points recorded in a first pass, the density evaluated at all of them in one
+// call, then the quadrature again on those values. The same bits as point by point.
+template <class CDT, class Density, class Quadrature, class Traits>
+template <class Face_iterator>
+void Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::add_cells_in_batch(Face_iterator first,
+                                                                             Face_iterator last,
+                                                                             std::size_t resolution,
+                                                                             Chunk& sums) const {
+  struct Stored_cell {
+    Vertex_handle v;
+    bool is_free;
+    std::size_t end;  // of its points in `vertices`
+  };
+  std::vector<Stored_cell> cells;
+  std::vector<Point_2> vertices, asked;
+  std::vector<FT> values;
+  const internal::Recording_density<Point_2, FT> record{&asked};
+  internal::for_each_cell_in_faces(m_diagram, first, last, [&](Vertex_handle v, const auto& cell) {
+    Cell_points points;
+    const bool is_free = cell_points(cell, points);
+    m_quadrature(v->point(), points, record, resolution);
+    vertices.insert(vertices.end(), points.begin(), points.end());
+    cells.push_back({v, is_free, vertices.size()});
+  });
+  internal::evaluate_in_batch(m_density, asked, values);
+  std::size_t next = 0, begin = 0;
+  const internal::Replaying_density<Point_2, FT> replay{&asked, &values, &next};
+  for (const Stored_cell& c : cells) {
+    const Cell_points points(vertices.begin() + std::ptrdiff_t(begin),
+                             vertices.begin() + std::ptrdiff_t(c.end));
+    begin = c.end;
+    sums.add(cell_figures(c.v, points, c.is_free,
+                          m_quadrature(c.v->point(), points, replay, resolution)));
+  }
+  if (next != asked.size())
+    throw std::logic_error(
+        "a density evaluated in batches needs a quadrature that asks for the same points, in "
+        "the same order, whatever the density's values");
+}
+
+// The figures of the cell `points` of v from its moments m: checked, and for a free generator
+// its centroid and move ratio.
+template <class CDT, class Density, class Quadrature, class Traits>
+auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::cell_figures(
+    Vertex_handle v, const Cell_points& points, bool is_free, const Cell_moments_2<Kernel>& m) const
+    -> Cell_figures {
+  Cell_figures f;
+  f.is_free = is_free;
   f.mass = CGAL::to_double(m.mass);
   f.energy = CGAL::to_double(m.energy);
   const double first2 = CGAL::to_double(m.first_moment.squared_length());

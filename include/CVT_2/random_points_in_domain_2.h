@@ -3,6 +3,7 @@
 #ifndef CVT_2_RANDOM_POINTS_IN_DOMAIN_2_H
 #define CVT_2_RANDOM_POINTS_IN_DOMAIN_2_H
 
+#include <CVT_2/Concepts/DensityFunction_2.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/parameters.h>
 
@@ -14,6 +15,8 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CVT_2 {
@@ -139,9 +142,10 @@ const Point_2& nearest_vertex(const std::array<Point_2, 3>& t, const Point_2& p)
 /// unit area in 2D: sampling with \f$\rho^{1/2}\f$ starts Lloyd iteration close to it.
 /// \param cdt a triangulation whose domain is marked
 /// \param n how many points
-/// \param np optional: `density(rho)` (default uniform), or `sizing_field(mu)` for the density
-///        \f$1/\mu^2\f$ that starts Lloyd iteration under `sizing_field(mu)` (\f$\rho =
-///        1/\mu^4\f$) close to its result; `random_seed(s)` (default 0).
+/// \param np optional: `density(rho)` (default uniform; a density with the batch member of
+///        `DensityFunction_2` is called once, for all sub-triangles), or `sizing_field(mu)`
+///        for the density \f$1/\mu^2\f$ that starts Lloyd iteration under `sizing_field(mu)`
+///        (\f$\rho = 1/\mu^4\f$) close to its result; `random_seed(s)` (default 0).
 /// \throws Domain_error if the domain is empty; the density's own errors.
 template <class CDT, class NP = No_named_parameters>
 std::vector<typename CDT::Point_2> random_points_in_domain_2(
@@ -164,11 +168,33 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
     cut = internal::bisect_triangles(domain, domain_area / double(std::max<std::size_t>(n, 10000)),
                                      face_of);
     pieces = &cut;
-    for (const Triangle& t : cut) {
-      double s = 0;
-      for (int i = 0; i < 3; ++i) s += CGAL::to_double(rho(CGAL::midpoint(t[i], t[(i + 1) % 3])));
-      total += domain.area(t) * s / 3;
-      cumulative.push_back(total);
+    using Rho = std::decay_t<decltype(rho)>;
+    if constexpr (has_batch_evaluation_v<Rho, typename CDT::Geom_traits>) {
+      // A density evaluated in batches (DensityFunction_2::evaluate()): one call for all the
+      // midpoints, summed as below.
+      std::vector<Point_2> midpoints;
+      midpoints.reserve(3 * cut.size());
+      for (const Triangle& t : cut)
+        for (int i = 0; i < 3; ++i) midpoints.push_back(CGAL::midpoint(t[i], t[(i + 1) % 3]));
+      std::vector<typename CDT::Geom_traits::FT> values;
+      rho.evaluate(midpoints, values);
+      if (values.size() != midpoints.size())
+        throw Domain_error("random points: the density's batch evaluation gave " +
+                           std::to_string(values.size()) + " values for " +
+                           std::to_string(midpoints.size()) + " points");
+      for (std::size_t j = 0; j < cut.size(); ++j) {
+        double s = 0;
+        for (int i = 0; i < 3; ++i) s += CGAL::to_double(values[3 * j + std::size_t(i)]);
+        total += domain.area(cut[j]) * s / 3;
+        cumulative.push_back(total);
+      }
+    } else {
+      for (const Triangle& t : cut) {
+        double s = 0;
+        for (int i = 0; i < 3; ++i) s += CGAL::to_double(rho(CGAL::midpoint(t[i], t[(i + 1) % 3])));
+        total += domain.area(t) * s / 3;
+        cumulative.push_back(total);
+      }
     }
   };
   static_assert(!(has_parameter<NP, density_t> && has_parameter<NP, sizing_field_t>),

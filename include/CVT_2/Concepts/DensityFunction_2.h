@@ -5,6 +5,7 @@
 
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #ifdef DOXYGEN_RUNNING
 // A concept is not a C++ type; as in CGAL, Doxygen sees it as a class that lists the
@@ -38,6 +39,21 @@ class DensityFunction_2 {
   /// `CVT_2::Sizing_field_density_2`) provides one: near a point only a few boundary segments
   /// can be the nearest.
   Restriction restrict_to_disk(const Point_2& center, const FT& radius) const;
+
+  /// Optional: the densities at many points at once, `values[i]` = \f$\rho\f$(`points[i]`), for
+  /// a density that is cheaper by the batch than point by point (one that calls an
+  /// interpreter, say: the Python module's callables). When `CVT_2::has_batch_evaluation` says
+  /// it exists, `Lloyd_optimizer_2` (and so both optimizers) evaluates each chunk of cells in two
+  /// passes: the quadrature first runs with a density that records the points it asks for, then
+  /// this member is called once for the whole chunk, then the quadrature runs again on the
+  /// recorded values, which it asks for in the same order. `random_points_in_domain_2()` calls it
+  /// once for all its sub-triangles. The result is the same, bit for bit, as with `operator()`
+  /// at each point; the quadrature must ask for the same points whatever the values (the
+  /// library's quadratures do). It is called from several threads at once, each with its own
+  /// chunk, and must leave `values` with exactly one value a point (the optimizer checks the
+  /// count, and that each value is positive and finite, naming the point). `restrict_to_disk()`
+  /// is not used then.
+  void evaluate(const std::vector<Point_2>& points, std::vector<FT>& values) const;
 };
 #endif  // DOXYGEN_RUNNING
 
@@ -90,6 +106,27 @@ struct has_restrict_to_disk<
 /// `has_restrict_to_disk<F, K>::value`.
 template <class F, class K>
 inline constexpr bool has_restrict_to_disk_v = has_restrict_to_disk<F, K>::value;
+
+/// \ingroup PkgCvt2Concepts
+/// Whether the density function `D` has the optional batch member of `DensityFunction_2`:
+/// `evaluate(const std::vector<K::Point_2>& points, std::vector<K::FT>& values) const`. A
+/// `std::true_type` or `std::false_type`.
+template <class D, class K, class = void>
+struct has_batch_evaluation : std::false_type {};
+
+/// \cond SKIP_IN_MANUAL
+template <class D, class K>
+struct has_batch_evaluation<D, K,
+                            std::void_t<decltype(std::declval<const D&>().evaluate(
+                                std::declval<const std::vector<typename K::Point_2>&>(),
+                                std::declval<std::vector<typename K::FT>&>()))>> : std::true_type {
+};
+/// \endcond
+
+/// \ingroup PkgCvt2Concepts
+/// `has_batch_evaluation<D, K>::value`.
+template <class D, class K>
+inline constexpr bool has_batch_evaluation_v = has_batch_evaluation<D, K>::value;
 
 }  // namespace CVT_2
 
