@@ -2,6 +2,7 @@
 // Readers and domains: .poly parsing, clear errors with file and line, Triangle's domain rule.
 #include "support/support.h"
 
+#include <CVT_2/IO/read_domain.h>
 #include <CVT_2/IO/read_points.h>
 #include <CVT_2/IO/read_wkt.h>
 #include <CVT_2/random_points_in_domain_2.h>
@@ -441,4 +442,33 @@ TEST_CASE("the readers report the points that repeat earlier ones, which the tri
   Cdt cdt;
   CVT_2::IO::insert_poly(cdt, poly);
   CHECK(cdt.number_of_vertices() == 4);
+}
+
+TEST_CASE("read_domain_data then insert_domain builds what read_domain builds, again and again",
+          "[io]") {
+  const std::string file = GENERATE(as<std::string>{}, "four_clusters.poly", "four_clusters.wkt",
+                                    "us_kentucky_counties.geojson");
+  CAPTURE(file);
+  const auto vertices_and_marks = [](const Cdt& cdt) {
+    std::vector<Point> points;
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      points.push_back(v->point());
+    std::vector<bool> marks;
+    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
+      marks.push_back(f->is_inside_domain());
+    return std::make_pair(points, marks);
+  };
+  Cdt reference;
+  const CVT_2::IO::Domain_file read = CVT_2::IO::read_domain(data_path(file), reference);
+  const auto data = CVT_2::IO::read_domain_data<K>(data_path(file));
+  CHECK(data.file.format == read.format);
+  CHECK(data.file.number_of_generators == read.number_of_generators);
+  CHECK(data.file.repeated == read.repeated);
+  for (int i = 0; i < 2; ++i) {
+    Cdt cdt;
+    CVT_2::IO::insert_domain(cdt, data);
+    CHECK(vertices_and_marks(cdt) == vertices_and_marks(reference));
+  }
+  CHECK_THROWS_WITH(CVT_2::IO::read_domain_data<K>(data_path("four_clusters_points.txt")),
+                    Catch::Contains("unknown domain format"));
 }

@@ -1,5 +1,6 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// read_domain(): a domain from a .poly, .wkt or .geojson file into a triangulation.
+// read_domain(): a domain from a .poly, .wkt or .geojson file into a triangulation, at once or
+// in two steps (read_domain_data(), insert_domain()).
 #ifndef CVT_2_IO_READ_DOMAIN_H
 #define CVT_2_IO_READ_DOMAIN_H
 
@@ -10,6 +11,7 @@
 
 #include <cstddef>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace CVT_2 {
@@ -27,53 +29,87 @@ struct Domain_file {
 };
 
 /// \ingroup PkgCvt2IO
-/// Reads the domain in `filename` into `cdt`, by the file's extension: Triangle's `.poly`
-/// (`read_poly()`, `insert_poly()`), `.wkt` (`read_wkt()`, `insert_wkt()`) or `.geojson` and
-/// `.json` (`read_geojson()`, `insert_wkt()`): constraints, the domain marked, and the file's
-/// free vertices or points inserted as generators.
-/// \throws Parse_error or Domain_error naming the file and the place; Parse_error for a file
-///         that cannot be opened or an unknown extension.
-template <class CDT>
-Domain_file read_domain(const std::string& filename, CDT& cdt) {
-  using K = typename CDT::Geom_traits;
+/// A domain as a file describes it, before it is inserted into a triangulation: what
+/// `read_domain()` reads, kept for callers that build several triangulations of one domain
+/// (`insert_domain()` inserts it). The Python module builds these from arrays and shapely
+/// geometries too.
+template <class K>
+struct Domain_data {
+  Domain_file file;  ///< the file, its format, its generators and repeated points
+  /// the `.poly` graph, or the polygons, lines and points of a `.wkt` or `.geojson` file
+  std::variant<Poly_data<typename K::Point_2>, Wkt_data<K>> description;
+};
+
+/// \ingroup PkgCvt2IO
+/// Reads the domain in `filename`, by the file's extension: Triangle's `.poly` (`read_poly()`),
+/// `.wkt` (`read_wkt()`) or `.geojson` and `.json` (`read_geojson()`).
+/// \throws Parse_error naming the file and the place, also for a file that cannot be opened or
+///         an unknown extension.
+template <class K>
+Domain_data<K> read_domain_data(const std::string& filename) {
   const auto ends_with = [&filename](const std::string& suffix) {
     return filename.size() >= suffix.size() &&
            filename.compare(filename.size() - suffix.size(), suffix.size(), suffix) == 0;
   };
-  Domain_file d;
-  d.source = filename;
+  Domain_data<K> d;
+  Domain_file& f = d.file;
+  f.source = filename;
   if (ends_with(".poly")) {
-    const auto poly = read_poly<typename CDT::Point_2>(filename);
-    insert_poly(cdt, poly);
+    const auto& poly = d.description.template emplace<0>(read_poly<typename K::Point_2>(filename));
     std::vector<bool> on_segment(poly.vertices.size(), false);
     for (const auto& s : poly.segments) on_segment[s[0]] = on_segment[s[1]] = true;
-    for (const bool b : on_segment) d.number_of_generators += b ? 0 : 1;
-    d.format = "poly";
+    for (const bool b : on_segment) f.number_of_generators += b ? 0 : 1;
+    f.format = "poly";
     for (const auto& [line, earlier] : poly.repeated_vertices)
-      d.repeated.push_back(filename + ":" + std::to_string(line) +
+      f.repeated.push_back(filename + ":" + std::to_string(line) +
                            ": this vertex repeats the one on line " + std::to_string(earlier));
     return d;
   }
-  Wkt_data<K> w;
+  Wkt_data<K>& w = d.description.template emplace<1>();
   if (ends_with(".wkt")) {
     w = read_wkt<K>(filename);
-    d.format = "wkt";
+    f.format = "wkt";
   } else if (ends_with(".geojson") || ends_with(".json")) {
     w = read_geojson<K>(filename);
-    d.format = "geojson";
+    f.format = "geojson";
   } else {
     internal::open_input(filename);  // a missing file says so first
     throw Parse_error(filename, 0,
                       "unknown domain format: expected a Triangle .poly, a .wkt or a .geojson "
                       "file");
   }
-  insert_wkt(cdt, w);
-  d.number_of_generators = w.points.size();
+  f.number_of_generators = w.points.size();
   for (const auto& [item, earlier] : w.repeated_points)
-    d.repeated.push_back(
+    f.repeated.push_back(
         w.where(item) + "this point repeats the one of " +
         (w.item_names.empty() ? "line " + std::to_string(earlier) : w.item_names[earlier - 1]));
   return d;
+}
+
+/// \ingroup PkgCvt2IO
+/// Inserts the domain `d` into `cdt` (`insert_poly()` or `insert_wkt()`): constraints, the
+/// domain marked, and the description's free vertices or points inserted as generators.
+/// \throws Domain_error naming the file and the place.
+template <class CDT>
+void insert_domain(CDT& cdt, const Domain_data<typename CDT::Geom_traits>& d) {
+  if (const auto* poly = std::get_if<0>(&d.description))
+    insert_poly(cdt, *poly);
+  else
+    insert_wkt(cdt, std::get<1>(d.description));
+}
+
+/// \ingroup PkgCvt2IO
+/// Reads the domain in `filename` into `cdt`, by the file's extension: Triangle's `.poly`
+/// (`read_poly()`, `insert_poly()`), `.wkt` (`read_wkt()`, `insert_wkt()`) or `.geojson` and
+/// `.json` (`read_geojson()`, `insert_wkt()`): constraints, the domain marked, and the file's
+/// free vertices or points inserted as generators. `read_domain_data()` then `insert_domain()`.
+/// \throws Parse_error or Domain_error naming the file and the place; Parse_error for a file
+///         that cannot be opened or an unknown extension.
+template <class CDT>
+Domain_file read_domain(const std::string& filename, CDT& cdt) {
+  const auto d = read_domain_data<typename CDT::Geom_traits>(filename);
+  insert_domain(cdt, d);
+  return d.file;
 }
 
 }  // namespace IO
