@@ -19,7 +19,7 @@ fi
 rm -rf "$probe"
 
 CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCVT_2_BUILD_FUZZERS=ON \
-  -DCVT_2_BUILD_TESTS=OFF -DCVT_2_BUILD_EXAMPLES=OFF > /dev/null
+  -DCVT_2_BUILD_TESTS=OFF -DCVT_2_BUILD_EXAMPLES=OFF -DCVT_2_BUILD_PYTHON=OFF > /dev/null
 mkdir -p "$build/logs"
 if ! cmake --build "$build" -j 2 > "$build/logs/build.log" 2>&1; then
   tail -n 40 "$build/logs/build.log"

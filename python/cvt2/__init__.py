@@ -1,0 +1,539 @@
+# Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+"""cvt2: centroidal Voronoi tessellations of 2D domains with constraints.
+
+The Python face of the CVT_2 C++ library and its ``cvt2`` program: the same algorithms, called
+the same way, so that the same domain, points and options give the same bits.
+
+A *domain* is a polygon with holes and inner constraints (lines that cells do not cross),
+read from a file (:meth:`Domain.from_file`), from shapely geometries
+(:meth:`Domain.from_shapely`) or from Triangle's arrays (:class:`Domain`). Its *generators* are
+the points given, plus the domain's own vertices (constrained generators, which never move).
+
+- :func:`random_points` draws initial generators, as ``cvt2 DOMAIN -n N --seed S`` does;
+- :func:`optimize` moves them to a centroidal Voronoi tessellation by L-BFGS or Lloyd
+  iteration, as ``cvt2`` does, under a uniform, automatic (``"lipschitz"``) or Python density;
+- :func:`bounded_voronoi` gives the bounded Voronoi diagram of a domain and points with the
+  names of ``scipy.spatial.Voronoi`` (``points``, ``vertices``, ``regions``, ``point_region``,
+  ``ridge_points``, ``ridge_vertices``), no -1 anywhere, and what scipy lacks: the constraint
+  under each ridge, cell areas and centroids, valid shapely geometries, GeoJSON, VTU and
+  MODFLOW 6 DISV files.
+
+Errors in the input raise :class:`ParseError` or :class:`DomainError` (both ValueError) with the
+library's message, which names the file and line or the row of the offending item.
+
+Example::
+
+    import cvt2
+    from shapely.geometry import Polygon
+    domain = cvt2.Domain.from_shapely(Polygon([(0, 0), (1, 0), (1, 1), (0, 1)]))
+    result = cvt2.optimize(domain, cvt2.random_points(domain, 500))
+    diagram = result.bounded_voronoi()
+    cells = diagram.to_shapely()
+"""
+
+from __future__ import annotations
+
+import errno
+import functools
+import os
+
+import numpy as np
+
+from . import _cvt2
+from ._cvt2 import DomainError, ParseError, __version__
+
+__all__ = [
+    "BoundedVoronoi",
+    "Domain",
+    "DomainError",
+    "OptimizeResult",
+    "ParseError",
+    "__version__",
+    "bounded_voronoi",
+    "optimize",
+    "random_points",
+]
+
+ParseError.__doc__ = (
+    "A domain file that cannot be read: the message says file:line: what (near 'token'); "
+    "attributes file, line (0: none) and token. A ValueError."
+)
+DomainError.__doc__ = (
+    "Input that does not make a valid domain or valid generators: crossing segments, a point "
+    "outside the domain or not finite, a density not positive; the message says where. "
+    "Attribute index: the row of the offending point, or None. A ValueError."
+)
+
+_HEXAGON_ENERGY = 5 / (18 * 3**0.5)  # E N / A^2 of the regular hexagonal tiling (Gersho)
+
+
+class Domain:
+    """A planar domain: polygons with holes, inner constraints (segments that cells do not
+    cross), and possibly generators of its own. It holds the description only: each call
+    (:func:`random_points`, :func:`optimize`, :func:`bounded_voronoi`) builds its own
+    triangulation from it, so a domain can be used any number of times.
+
+    ``Domain(vertices, segments, holes=None)`` takes the arrays of Triangle's ``.poly`` format,
+    as the ``triangle`` package does:
+
+    - ``vertices``: float array (V, 2); a vertex on no segment is a generator;
+    - ``segments``: integer array (S, 2), rows of vertex indices; the domain is what they
+      enclose (Triangle's rule: a face is in the domain unless it can be reached from outside or
+      from a hole point without crossing a segment), and segments inside it are inner
+      constraints;
+    - ``holes``: float array (H, 2), or None: one point inside each hole.
+
+    Errors name the row: ``<arrays>:ROW: segment (0, 0) - (1, 1) crosses ...`` (rows from 0).
+
+    Attributes: ``format`` (``"arrays"``, ``"poly"``, ``"wkt"``, ``"geojson"``, ``"shapely"``),
+    ``source``, ``area``, ``bounds`` (xmin, ymin, xmax, ymax), and the description as arrays:
+    ``vertices``, ``segments`` (what :attr:`BoundedVoronoi.ridge_constraint` indexes),
+    ``segment_items``, ``holes``, ``generators``.
+    """
+
+    def __init__(self, vertices, segments, holes=None):
+        self._impl = _cvt2.Domain.from_arrays(vertices, segments, holes)
+
+    @classmethod
+    def _wrap(cls, impl):
+        d = cls.__new__(cls)
+        d._impl = impl
+        return d
+
+    @classmethod
+    def from_file(cls, path) -> "Domain":
+        """The domain of a file, by its extension, as the ``cvt2`` program reads it:
+
+        - ``.poly``: Triangle's format (vertices, segments, holes; vertices on no segment are
+          generators);
+        - ``.wkt``: one geometry a line: POLYGON and MULTIPOLYGON are the domain (their union
+          minus their holes), LINESTRING and MULTILINESTRING inner constraints, POINT and
+          MULTIPOINT generators;
+        - ``.geojson`` (or ``.json``): the same by geometry type, in features.
+
+        Raises FileNotFoundError, or ParseError / DomainError naming the file and line or
+        feature.
+        """
+        path = os.fspath(path)
+        if not os.path.isfile(path):
+            raise FileNotFoundError(errno.ENOENT, "no such domain file", path)
+        return cls._wrap(_cvt2.Domain.from_file(path))
+
+    @classmethod
+    def from_shapely(cls, geometry, constraints=None) -> "Domain":
+        """The domain of a shapely geometry, as ``cvt2`` reads the same geometry from a WKT or
+        GeoJSON file (the same doubles give the same bits).
+
+        - ``geometry``: a Polygon or MultiPolygon (the union of its polygons minus their holes);
+          coordinates are taken as planar (project geographic data first); a third coordinate
+          is ignored.
+        - ``constraints``: None, or a list of LineString, LinearRing or MultiLineString: inner
+          constraints, which cells do not cross (county borders, faults, rivers). They may end
+          inside the domain, meet each other at their ends or run along the boundary, but not
+          cross each other or the boundary.
+
+        Errors name the geometry: ``<shapely>: constraints[2]: this geometry crosses itself or an
+        earlier one``. In :attr:`segment_items`, 0 is the polygon, k + 1 is ``constraints[k]``.
+        """
+        polygons = []
+        kind = getattr(geometry, "geom_type", None)
+        if kind is not None and geometry.is_empty:
+            raise DomainError("<shapely>: the domain is empty")
+        if kind == "Polygon":
+            parts = [geometry]
+        elif kind == "MultiPolygon":
+            parts = list(geometry.geoms)
+        else:
+            raise TypeError(
+                f"the domain must be a shapely Polygon or MultiPolygon, not {type(geometry).__name__}"
+            )
+        for p in parts:
+            if p.is_empty:
+                continue
+            rings = [p.exterior] + list(p.interiors)
+            polygons.append([np.asarray(r.coords, dtype=float)[:, :2] for r in rings])
+        if not polygons:
+            raise DomainError("<shapely>: the domain is empty")
+        if constraints is None:
+            constraints = []
+        elif getattr(constraints, "geom_type", None) is not None:
+            constraints = [constraints]
+        lines, items = [], []
+        for k, c in enumerate(constraints):
+            kind = getattr(c, "geom_type", None)
+            if kind in ("LineString", "LinearRing"):
+                parts = [c]
+            elif kind == "MultiLineString":
+                parts = list(c.geoms)
+            else:
+                raise TypeError(
+                    f"constraints[{k}] must be a shapely LineString, LinearRing or "
+                    f"MultiLineString, not {type(c).__name__}"
+                )
+            for part in parts:
+                if not part.is_empty:
+                    lines.append(np.asarray(part.coords, dtype=float)[:, :2])
+                    items.append(k)
+        return cls._wrap(_cvt2.Domain.from_shapely(polygons, lines, items))
+
+    @property
+    def format(self) -> str:
+        """Where the description came from: ``arrays``, ``poly``, ``wkt``, ``geojson``, ``shapely``."""
+        return self._impl.format
+
+    @property
+    def source(self) -> str:
+        """The file, or ``<arrays>``, ``<shapely>``: how messages name it."""
+        return self._impl.source
+
+    @property
+    def area(self) -> float:
+        """The domain's area."""
+        return self._impl.area
+
+    @property
+    def bounds(self) -> tuple:
+        """(xmin, ymin, xmax, ymax) of the domain."""
+        return self._impl.bounds
+
+    @property
+    def notes(self) -> list:
+        """Points of the file that repeat earlier ones (they are merged), as ``cvt2`` notes them."""
+        return self._impl.notes
+
+    @functools.cached_property
+    def _arrays(self):
+        return self._impl.arrays()
+
+    @property
+    def vertices(self) -> np.ndarray:
+        """(V, 2) float: the vertices of the description (for a WKT, GeoJSON or shapely domain,
+        the points of its rings and lines, each once)."""
+        return self._arrays["vertices"]
+
+    @property
+    def segments(self) -> np.ndarray:
+        """(S, 2) int: the input segments, as rows of :attr:`vertices`: a ``.poly`` file's or the
+        arrays' segments in order; for WKT, GeoJSON and shapely domains each polygon's exterior
+        and hole rings, then each line, segment after segment. :attr:`BoundedVoronoi.ridge_constraint`
+        gives rows of this array."""
+        return self._arrays["segments"]
+
+    @property
+    def segment_items(self) -> np.ndarray:
+        """(S,) int: the input item each segment comes from: its own row (``.poly``, arrays), the
+        line of its geometry (``.wkt``), its feature from 1 (``.geojson``), or 0 for the polygon
+        and k + 1 for ``constraints[k]`` (shapely)."""
+        return self._arrays["segment_items"]
+
+    @property
+    def holes(self) -> np.ndarray:
+        """(H, 2) float: the hole points of a ``.poly`` or arrays domain."""
+        return self._arrays["holes"]
+
+    @property
+    def generators(self) -> np.ndarray:
+        """(G, 2) float: the description's own generators (``.poly`` vertices on no segment,
+        WKT and GeoJSON points), which every call inserts before the points it is given."""
+        return self._arrays["generators"]
+
+    def __repr__(self):
+        return (
+            f"<cvt2.Domain {self.format} {self.source!r}: area {self.area:.6g}, "
+            f"{len(self.segments)} segments>"
+        )
+
+
+def _impl(domain):
+    if not isinstance(domain, Domain):
+        raise TypeError(f"domain must be a cvt2.Domain, not {type(domain).__name__}")
+    return domain._impl
+
+
+def _count(value, name):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an integer, not {type(value).__name__}")
+    if value < 0:
+        raise ValueError(f"{name} must be >= 0, not {value}")
+    return int(value)
+
+
+def random_points(domain, n, seed=1, density=None, *, lipschitz_k=0.1, boundary_size=None):
+    """``n`` random points in ``domain``: the same bits as ``cvt2 DOMAIN -n N --seed S`` draws
+    them (with ``--density lipschitz`` for ``density="lipschitz"``).
+
+    - ``domain``: a :class:`Domain`;
+    - ``n``: how many points (an integer >= 0);
+    - ``seed``: the seed (an integer, 0 to 2**64 - 1): the same seed gives the same points on
+      every platform;
+    - ``density``: the density the points will be optimized under (:func:`optimize`'s
+      ``density``): None (uniform: by area), ``"lipschitz"`` (the automatic sizing, with
+      ``lipschitz_k`` and ``boundary_size``), or a callable as in :func:`optimize`, called once
+      with every point it needs. The points follow sqrt(density), the point density of a
+      centroidal tessellation of that density in 2D, so that the optimization starts close to
+      its result.
+
+    Returns a float64 array (n, 2).
+    """
+    n = _count(n, "n")
+    seed = _count(seed, "seed")
+    if seed >= 2**64:
+        raise ValueError(f"seed must be below 2**64, not {seed}")
+    return _cvt2.random_points(_impl(domain), n, seed, density, float(lipschitz_k), boundary_size)
+
+
+def optimize(
+    domain,
+    points,
+    algorithm="lbfgs",
+    density=None,
+    move_ratio=0.01,
+    max_iterations=1000,
+    threads=0,
+    callback=None,
+    *,
+    time_limit=0.0,
+    lipschitz_k=0.1,
+    boundary_size=None,
+) -> "OptimizeResult":
+    """Moves ``points`` to a centroidal Voronoi tessellation of ``domain``: each free generator
+    to the centroid of its bounded Voronoi cell (under the density), again and again. The same
+    domain, points and options give the same bits as ``cvt2 DOMAIN --points-in POINTS`` with
+    the same options, whatever the number of threads.
+
+    - ``domain``: a :class:`Domain`; its own vertices (and generators) are generators too;
+      constrained ones never move, and no generator crosses a constraint;
+    - ``points``: float array (n, 2), the initial free generators (:func:`random_points`, say),
+      in the domain (its boundary included: a point on a constraint becomes constrained);
+    - ``algorithm``: ``"lbfgs"`` (L-BFGS on the CVT energy; fewer evaluations) or ``"lloyd"``;
+    - ``density``: None (uniform, integrated exactly), ``"lipschitz"`` (the automatic sizing
+      of the paper's Section 4: cell size ``lipschitz_k`` * distance to the boundary +
+      ``boundary_size``, by default each boundary edge's length; ``cvt2 --density lipschitz``),
+      or a callable ``f(xy) -> values``: ``xy`` a float array (m, 2), the result m positive
+      finite values. It is called with many points at once (every quadrature point of a chunk
+      of about 2000 cells), with the GIL held only while it runs; cells get small where it is
+      large (cell size ~ density**-1/4);
+    - ``move_ratio``: stop when every free generator's move ratio ``|x - centroid| /
+      diameter(cell)`` is below it (0: never);
+    - ``max_iterations``: at most that many iterations;
+    - ``threads``: threads for the cells (0: one per core); the result does not depend on it;
+    - ``callback``: None, or ``f(info)`` called after each iteration with a dict (``iteration``,
+      ``evaluations``, ``energy``, ``max_move_ratio``, ``mean_move_ratio``, ``seconds``);
+      returning False stops;
+    - ``time_limit``: stop after that many seconds (0: no limit).
+
+    Ctrl-C raises KeyboardInterrupt. Returns an :class:`OptimizeResult`.
+    """
+    if threads is None:
+        threads = 0
+    result = _cvt2.optimize(
+        _impl(domain),
+        points,
+        str(algorithm),
+        density,
+        float(move_ratio),
+        _count(max_iterations, "max_iterations"),
+        float(time_limit),
+        _count(threads, "threads"),
+        callback,
+        float(lipschitz_k),
+        boundary_size,
+    )
+    return OptimizeResult(result, domain)
+
+
+def bounded_voronoi(domain, points, threads=0) -> "BoundedVoronoi":
+    """The bounded Voronoi diagram of the domain's vertices (and generators) and ``points``
+    (float array (n, 2) in the domain): each generator's cell is the part of the domain that is
+    closer to it than to any other generator it can see (constraints block the view, and cells
+    stop at them). Returns a :class:`BoundedVoronoi`; its ``points`` are every generator, in
+    the diagram's order, which is not the order given.
+    """
+    return BoundedVoronoi(
+        _cvt2.bounded_voronoi(_impl(domain), points, _count(threads, "threads")), domain
+    )
+
+
+class OptimizeResult:
+    """What :func:`optimize` found, for the generators as they are at the end.
+
+    - ``points``: float (N, 2), every generator, constrained ones included, in the order
+      ``cvt2 --points-out`` writes them (the cells' order of :meth:`bounded_voronoi`);
+    - ``constrained``: bool (N,), whether each is a constrained vertex (which never moves);
+    - ``energy``: the CVT energy, sum over cells of the integral of density * |y - x|^2;
+    - ``normalized_energy``: energy * N / area^2 over the hexagonal tiling's (uniform density:
+      1 is the optimum for large N), as ``cvt2`` prints it;
+    - ``iterations``, ``evaluations``: moves done, and diagrams evaluated;
+    - ``stop_reason``: ``"converged"``, ``"max_iterations"``, ``"time_limit"``, ``"callback"``
+      or ``"no_free_generator"``;
+    - ``energy_history``, ``max_move_ratio_history``, ``mean_move_ratio_history``: one value an
+      iteration, the first before any move; ``max_move_ratio``, ``mean_move_ratio``: the last;
+    - ``seconds``: the optimization's time, measured as ``cvt2`` prints ``seconds=``.
+    """
+
+    def __init__(self, impl, domain):
+        self._impl = impl
+        self.domain = domain
+        self.points = impl.points
+        self.constrained = impl.constrained
+        self.energy = impl.energy
+        self.iterations = impl.iterations
+        self.evaluations = impl.evaluations
+        self.stop_reason = impl.stop_reason
+        self.energy_history = impl.energy_history
+        self.max_move_ratio = impl.max_move_ratio
+        self.mean_move_ratio = impl.mean_move_ratio
+        self.max_move_ratio_history = impl.max_move_ratio_history
+        self.mean_move_ratio_history = impl.mean_move_ratio_history
+        self.seconds = impl.seconds
+
+    @property
+    def normalized_energy(self) -> float:
+        area = self.domain.area
+        return self.energy * len(self.points) / (area * area) / _HEXAGON_ENERGY
+
+    def bounded_voronoi(self, threads=0) -> "BoundedVoronoi":
+        """The diagram of the optimized triangulation itself: its ``points`` are this result's,
+        in the same order, and its files are those ``cvt2 --geojson/--vtu/--disv`` writes."""
+        return BoundedVoronoi(self._impl.diagram(_count(threads, "threads")), self.domain)
+
+    def __repr__(self):
+        return (
+            f"<cvt2.OptimizeResult {len(self.points)} generators, {self.iterations} iterations, "
+            f"stop {self.stop_reason}, energy {self.energy:.9g}>"
+        )
+
+
+class BoundedVoronoi:
+    """A bounded Voronoi diagram as a conforming polygon mesh, with the names of
+    ``scipy.spatial.Voronoi`` and no -1 in them (every region is finite, inside the domain):
+
+    - ``points``: float (n, 2), every generator (the domain's vertices included);
+      ``constrained``: bool (n,), whether each is a constrained vertex;
+    - ``vertices``: float (V, 2), the cell vertices: circumcenters, points where bisectors meet
+      constraints, and constrained generators (a vertex of its own cell); each is shared by the
+      cells it bounds, found from the triangulation, not by comparing coordinates;
+    - ``regions``: list of n lists of vertex indices, counterclockwise: cell k as one ring, what
+      plotting wants (``vertices[regions[k]]``); a constraint that ends inside a cell (a slit)
+      is left out, and a cell of several pieces meeting at its generator (where two holes
+      touch) is one ring through the generator; ``cycles`` is the exact boundary, slits walked
+      there and back;
+    - ``point_region``: int (n,), the region of each point: region k is point k's;
+    - ``ridge_points``: int (E, 2), the cells on the two sides of each ridge (mesh edge), the
+      left one first; a ridge on the domain's boundary, with no cell beyond, names its cell
+      twice (``ridge_boundary`` is True for those), as does a slit;
+    - ``ridge_vertices``: int (E, 2), the ends of each ridge (rows of ``vertices``);
+    - ``ridge_constraint``: int (E,), the input segment each ridge lies on (a row of
+      :attr:`Domain.segments`; :attr:`Domain.segment_items` gives its line, feature or
+      shapely geometry), or -1 for a bisector ridge;
+    - ``areas``: float (n,), ``centroids``: float (n, 2) (of the cells as uniform polygons).
+
+    :meth:`to_shapely` gives one valid geometry per generator; :meth:`to_geojson`,
+    :meth:`to_vtu`, :meth:`to_disv` write the library's files.
+    """
+
+    def __init__(self, impl, domain):
+        self._impl = impl
+        self.domain = domain
+
+    @functools.cached_property
+    def points(self) -> np.ndarray:
+        return self._impl.points
+
+    @functools.cached_property
+    def constrained(self) -> np.ndarray:
+        return self._impl.constrained
+
+    @functools.cached_property
+    def vertices(self) -> np.ndarray:
+        return self._impl.vertices
+
+    @functools.cached_property
+    def vertex_kinds(self) -> np.ndarray:
+        """uint8 (V,): 0 a circumcenter, 1 a point on a constraint, 2 a constrained generator."""
+        return self._impl.vertex_kinds
+
+    @functools.cached_property
+    def regions(self) -> list:
+        return self._impl.outlines()
+
+    @functools.cached_property
+    def cycles(self) -> list:
+        """Cell k's exact boundary, counterclockwise: a slit (a constraint ending inside the
+        cell, or crossing it at its constrained generator) is walked there and back."""
+        return self._impl.cycles()
+
+    @functools.cached_property
+    def point_region(self) -> np.ndarray:
+        return np.arange(len(self.points), dtype=np.int64)
+
+    @functools.cached_property
+    def ridge_points(self) -> np.ndarray:
+        return self._impl.ridge_points
+
+    @functools.cached_property
+    def ridge_vertices(self) -> np.ndarray:
+        return self._impl.ridge_vertices
+
+    @functools.cached_property
+    def ridge_constraint(self) -> np.ndarray:
+        return self._impl.ridge_constraint
+
+    @functools.cached_property
+    def ridge_boundary(self) -> np.ndarray:
+        """bool (E,): the ridge has no cell beyond it (the domain's boundary)."""
+        return self._impl.ridge_boundary
+
+    @functools.cached_property
+    def areas(self) -> np.ndarray:
+        return self._impl.areas
+
+    @functools.cached_property
+    def centroids(self) -> np.ndarray:
+        return self._impl.centroids
+
+    def polygons(self) -> list:
+        """Cell k as valid rings: a list (one ring per piece, usually one) of int arrays of
+        vertex indices, counterclockwise, not closed; slits dropped. What :meth:`to_shapely`
+        and the GeoJSON writer use."""
+        return self._impl.polygons()
+
+    def to_shapely(self) -> list:
+        """One shapely geometry per generator, in the order of ``points``: a Polygon, or a
+        MultiPolygon for a cell of several pieces that meet at its generator. Every one is
+        valid; neighbouring cells share their vertices' coordinates exactly, so they neither
+        overlap nor leave gaps, and their union is the domain."""
+        from shapely.geometry import MultiPolygon, Polygon
+
+        v = self.vertices
+        out = []
+        for rings in self._impl.polygons():
+            if len(rings) == 1:
+                out.append(Polygon(v[rings[0]]))
+            else:
+                out.append(MultiPolygon([Polygon(v[r]) for r in rings]))
+        return out
+
+    def to_geojson(self, path) -> None:
+        """Writes the cells as a GeoJSON FeatureCollection (``cvt2 --geojson``): one valid
+        Polygon or MultiPolygon per cell; properties cell, generator, constrained, area,
+        neighbors."""
+        self._impl.write_geojson(os.fspath(path))
+
+    def to_vtu(self, path) -> None:
+        """Writes the cells as a VTK XML unstructured grid (``cvt2 --vtu``; ParaView, meshio)."""
+        self._impl.write_vtu(os.fspath(path))
+
+    def to_disv(self, path, top=1.0, bottom=0.0) -> None:
+        """Writes the cells as a MODFLOW 6 DISV grid of one layer between ``bottom`` and
+        ``top`` (``cvt2 --disv``; flopy)."""
+        self._impl.write_disv(os.fspath(path), float(top), float(bottom))
+
+    def __len__(self):
+        return len(self.points)
+
+    def __repr__(self):
+        return (
+            f"<cvt2.BoundedVoronoi {len(self.points)} cells, {len(self.vertices)} vertices, "
+            f"{len(self.ridge_points)} ridges>"
+        )

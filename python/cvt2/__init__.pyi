@@ -1,0 +1,116 @@
+# Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+# Type stubs of the cvt2 module; cvt2/__init__.py documents each name.
+from os import PathLike
+from typing import Any, Callable, Iterable, Literal, Optional, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+_Path = Union[str, PathLike]
+_Points = npt.ArrayLike  # float (n, 2)
+# None (uniform), "uniform", "lipschitz", or f(xy: float (m, 2)) -> m positive values
+_Density = Union[None, Literal["uniform", "lipschitz"], Callable[[np.ndarray], npt.ArrayLike]]
+
+class ParseError(ValueError):
+    file: str
+    line: int
+    token: str
+
+class DomainError(ValueError):
+    index: Optional[int]
+
+class Domain:
+    def __init__(
+        self, vertices: _Points, segments: npt.ArrayLike, holes: Optional[_Points] = ...
+    ) -> None: ...
+    @classmethod
+    def from_file(cls, path: _Path) -> Domain: ...
+    @classmethod
+    def from_shapely(cls, geometry: Any, constraints: Optional[Iterable[Any]] = ...) -> Domain: ...
+    @property
+    def format(self) -> str: ...
+    @property
+    def source(self) -> str: ...
+    @property
+    def area(self) -> float: ...
+    @property
+    def bounds(self) -> tuple[float, float, float, float]: ...
+    @property
+    def notes(self) -> list[str]: ...
+    @property
+    def vertices(self) -> np.ndarray: ...  # float (V, 2)
+    @property
+    def segments(self) -> np.ndarray: ...  # int (S, 2)
+    @property
+    def segment_items(self) -> np.ndarray: ...  # int (S,)
+    @property
+    def holes(self) -> np.ndarray: ...  # float (H, 2)
+    @property
+    def generators(self) -> np.ndarray: ...  # float (G, 2)
+
+def random_points(
+    domain: Domain,
+    n: int,
+    seed: int = ...,
+    density: _Density = ...,
+    *,
+    lipschitz_k: float = ...,
+    boundary_size: Optional[float] = ...,
+) -> np.ndarray: ...  # float (n, 2)
+def optimize(
+    domain: Domain,
+    points: _Points,
+    algorithm: Literal["lbfgs", "lloyd"] = ...,
+    density: _Density = ...,
+    move_ratio: float = ...,
+    max_iterations: int = ...,
+    threads: int = ...,
+    callback: Optional[Callable[[dict[str, Any]], Optional[bool]]] = ...,
+    *,
+    time_limit: float = ...,
+    lipschitz_k: float = ...,
+    boundary_size: Optional[float] = ...,
+) -> OptimizeResult: ...
+def bounded_voronoi(domain: Domain, points: _Points, threads: int = ...) -> BoundedVoronoi: ...
+
+class OptimizeResult:
+    domain: Domain
+    points: np.ndarray  # float (N, 2), every generator, in cvt2 --points-out order
+    constrained: np.ndarray  # bool (N,)
+    energy: float
+    iterations: int
+    evaluations: int
+    stop_reason: Literal["converged", "max_iterations", "time_limit", "callback", "no_free_generator"]
+    energy_history: np.ndarray
+    max_move_ratio: float
+    mean_move_ratio: float
+    max_move_ratio_history: np.ndarray
+    mean_move_ratio_history: np.ndarray
+    seconds: float
+    @property
+    def normalized_energy(self) -> float: ...
+    def bounded_voronoi(self, threads: int = ...) -> BoundedVoronoi: ...
+
+class BoundedVoronoi:
+    domain: Domain
+    points: np.ndarray  # float (n, 2)
+    constrained: np.ndarray  # bool (n,)
+    vertices: np.ndarray  # float (V, 2)
+    vertex_kinds: np.ndarray  # uint8 (V,)
+    regions: list[list[int]]
+    cycles: list[list[int]]
+    point_region: np.ndarray  # int (n,)
+    ridge_points: np.ndarray  # int (E, 2)
+    ridge_vertices: np.ndarray  # int (E, 2)
+    ridge_constraint: np.ndarray  # int (E,), -1 for a bisector ridge
+    ridge_boundary: np.ndarray  # bool (E,)
+    areas: np.ndarray  # float (n,)
+    centroids: np.ndarray  # float (n, 2)
+    def polygons(self) -> list[list[np.ndarray]]: ...
+    def to_shapely(self) -> list[Any]: ...
+    def to_geojson(self, path: _Path) -> None: ...
+    def to_vtu(self, path: _Path) -> None: ...
+    def to_disv(self, path: _Path, top: float = ..., bottom: float = ...) -> None: ...
+    def __len__(self) -> int: ...

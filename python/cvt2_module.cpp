@@ -1,0 +1,836 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// cvt2._cvt2, the compiled part of the Python module cvt2: domains, random points, optimization
+// and bounded Voronoi diagrams as numpy arrays. Conversions and the GIL only: the algorithms are
+// the library's, called as the cvt2 program calls them, so that the same input gives the same
+// bits. cvt2/__init__.py is the documented interface.
+#include <CVT_2/Boundary_lipschitz_sizing_2.h>
+#include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/Bvd_mesh_2.h>
+#include <CVT_2/Cvt_triangulation_2.h>
+#include <CVT_2/IO/read_domain.h>
+#include <CVT_2/IO/write_disv.h>
+#include <CVT_2/IO/write_geojson.h>
+#include <CVT_2/IO/write_vtu.h>
+#include <CVT_2/exceptions.h>
+#include <CVT_2/insert_generators_2.h>
+#include <CVT_2/internal/to_string.h>
+#include <CVT_2/internal/valid_point.h>
+#include <CVT_2/lbfgs_optimize_2.h>
+#include <CVT_2/lloyd_optimize_2.h>
+#include <CVT_2/mark_domain_2.h>
+#include <CVT_2/random_points_in_domain_2.h>
+#include <CVT_2/version.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using CDT = CVT_2::Cvt_triangulation_2<K>;
+using BVD = CVT_2::Bounded_voronoi_diagram_2<CDT>;
+using Mesh = CVT_2::Bvd_mesh_2<BVD>;
+using Point_2 = K::Point_2;
+using Sizing = CVT_2::Boundary_lipschitz_sizing_2<K>;
+using Domain_data = CVT_2::IO::Domain_data<K>;
+using Poly_data = CVT_2::IO::Poly_data<Point_2>;
+using Wkt_data = CVT_2::IO::Wkt_data<K>;
+using Index = Mesh::Index;
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// --- errors ------------------------------------------------------------------------------------
+
+// cvt2.ParseError and cvt2.DomainError, both ValueErrors; created once, never freed (a static
+// Python object would be released after the interpreter).
+PyObject* parse_error_type = nullptr;
+PyObject* domain_error_type = nullptr;
+
+py::str utf8(const std::string& s) {
+  return py::reinterpret_steal<py::str>(
+      PyUnicode_DecodeUTF8(s.data(), py::ssize_t(s.size()), "replace"));
+}
+
+// The library's exceptions as Python ones, with what they know as attributes.
+void translate_exception(std::exception_ptr p) {
+  try {
+    if (p) std::rethrow_exception(p);
+  } catch (const CVT_2::IO::Parse_error& e) {
+    py::object x = py::handle(parse_error_type)(utf8(e.what()));
+    x.attr("file") = utf8(e.file());
+    x.attr("line") = e.line();
+    x.attr("token") = utf8(e.token());
+    PyErr_SetObject(parse_error_type, x.ptr());
+  } catch (const CVT_2::Domain_error& e) {
+    py::object x = py::handle(domain_error_type)(utf8(e.what()));
+    x.attr("index") = e.index() == CVT_2::Domain_error::no_index ? py::object(py::none())
+                                                                 : py::object(py::int_(e.index()));
+    PyErr_SetObject(domain_error_type, x.ptr());
+  } catch (const std::ios_base::failure& e) {
+    PyErr_SetObject(PyExc_OSError, utf8(e.what()).ptr());
+  }
+}
+
+std::string shape_of(const py::array& a) {
+  std::string s = "(";
+  for (py::ssize_t i = 0; i < a.ndim(); ++i) s += (i ? ", " : "") + std::to_string(a.shape(i));
+  return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+// An array of shape (n, 2) of numbers (a list of pairs works), as points; an empty sequence is no
+// point. Coordinates are checked where they are used, with the library's messages.
+std::vector<Point_2> to_points(py::handle object, const std::string& name) {
+  const Array a = Array::ensure(object);
+  if (!a) throw py::type_error(name + " must be an array of shape (n, 2) of numbers");
+  if (a.ndim() == 1 && a.shape(0) == 0) return {};
+  if (a.ndim() != 2 || a.shape(1) != 2)
+    throw py::value_error(name + " must have shape (n, 2), not " + shape_of(a));
+  std::vector<Point_2> points;
+  points.reserve(std::size_t(a.shape(0)));
+  const auto r = a.unchecked<2>();
+  for (py::ssize_t i = 0; i < r.shape(0); ++i) points.emplace_back(r(i, 0), r(i, 1));
+  return points;
+}
+
+Array to_array(const std::vector<Point_2>& points) {
+  Array a({py::ssize_t(points.size()), py::ssize_t(2)});
+  auto w = a.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < points.size(); ++i)
+    w(py::ssize_t(i), 0) = points[i].x(), w(py::ssize_t(i), 1) = points[i].y();
+  return a;
+}
+
+template <class T>
+py::array_t<T> to_array(const std::vector<T>& v, py::ssize_t columns = 1) {
+  std::vector<py::ssize_t> shape{py::ssize_t(v.size()) / columns};
+  if (columns > 1) shape.push_back(columns);
+  py::array_t<T> a(shape);
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
+// Generators into a triangulation whose domain is marked; a bad one is named by its row.
+void insert_points(CDT& cdt, const std::vector<Point_2>& points, const std::string& name) {
+  try {
+    CVT_2::insert_generators_2(cdt, points);
+  } catch (const CVT_2::Domain_error& e) {
+    if (e.index() == CVT_2::Domain_error::no_index) throw;
+    throw CVT_2::Domain_error(name + "[" + std::to_string(e.index()) + "]: " + e.what(), e.index());
+  }
+}
+
+// --- domains -----------------------------------------------------------------------------------
+
+// A domain as described (a file's contents, arrays, shapely geometries), never a triangulation:
+// each use builds its own, as cvt2 does from the file, so a domain can be used again.
+struct Domain {
+  Domain_data data;
+  std::string format;  // poly, wkt, geojson, arrays, shapely
+  // The input segments (their ends, two points each), which ridges are numbered by, and the item
+  // of each: its row (.poly, arrays), its line (.wkt) or feature (.geojson), its geometry
+  // (shapely: 0 the polygon, k + 1 constraints[k]).
+  std::vector<Point_2> segment_ends;
+  std::vector<std::int64_t> segment_items;
+  double area = 0;
+  std::array<double, 4> bounds{};
+
+  std::unique_ptr<CDT> triangulation() const {
+    auto cdt = std::make_unique<CDT>();
+    CVT_2::IO::insert_domain(*cdt, data);
+    return cdt;
+  }
+
+  // Builds the triangulation once, which checks the domain, and lists its segments.
+  void finish(std::int64_t item_offset = 0) {
+    if (const auto* poly = std::get_if<0>(&data.description)) {
+      for (std::size_t j = 0; j < poly->segments.size(); ++j) {
+        segment_ends.push_back(poly->vertices[poly->segments[j][0]]);
+        segment_ends.push_back(poly->vertices[poly->segments[j][1]]);
+        segment_items.push_back(std::int64_t(j));
+      }
+    } else {
+      const Wkt_data& w = std::get<1>(data.description);
+      // As insert_wkt() constrains them: repeated points in a row count once.
+      const auto add = [&](const auto& points, bool closed, std::size_t item) {
+        std::vector<Point_2> p;
+        for (const Point_2& q : points)
+          if (p.empty() || q != p.back()) p.push_back(q);
+        if (closed && p.size() > 1 && p.front() == p.back()) p.pop_back();
+        const std::size_t n = closed ? p.size() : p.size() - 1;
+        for (std::size_t i = 0; i < n && p.size() > 1; ++i) {
+          segment_ends.push_back(p[i]);
+          segment_ends.push_back(p[(i + 1) % p.size()]);
+          segment_items.push_back(std::int64_t(item) + item_offset);
+        }
+      };
+      for (std::size_t i = 0; i < w.polygons.size(); ++i) {
+        add(w.polygons[i].outer_boundary(), true, w.polygon_lines[i]);
+        for (auto h = w.polygons[i].holes_begin(); h != w.polygons[i].holes_end(); ++h)
+          add(*h, true, w.polygon_lines[i]);
+      }
+      for (std::size_t i = 0; i < w.polylines.size(); ++i)
+        add(w.polylines[i], false, w.polyline_lines[i]);
+    }
+    const auto cdt = triangulation();
+    bounds = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (auto f = cdt->finite_faces_begin(); f != cdt->finite_faces_end(); ++f) {
+      if (!f->is_inside_domain()) continue;
+      area += cdt->triangle(f).area();
+      for (int i = 0; i < 3; ++i) {
+        const Point_2& p = f->vertex(i)->point();
+        bounds = {std::min(bounds[0], p.x()), std::min(bounds[1], p.y()),
+                  std::max(bounds[2], p.x()), std::max(bounds[3], p.y())};
+      }
+    }
+  }
+};
+
+std::shared_ptr<Domain> domain_from_file(const std::string& path) {
+  auto d = std::make_shared<Domain>();
+  py::gil_scoped_release release;
+  d->data = CVT_2::IO::read_domain_data<K>(path);
+  d->format = d->data.file.format;
+  d->finish();
+  return d;
+}
+
+// Triangle's description, as the `triangle` package takes it: rows are named in messages as
+// `<arrays>:ROW:` (rows from 0).
+std::shared_ptr<Domain> domain_from_arrays(py::handle vertices, py::handle segments,
+                                           py::handle holes) {
+  auto d = std::make_shared<Domain>();
+  Poly_data& p = d->data.description.emplace<0>();
+  p.source = "<arrays>";
+  p.vertices = to_points(vertices, "vertices");
+  const auto s = py::array::ensure(segments);
+  if (!s) throw py::type_error("segments must be an array of shape (m, 2) of vertex indices");
+  if (s.size() > 0 && s.dtype().kind() != 'i' && s.dtype().kind() != 'u')
+    throw py::type_error("segments must hold integers (vertex indices), not " +
+                         std::string(py::str(s.dtype())));
+  const auto segs = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(s);
+  if (!(segs.ndim() == 1 && segs.shape(0) == 0) && (segs.ndim() != 2 || segs.shape(1) != 2))
+    throw py::value_error("segments must have shape (m, 2), not " + shape_of(segs));
+  const std::int64_t* x = segs.data();
+  const std::size_t m = segs.ndim() == 2 ? std::size_t(segs.shape(0)) : 0;
+  for (std::size_t j = 0; j < m; ++j) {
+    for (int e = 0; e < 2; ++e)
+      if (x[2 * j + e] < 0 || std::uint64_t(x[2 * j + e]) >= p.vertices.size())
+        throw py::index_error("segments[" + std::to_string(j) + "] = (" + std::to_string(x[2 * j]) +
+                              ", " + std::to_string(x[2 * j + 1]) + "): no such vertex among " +
+                              std::to_string(p.vertices.size()));
+    p.segments.push_back({std::size_t(x[2 * j]), std::size_t(x[2 * j + 1])});
+    p.segment_lines.push_back(j);
+  }
+  for (std::size_t i = 0; i < p.vertices.size(); ++i) p.vertex_lines.push_back(i);
+  if (!holes.is_none()) p.holes = to_points(holes, "holes");
+  for (std::size_t i = 0; i < p.holes.size(); ++i) p.hole_lines.push_back(i);
+  for (std::size_t i = 0; i < p.holes.size(); ++i)
+    if (!CVT_2::internal::is_valid_point(p.holes[i]))
+      throw CVT_2::Domain_error(CVT_2::internal::invalid_point_message(
+          "holes[" + std::to_string(i) + "] " + CVT_2::internal::to_string(p.holes[i])));
+  std::vector<bool> on_segment(p.vertices.size(), false);
+  for (const auto& e : p.segments) on_segment[e[0]] = on_segment[e[1]] = true;
+  for (const bool b : on_segment) d->data.file.number_of_generators += b ? 0 : 1;
+  d->data.file.source = p.source;
+  d->data.file.format = d->format = "arrays";
+  py::gil_scoped_release release;
+  d->finish();
+  return d;
+}
+
+// Shapely's geometries as the WKT and GeoJSON readers read them: `polygons` a list of polygons,
+// each a list of closed rings (arrays (k, 2), the exterior first), `lines` a list of arrays
+// (k, 2) with `line_items[i]` the constraint each comes from. Items are named in messages:
+// `<shapely>: polygon: ...`, `<shapely>: constraints[2]: ...`.
+std::shared_ptr<Domain> domain_from_shapely(const std::vector<std::vector<py::object>>& polygons,
+                                            const std::vector<py::object>& lines,
+                                            const std::vector<std::size_t>& line_items) {
+  auto d = std::make_shared<Domain>();
+  Wkt_data& w = d->data.description.emplace<1>();
+  w.source = "<shapely>";
+  w.item_names.push_back("polygon");
+  const auto checked = [&](py::handle a, const std::string& item, const std::string& what) {
+    std::vector<Point_2> p = to_points(a, what);
+    for (const Point_2& q : p)
+      if (!CVT_2::internal::is_valid_point(q))
+        throw CVT_2::Domain_error(
+            w.source + ": " + item + ": " +
+            CVT_2::internal::invalid_point_message("point " + CVT_2::internal::to_string(q)));
+    return p;
+  };
+  for (const auto& rings : polygons) {
+    CGAL::Polygon_with_holes_2<K> pwh;
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+      std::vector<Point_2> p = checked(rings[r], "polygon", "a ring");
+      if (p.size() < 4 || p.front() != p.back())
+        throw CVT_2::Domain_error(w.source +
+                                  ": polygon: a ring must be closed, with 4 "
+                                  "positions or more");
+      p.pop_back();
+      std::vector<Point_2> distinct = p;
+      std::sort(distinct.begin(), distinct.end());
+      if (std::unique(distinct.begin(), distinct.end()) - distinct.begin() < 3)
+        throw CVT_2::Domain_error(w.source + ": polygon: a ring needs 3 distinct points");
+      if (r == 0)
+        pwh = CGAL::Polygon_with_holes_2<K>(CGAL::Polygon_2<K>(p.begin(), p.end()));
+      else
+        pwh.add_hole(CGAL::Polygon_2<K>(p.begin(), p.end()));
+    }
+    w.polygons.push_back(std::move(pwh));
+    w.polygon_lines.push_back(1);
+  }
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const std::string name = "constraints[" + std::to_string(line_items[i]) + "]";
+    while (w.item_names.size() < line_items[i] + 2) w.item_names.push_back(name);
+    w.item_names[line_items[i] + 1] = name;
+    std::vector<Point_2> p = checked(lines[i], name, "a constraint");
+    if (p.size() < 2) throw CVT_2::Domain_error(w.source + ": " + name + ": a line needs 2 points");
+    w.polylines.push_back(std::move(p));
+    w.polyline_lines.push_back(line_items[i] + 2);
+  }
+  if (w.polygons.empty()) throw CVT_2::Domain_error(w.source + ": no polygon");
+  d->data.file.source = w.source;
+  d->data.file.format = d->format = "shapely";
+  py::gil_scoped_release release;
+  d->finish(-1);
+  return d;
+}
+
+// The description's own arrays, for Python: vertices and segments as Triangle has them (a WKT
+// domain's rings and lines one after the other), holes and generators.
+py::dict domain_arrays(const Domain& d) {
+  py::dict out;
+  std::vector<Point_2> vertices, holes, generators;
+  std::vector<std::int64_t> segments;
+  if (const auto* p = std::get_if<0>(&d.data.description)) {
+    vertices = p->vertices;
+    for (const auto& s : p->segments)
+      segments.push_back(std::int64_t(s[0])), segments.push_back(std::int64_t(s[1]));
+    holes = p->holes;
+    std::vector<bool> on_segment(p->vertices.size(), false);
+    for (const auto& s : p->segments) on_segment[s[0]] = on_segment[s[1]] = true;
+    for (std::size_t i = 0; i < p->vertices.size(); ++i)
+      if (!on_segment[i]) generators.push_back(p->vertices[i]);
+  } else {
+    // The rings' and lines' points, each once (the triangulation merges equal points too).
+    std::map<Point_2, std::int64_t> number;
+    for (const Point_2& p : d.segment_ends) {
+      const auto [it, is_new] = number.emplace(p, std::int64_t(vertices.size()));
+      if (is_new) vertices.push_back(p);
+      segments.push_back(it->second);
+    }
+    generators = std::get<1>(d.data.description).points;
+  }
+  out["vertices"] = to_array(vertices);
+  out["segments"] = to_array(segments, 2);
+  out["segment_items"] = to_array(d.segment_items);
+  out["holes"] = to_array(holes);
+  out["generators"] = to_array(generators);
+  return out;
+}
+
+// --- densities ---------------------------------------------------------------------------------
+
+// A Python callable as a density evaluated in batches (DensityFunction_2::evaluate()): it gets
+// an array (m, 2) of points and returns m values, with the GIL held only while it runs. It holds
+// the callable by address (the caller keeps it), so that copies of it, made without the GIL, do
+// not touch reference counts. With `square_root`, the square roots of its values: the sampling
+// density of random points that start a CVT of that density close to its result.
+struct Python_density {
+  const py::object* function;
+  bool square_root = false;
+
+  double operator()(const Point_2& p) const {
+    std::vector<double> values;
+    evaluate(std::vector<Point_2>{p}, values);
+    return values[0];
+  }
+
+  void evaluate(const std::vector<Point_2>& points, std::vector<double>& values) const {
+    const py::gil_scoped_acquire gil;
+    const py::ssize_t n = py::ssize_t(points.size());
+    values.resize(points.size());
+    {
+      Array xy({n, py::ssize_t(2)});
+      auto w = xy.mutable_unchecked<2>();
+      for (py::ssize_t i = 0; i < n; ++i)
+        w(i, 0) = points[std::size_t(i)].x(), w(i, 1) = points[std::size_t(i)].y();
+      const py::object result = (*function)(xy);
+      const Array a = Array::ensure(result);
+      if (!a)
+        throw py::type_error("the density must return an array of numbers, not " +
+                             std::string(py::str(py::type::of(result).attr("__name__"))));
+      if (a.ndim() != 1 || a.shape(0) != n)
+        throw py::value_error(
+            "the density returned shape " + shape_of(a) + " for " + std::to_string(n) +
+            " points: it must return one value a point, shape (" + std::to_string(n) + ",)");
+      std::copy(a.data(), a.data() + n, values.begin());
+    }
+    if (!square_root) return;  // the optimizer checks the values itself
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (!(values[i] > 0) || !std::isfinite(values[i]))
+        throw CVT_2::internal::bad_density_error(values[i], points[i]);
+      values[i] = std::sqrt(values[i]);
+    }
+  }
+};
+
+// The density option: None or "uniform", "lipschitz" (with k and the boundary size), or a
+// callable.
+struct Density_choice {
+  enum Kind { UNIFORM, LIPSCHITZ, CALLABLE } kind = UNIFORM;
+  double k = 0.1;
+  std::optional<double> boundary_size;
+  const py::object* function = nullptr;
+
+  Density_choice(const py::object& density, double lipschitz_k, const py::object& size) {
+    if (density.is_none()) {
+    } else if (py::isinstance<py::str>(density)) {
+      const std::string name = density.cast<std::string>();
+      if (name != "lipschitz" && name != "uniform")
+        throw py::value_error("density must be None, 'uniform', 'lipschitz' or a callable, not '" +
+                              name + "'");
+      if (name == "lipschitz") kind = LIPSCHITZ;
+    } else if (PyCallable_Check(density.ptr())) {
+      kind = CALLABLE;
+      function = &density;
+    } else {
+      throw py::type_error("density must be None, 'uniform', 'lipschitz' or a callable");
+    }
+    if (kind == LIPSCHITZ) {
+      if (!(lipschitz_k > 0) || !std::isfinite(lipschitz_k))
+        throw py::value_error("lipschitz_k must be positive and finite, not " +
+                              std::to_string(lipschitz_k));
+      k = lipschitz_k;
+      if (!size.is_none()) {
+        boundary_size = size.cast<double>();
+        if (!(*boundary_size > 0) || !std::isfinite(*boundary_size))
+          throw py::value_error("boundary_size must be positive and finite, not " +
+                                std::to_string(*boundary_size));
+      }
+    } else if (!size.is_none()) {
+      throw py::value_error("boundary_size needs density='lipschitz'");
+    }
+  }
+
+  // The sizing of cvt2's --density lipschitz, from the triangulation before generators are
+  // inserted: its default sizes are the input's boundary edges.
+  std::optional<Sizing> sizing(const CDT& cdt) const {
+    std::optional<Sizing> s;
+    if (kind == LIPSCHITZ) s.emplace(cdt, k, boundary_size);
+    return s;
+  }
+};
+
+std::size_t checked_count(std::int64_t n, const char* name) {
+  if (n < 0) throw py::value_error(std::string(name) + " must be >= 0, not " + std::to_string(n));
+  return std::size_t(n);
+}
+
+Array random_points(const Domain& domain, std::int64_t n, std::uint64_t seed,
+                    const py::object& density, double lipschitz_k,
+                    const py::object& boundary_size) {
+  const std::size_t count = checked_count(n, "n");
+  const Density_choice choice(density, lipschitz_k, boundary_size);
+  std::vector<Point_2> points;
+  {
+    py::gil_scoped_release release;
+    const auto cdt = domain.triangulation();
+    const std::optional<Sizing> sizing = choice.sizing(*cdt);
+    const auto np = CVT_2::parameters::random_seed(seed);
+    if (count == 0) {
+    } else if (choice.kind == Density_choice::LIPSCHITZ) {
+      points = CVT_2::random_points_in_domain_2(*cdt, count, np.sizing_field(std::cref(*sizing)));
+    } else if (choice.kind == Density_choice::CALLABLE) {
+      points = CVT_2::random_points_in_domain_2(*cdt, count,
+                                                np.density(Python_density{choice.function, true}));
+    } else {
+      points = CVT_2::random_points_in_domain_2(*cdt, count, np);
+    }
+  }
+  return to_array(points);
+}
+
+// --- the diagram -------------------------------------------------------------------------------
+
+// A bounded Voronoi diagram as a mesh, with the arrays Python reads, computed once. It keeps
+// the triangulation, which the writers read through the mesh's generators.
+struct Diagram {
+  std::shared_ptr<CDT> cdt;
+  std::shared_ptr<const Domain> domain;
+  std::unique_ptr<BVD> bvd;
+  std::unique_ptr<Mesh> mesh;
+  std::vector<double> points, vertices, areas, centroids;
+  std::vector<std::uint8_t> constrained, ridge_boundary, vertex_kinds;
+  std::vector<std::int64_t> ridge_points, ridge_vertices, ridge_constraint;
+
+  Diagram(std::shared_ptr<CDT> t, std::shared_ptr<const Domain> d, unsigned threads)
+      : cdt(std::move(t)), domain(std::move(d)) {
+    bvd = std::make_unique<BVD>(*cdt);
+    mesh = std::make_unique<Mesh>(*bvd, threads);
+    const std::vector<std::int64_t> input = input_segments();
+    const Mesh& m = *mesh;
+    const std::size_t n = m.number_of_cells();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Point_2& p = m.generator(k)->point();
+      points.push_back(p.x()), points.push_back(p.y());
+      constrained.push_back(m.is_constrained(k) ? 1 : 0);
+      areas.push_back(m.area(k));
+      const Point_2 c = m.centroid(k);
+      centroids.push_back(c.x()), centroids.push_back(c.y());
+    }
+    for (const Point_2& p : m.points()) vertices.push_back(p.x()), vertices.push_back(p.y());
+    for (std::size_t i = 0; i < m.number_of_vertices(); ++i)
+      vertex_kinds.push_back(std::uint8_t(m.vertex_type(i)));
+    for (const Mesh::Edge& e : m.edges()) {
+      const bool boundary = e.cells[1] == Mesh::none;
+      ridge_points.push_back(e.cells[0]);
+      ridge_points.push_back(boundary ? e.cells[0] : e.cells[1]);
+      ridge_vertices.push_back(e.vertices[0]);
+      ridge_vertices.push_back(e.vertices[1]);
+      ridge_boundary.push_back(boundary ? 1 : 0);
+      ridge_constraint.push_back(e.constraint == Mesh::none ? -1 : input[e.constraint]);
+    }
+  }
+
+  // For each constraint of the mesh (a constrained edge of the triangulation, by the cells of
+  // its ends), the first input segment it lies on: each input segment is walked from one end to
+  // the other along the constrained edges that lie on it (they meet it exactly: the
+  // triangulation constructs no intersection).
+  std::vector<std::int64_t> input_segments() const {
+    std::unordered_map<std::uint64_t, std::int64_t> of_edge;
+    const auto key = [](Index a, Index b) {
+      return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
+    };
+    CDT::Face_handle hint;
+    const auto vertex_at = [&](const Point_2& p) {
+      CDT::Locate_type lt;
+      int li;
+      const CDT::Face_handle f = cdt->locate(p, lt, li, hint);
+      if (f != CDT::Face_handle()) hint = f;
+      return lt == CDT::VERTEX ? f->vertex(li) : CDT::Vertex_handle();
+    };
+    const auto& ends = domain->segment_ends;
+    for (std::size_t i = 0; i < ends.size() / 2; ++i) {
+      const Point_2 &a = ends[2 * i], &b = ends[2 * i + 1];
+      CDT::Vertex_handle u = vertex_at(a);
+      const CDT::Vertex_handle target = vertex_at(b);
+      if (u == CDT::Vertex_handle() || target == CDT::Vertex_handle()) continue;
+      while (u != target) {
+        CDT::Vertex_handle next;
+        auto e = cdt->incident_edges(u), done = e;
+        do {
+          if (!cdt->is_constrained(*e)) continue;
+          const CDT::Vertex_handle p = e->first->vertex(CDT::ccw(e->second));
+          const CDT::Vertex_handle w = p == u ? e->first->vertex(CDT::cw(e->second)) : p;
+          if (cdt->is_infinite(w)) continue;
+          if (w == target ||
+              (CGAL::orientation(a, b, w->point()) == CGAL::COLLINEAR &&
+               CGAL::collinear_are_strictly_ordered_along_line(u->point(), w->point(), b))) {
+            next = w;
+            break;
+          }
+        } while (++e != done);
+        if (next == CDT::Vertex_handle()) break;
+        if (CVT_2::internal::has_domain_face(*cdt, u) &&
+            CVT_2::internal::has_domain_face(*cdt, next))
+          of_edge.emplace(key(Index(mesh->cell_of(u)), Index(mesh->cell_of(next))),
+                          std::int64_t(i));
+        u = next;
+      }
+    }
+    std::vector<std::int64_t> input;
+    for (const auto& c : mesh->constraints()) {
+      const auto it = of_edge.find(key(c[0], c[1]));
+      input.push_back(it == of_edge.end() ? -1 : it->second);
+    }
+    return input;
+  }
+
+  // Cells as lists of vertex indices: the cycles (slits walked there and back), the outlines
+  // (slits dropped, lobes joined at the generator), or the valid polygons (a list of rings each).
+  py::list cycles() const {
+    py::list out;
+    for (std::size_t k = 0; k < mesh->number_of_cells(); ++k) {
+      py::list c;
+      for (const Index i : mesh->cell(k)) c.append(i);
+      out.append(c);
+    }
+    return out;
+  }
+  py::list outlines() const {
+    py::list out;
+    for (std::size_t k = 0; k < mesh->number_of_cells(); ++k) {
+      py::list c;
+      for (const Index i : mesh->outline(k)) c.append(i);
+      out.append(c);
+    }
+    return out;
+  }
+  py::list polygons() const {
+    py::list out;
+    for (std::size_t k = 0; k < mesh->number_of_cells(); ++k) {
+      py::list rings;
+      for (const auto& ring : mesh->polygons(k)) {
+        std::vector<std::int64_t> r(ring.begin(), ring.end());
+        rings.append(to_array(r));
+      }
+      out.append(rings);
+    }
+    return out;
+  }
+
+  template <class Writer>
+  void write(const std::string& path, Writer writer) const {
+    py::gil_scoped_release release;
+    std::ofstream os(path, std::ios::binary);
+    if (!os) throw std::ios_base::failure("cannot write '" + path + "'");
+    writer(os);
+    os.close();
+    if (!os) throw std::ios_base::failure("error while writing '" + path + "'");
+  }
+};
+
+std::shared_ptr<Diagram> bounded_voronoi(const std::shared_ptr<const Domain>& domain,
+                                         py::handle points_object, std::int64_t threads) {
+  const std::vector<Point_2> points = to_points(points_object, "points");
+  const unsigned t = unsigned(checked_count(threads, "threads"));
+  py::gil_scoped_release release;
+  std::shared_ptr<CDT> cdt = domain->triangulation();
+  insert_points(*cdt, points, "points");
+  return std::make_shared<Diagram>(std::move(cdt), domain, t);
+}
+
+// --- optimization ------------------------------------------------------------------------------
+
+// What optimize() returns, with the optimized triangulation kept for its diagram.
+struct Optimization {
+  std::shared_ptr<CDT> cdt;
+  std::shared_ptr<const Domain> domain;
+  std::mutex mutex;  // one diagram built at a time: building one writes ids into the triangulation
+  CVT_2::Optimization_result result;
+  std::vector<Point_2> points;
+  std::vector<std::uint8_t> constrained;
+
+  std::shared_ptr<Diagram> diagram(std::int64_t threads) {
+    const unsigned t = unsigned(checked_count(threads, "threads"));
+    py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(mutex);
+    return std::make_shared<Diagram>(cdt, domain, t);
+  }
+};
+
+std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& domain,
+                                       py::handle points_object, const std::string& algorithm,
+                                       const py::object& density, double move_ratio,
+                                       std::int64_t max_iterations, double time_limit,
+                                       std::int64_t threads, const py::object& callback,
+                                       double lipschitz_k, const py::object& boundary_size) {
+  const std::vector<Point_2> points = to_points(points_object, "points");
+  if (algorithm != "lbfgs" && algorithm != "lloyd")
+    throw py::value_error("algorithm must be 'lbfgs' or 'lloyd', not '" + algorithm + "'");
+  if (!(move_ratio >= 0) || !std::isfinite(move_ratio))
+    throw py::value_error("move_ratio must be >= 0, not " + std::to_string(move_ratio));
+  if (!(time_limit >= 0) || std::isnan(time_limit))
+    throw py::value_error("time_limit must be >= 0 seconds, not " + std::to_string(time_limit));
+  const std::size_t iterations = checked_count(max_iterations, "max_iterations");
+  const std::size_t thread_count = checked_count(threads, "threads");
+  if (thread_count > 4096) throw py::value_error("threads must be at most 4096");
+  if (!callback.is_none() && !PyCallable_Check(callback.ptr()))
+    throw py::type_error("callback must be None or a callable");
+  const Density_choice choice(density, lipschitz_k, boundary_size);
+  auto out = std::make_shared<Optimization>();
+  out->domain = domain;
+  // After each iteration: Ctrl-C, and the user's callback with the figures so far.
+  const std::function<bool(const CVT_2::Optimization_result&)> progress =
+      [&callback](const CVT_2::Optimization_result& r) {
+        const py::gil_scoped_acquire gil;
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        if (callback.is_none()) return true;
+        py::dict info;
+        info["iteration"] = r.number_of_iterations;
+        info["evaluations"] = r.number_of_evaluations;
+        info["energy"] = r.energy;
+        info["max_move_ratio"] = r.max_move_ratio;
+        info["mean_move_ratio"] = r.mean_move_ratio;
+        info["seconds"] = r.seconds;
+        const py::object go_on = callback(info);
+        return go_on.is_none() || go_on.cast<bool>();
+      };
+  {
+    py::gil_scoped_release release;
+    std::shared_ptr<CDT> cdt = domain->triangulation();
+    const std::optional<Sizing> sizing = choice.sizing(*cdt);
+    insert_points(*cdt, points, "points");
+    // As cvt2 runs it.
+    const auto np = CVT_2::parameters::number_of_iterations(iterations)
+                        .move_ratio_bound(move_ratio)
+                        .maximum_running_time(time_limit)
+                        .number_of_threads(unsigned(thread_count))
+                        .callback(progress);
+    const auto run = [&](const auto& parameters) {
+      return algorithm == "lbfgs" ? CVT_2::lbfgs_optimize_2(*cdt, parameters)
+                                  : CVT_2::lloyd_optimize_2(*cdt, parameters);
+    };
+    if (choice.kind == Density_choice::LIPSCHITZ)
+      out->result = run(np.sizing_field(*sizing));
+    else if (choice.kind == Density_choice::CALLABLE)
+      out->result = run(np.density(Python_density{choice.function, false}));
+    else
+      out->result = run(np);
+    // Every generator in the order of cvt2's --points-out.
+    const BVD bvd(*cdt);
+    bvd.for_each_cell([&](CDT::Vertex_handle v, const auto&) {
+      out->points.push_back(v->point());
+      out->constrained.push_back(bvd.is_free(v) ? 0 : 1);
+    });
+    out->cdt = std::move(cdt);
+  }
+  return out;
+}
+
+// The benchmark's C++ lambda: the density the benchmark's numpy callback computes,
+// 1 + a exp(-|p - c|^2 / w), in Lloyd iteration as optimize() runs it.
+std::shared_ptr<Optimization> optimize_lambda_density(const std::shared_ptr<const Domain>& domain,
+                                                      py::handle points_object,
+                                                      std::int64_t max_iterations,
+                                                      double move_ratio, std::int64_t threads,
+                                                      double a, double cx, double cy, double w) {
+  const std::vector<Point_2> points = to_points(points_object, "points");
+  auto out = std::make_shared<Optimization>();
+  out->domain = domain;
+  py::gil_scoped_release release;
+  std::shared_ptr<CDT> cdt = domain->triangulation();
+  insert_points(*cdt, points, "points");
+  const auto rho = [=](const Point_2& p) {
+    const double dx = p.x() - cx, dy = p.y() - cy;
+    return 1 + a * std::exp(-(dx * dx + dy * dy) / w);
+  };
+  out->result = CVT_2::lloyd_optimize_2(
+      *cdt, CVT_2::parameters::number_of_iterations(checked_count(max_iterations, "iterations"))
+                .move_ratio_bound(move_ratio)
+                .number_of_threads(unsigned(checked_count(threads, "threads")))
+                .density(rho));
+  out->cdt = std::move(cdt);
+  return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_cvt2, m) {
+  m.doc() = "The compiled part of cvt2; use the cvt2 package, which documents it.";
+  m.attr("__version__") = CVT_2_VERSION_STRING;
+  parse_error_type = PyErr_NewException("cvt2.ParseError", PyExc_ValueError, nullptr);
+  domain_error_type = PyErr_NewException("cvt2.DomainError", PyExc_ValueError, nullptr);
+  m.add_object("ParseError", py::handle(parse_error_type));
+  m.add_object("DomainError", py::handle(domain_error_type));
+  py::register_exception_translator(&translate_exception);
+
+  py::class_<Domain, std::shared_ptr<Domain>>(m, "Domain")
+      .def_static("from_file", &domain_from_file, py::arg("path"))
+      .def_static("from_arrays", &domain_from_arrays, py::arg("vertices"), py::arg("segments"),
+                  py::arg("holes"))
+      .def_static("from_shapely", &domain_from_shapely, py::arg("polygons"), py::arg("lines"),
+                  py::arg("line_items"))
+      .def_property_readonly("format", [](const Domain& d) { return d.format; })
+      .def_property_readonly("source", [](const Domain& d) { return d.data.file.source; })
+      .def_property_readonly("area", [](const Domain& d) { return d.area; })
+      .def_property_readonly("bounds",
+                             [](const Domain& d) {
+                               return py::make_tuple(d.bounds[0], d.bounds[1], d.bounds[2],
+                                                     d.bounds[3]);
+                             })
+      .def_property_readonly("notes", [](const Domain& d) { return d.data.file.repeated; })
+      .def("arrays", &domain_arrays);
+
+  py::class_<Diagram, std::shared_ptr<Diagram>>(m, "Diagram")
+      .def_property_readonly("points", [](const Diagram& d) { return to_array(d.points, 2); })
+      .def_property_readonly(
+          "constrained",
+          [](const Diagram& d) { return to_array(d.constrained).attr("astype")("bool"); })
+      .def_property_readonly("vertices", [](const Diagram& d) { return to_array(d.vertices, 2); })
+      .def_property_readonly("vertex_kinds",
+                             [](const Diagram& d) { return to_array(d.vertex_kinds); })
+      .def_property_readonly("areas", [](const Diagram& d) { return to_array(d.areas); })
+      .def_property_readonly("centroids", [](const Diagram& d) { return to_array(d.centroids, 2); })
+      .def_property_readonly("ridge_points",
+                             [](const Diagram& d) { return to_array(d.ridge_points, 2); })
+      .def_property_readonly("ridge_vertices",
+                             [](const Diagram& d) { return to_array(d.ridge_vertices, 2); })
+      .def_property_readonly("ridge_constraint",
+                             [](const Diagram& d) { return to_array(d.ridge_constraint); })
+      .def_property_readonly(
+          "ridge_boundary",
+          [](const Diagram& d) { return to_array(d.ridge_boundary).attr("astype")("bool"); })
+      .def("cycles", &Diagram::cycles)
+      .def("outlines", &Diagram::outlines)
+      .def("polygons", &Diagram::polygons)
+      .def("write_geojson",
+           [](const Diagram& d, const std::string& path) {
+             d.write(path, [&](std::ostream& os) { CVT_2::IO::write_geojson(os, *d.mesh); });
+           })
+      .def("write_vtu",
+           [](const Diagram& d, const std::string& path) {
+             d.write(path, [&](std::ostream& os) { CVT_2::IO::write_vtu(os, *d.mesh); });
+           })
+      .def("write_disv", [](const Diagram& d, const std::string& path, double top, double bottom) {
+        d.write(path, [&](std::ostream& os) { CVT_2::IO::write_disv(os, *d.mesh, top, bottom); });
+      });
+
+  py::class_<Optimization, std::shared_ptr<Optimization>>(m, "Optimization")
+      .def_property_readonly("points", [](const Optimization& o) { return to_array(o.points); })
+      .def_property_readonly(
+          "constrained",
+          [](const Optimization& o) { return to_array(o.constrained).attr("astype")("bool"); })
+      .def_property_readonly("energy", [](const Optimization& o) { return o.result.energy; })
+      .def_property_readonly("iterations",
+                             [](const Optimization& o) { return o.result.number_of_iterations; })
+      .def_property_readonly("evaluations",
+                             [](const Optimization& o) { return o.result.number_of_evaluations; })
+      .def_property_readonly(
+          "stop_reason",
+          [](const Optimization& o) { return std::string(CVT_2::to_string(o.result.stop_reason)); })
+      .def_property_readonly(
+          "energy_history", [](const Optimization& o) { return to_array(o.result.energy_history); })
+      .def_property_readonly("max_move_ratio",
+                             [](const Optimization& o) { return o.result.max_move_ratio; })
+      .def_property_readonly("mean_move_ratio",
+                             [](const Optimization& o) { return o.result.mean_move_ratio; })
+      .def_property_readonly(
+          "max_move_ratio_history",
+          [](const Optimization& o) { return to_array(o.result.max_move_ratio_history); })
+      .def_property_readonly(
+          "mean_move_ratio_history",
+          [](const Optimization& o) { return to_array(o.result.mean_move_ratio_history); })
+      .def_property_readonly("seconds", [](const Optimization& o) { return o.result.seconds; })
+      .def("diagram", &Optimization::diagram, py::arg("threads") = 0);
+
+  m.def("random_points", &random_points, py::arg("domain"), py::arg("n"), py::arg("seed"),
+        py::arg("density"), py::arg("lipschitz_k"), py::arg("boundary_size"));
+  m.def("optimize", &optimize, py::arg("domain"), py::arg("points"), py::arg("algorithm"),
+        py::arg("density"), py::arg("move_ratio"), py::arg("max_iterations"), py::arg("time_limit"),
+        py::arg("threads"), py::arg("callback"), py::arg("lipschitz_k"), py::arg("boundary_size"));
+  m.def("bounded_voronoi", &bounded_voronoi, py::arg("domain"), py::arg("points"),
+        py::arg("threads"));
+  m.def("_optimize_lambda_density", &optimize_lambda_density, py::arg("domain"), py::arg("points"),
+        py::arg("max_iterations"), py::arg("move_ratio"), py::arg("threads"), py::arg("a"),
+        py::arg("cx"), py::arg("cy"), py::arg("w"));
+}

@@ -1,0 +1,114 @@
+# Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+# A Python density: called with batches of points (a chunk of cells' quadrature points, not one
+# point at a time), deterministic whatever the threads, and it shapes the cells.
+import threading
+
+import numpy as np
+import pytest
+
+import cvt2
+
+
+class Counting:
+    """A density that counts its calls, their sizes and threads."""
+
+    def __init__(self, f):
+        self.f = f
+        self.sizes = []
+        self.threads = set()
+        self.lock = threading.Lock()
+
+    def __call__(self, xy):
+        with self.lock:
+            self.sizes.append(len(xy))
+            self.threads.add(threading.get_ident())
+        assert xy.dtype == np.float64 and xy.shape == (len(xy), 2)
+        return self.f(xy)
+
+
+def bump(xy):
+    return 1.0 + 30.0 * np.exp(-((xy[:, 0] - 0.7) ** 2 + (xy[:, 1] - 0.3) ** 2) / 0.02)
+
+
+@pytest.fixture
+def square():
+    return cvt2.Domain([[0, 0], [1, 0], [1, 1], [0, 1]], [[0, 1], [1, 2], [2, 3], [3, 0]])
+
+
+def test_the_density_is_called_with_batches(data):
+    domain = cvt2.Domain.from_file(data / "us_massachusetts_counties.poly")
+    points = cvt2.random_points(domain, 20000, seed=1)
+    rho = Counting(lambda xy: 1.0 + 0.5 * np.sin(xy[:, 0]) ** 2)
+    result = cvt2.optimize(domain, points, algorithm="lloyd", density=rho, max_iterations=3,
+                           move_ratio=0)
+    assert result.evaluations == 4
+    # One call a chunk of cells an evaluation: a few calls, each with the quadrature points of
+    # thousands of cells (at least 30 a cell: 10 sub-triangles, 3 midpoints each).
+    calls_per_evaluation = len(rho.sizes) / result.evaluations
+    assert calls_per_evaluation == int(calls_per_evaluation) and 2 <= calls_per_evaluation <= 40
+    assert min(rho.sizes) >= 30 * 500
+    assert sum(rho.sizes) >= 30 * len(result.points) * result.evaluations
+
+
+def test_a_density_gives_the_same_bits_whatever_the_threads(square):
+    points = cvt2.random_points(square, 20000, seed=2, density=bump)
+    results = [cvt2.optimize(square, points, density=bump, max_iterations=4, threads=t)
+               for t in (1, 2)]
+    assert np.array_equal(results[0].points, results[1].points)
+    assert np.array_equal(results[0].energy_history, results[1].energy_history)
+    # And a Lloyd iteration never raises the energy much from random points.
+    assert results[0].energy_history[-1] < results[0].energy_history[0]
+
+
+def test_the_density_shapes_the_cells(square):
+    rho = Counting(bump)
+    points = cvt2.random_points(square, 3000, seed=3, density=rho)
+    assert len(rho.sizes) == 1 and rho.sizes[0] >= 3 * 10000  # one call, every sub-triangle
+    near = np.hypot(points[:, 0] - 0.7, points[:, 1] - 0.3) < 0.1
+    # Points follow sqrt(density), 4 to 5.6 times as dense within 0.1 of the bump's top as far
+    # from it: about 12% of them there (3% for uniform points).
+    assert 0.09 < near.mean() < 0.15
+    result = cvt2.optimize(square, points, density=bump, max_iterations=30)
+    vd = result.bounded_voronoi()
+    at_bump = np.argmin(np.hypot(vd.points[:, 0] - 0.7, vd.points[:, 1] - 0.3))
+    at_corner = np.argmin(np.hypot(vd.points[:, 0] - 0.1, vd.points[:, 1] - 0.9))
+    # cell size ~ density^(-1/4): areas ~ density^(-1/2), 31^(-1/2) = 0.18
+    assert vd.areas[at_bump] < 0.4 * vd.areas[at_corner]
+
+
+def test_a_density_callable_may_return_a_list_or_any_numbers(square):
+    points = cvt2.random_points(square, 300, seed=4)
+    a = cvt2.optimize(square, points, density=lambda xy: [1.0] * len(xy), max_iterations=3)
+    b = cvt2.optimize(square, points, density=lambda xy: np.ones(len(xy), dtype=np.float32),
+                      max_iterations=3)
+    assert np.array_equal(a.points, b.points)
+
+
+def test_callback_sees_each_iteration_and_can_stop(square):
+    seen = []
+    points = cvt2.random_points(square, 500, seed=5)
+    result = cvt2.optimize(square, points, algorithm="lloyd", move_ratio=0, max_iterations=50,
+                           callback=lambda info: seen.append(info) or len(seen) < 4)
+    assert result.stop_reason == "callback" and result.iterations == 3
+    assert [s["iteration"] for s in seen] == [0, 1, 2, 3]
+    assert seen[-1]["energy"] == result.energy
+    assert set(seen[0]) == {"iteration", "evaluations", "energy", "max_move_ratio",
+                            "mean_move_ratio", "seconds"}
+    # The optimization runs without the GIL: another thread runs meanwhile.
+    ticks = []
+    stop = threading.Event()
+
+    def tick():
+        while not stop.is_set():
+            ticks.append(1)
+            stop.wait(0.001)
+
+    t = threading.Thread(target=tick)
+    t.start()
+    try:
+        big = cvt2.random_points(square, 100000, seed=6)
+        cvt2.optimize(square, big, algorithm="lloyd", max_iterations=5, move_ratio=0)
+    finally:
+        stop.set()
+        t.join()
+    assert len(ticks) > 10

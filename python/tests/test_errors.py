@@ -1,0 +1,150 @@
+# Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+# Errors arrive as Python exceptions with the library's message and where; none crashes the
+# interpreter, and the interpreter is fine afterwards.
+import numpy as np
+import pytest
+from shapely.geometry import LineString, Point, Polygon
+
+import cvt2
+
+
+@pytest.fixture
+def square():
+    return cvt2.Domain([[0, 0], [1, 0], [1, 1], [0, 1]], [[0, 1], [1, 2], [2, 3], [3, 0]])
+
+
+@pytest.mark.parametrize(
+    "points, error, message",
+    [
+        (np.zeros((3, 3)), ValueError, r"points must have shape \(n, 2\), not \(3, 3\)"),
+        (np.zeros(4), ValueError, r"points must have shape \(n, 2\), not \(4,\)"),
+        ("abc", TypeError, "points must be an array"),
+        ([[0.5, 0.5], [0.2]], TypeError, "points must be an array"),
+        ([[0.5, 0.5], [np.nan, 0.2]], cvt2.DomainError, r"points\[1\]: generator \(nan, 0.2\d*\) is not finite"),
+        ([[0.5, 0.5], [0.1, np.inf]], cvt2.DomainError, r"points\[1\]: generator"),
+        ([[0.5, 0.5], [0.3, 0.3], [1.5, 0.5]], cvt2.DomainError,
+         r"points\[2\]: generator \(1.5, 0.5\) lies outside the domain"),
+    ],
+)
+def test_bad_points(square, points, error, message):
+    for call in (lambda: cvt2.optimize(square, points), lambda: cvt2.bounded_voronoi(square, points)):
+        with pytest.raises(error, match=message) as e:
+            call()
+        if error is cvt2.DomainError:
+            assert isinstance(e.value, ValueError)
+            assert e.value.index == int(message.split("[")[1].split("\\]")[0])
+
+
+def test_no_points_is_fine(square):
+    r = cvt2.optimize(square, np.empty((0, 2)))
+    assert r.stop_reason == "no_free_generator" and len(r.points) == 4 and r.constrained.all()
+    assert len(cvt2.bounded_voronoi(square, []).points) == 4
+    assert cvt2.random_points(square, 0).shape == (0, 2)
+
+
+def test_bad_densities(square):
+    points = cvt2.random_points(square, 200, seed=1)
+    with pytest.raises(ValueError, match=r"the density returned shape \(\d+, 2\) for \d+ points"):
+        cvt2.optimize(square, points, density=lambda xy: xy)
+    with pytest.raises(ValueError, match=r"returned shape \(\d+,\) for \d+ points"):
+        cvt2.optimize(square, points, density=lambda xy: np.ones(len(xy) - 1))
+    with pytest.raises(ValueError, match=r"returned shape \(\) "):
+        cvt2.optimize(square, points, density=lambda xy: 1.0)
+    with pytest.raises(TypeError, match="the density must return an array of numbers, not str"):
+        cvt2.optimize(square, points, density=lambda xy: "abc")
+    negative = lambda xy: np.where(xy[:, 0] < 0.5, 1.0, -2.0)  # noqa: E731
+    with pytest.raises(cvt2.DomainError, match=r"the density is -2(.0*)? at \(0\.[5-9]"):
+        cvt2.optimize(square, points, density=negative)
+    with pytest.raises(cvt2.DomainError, match=r"the density is nan at"):
+        cvt2.optimize(square, points, density=lambda xy: np.full(len(xy), np.nan))
+    with pytest.raises(cvt2.DomainError, match=r"the density is -2(.0*)? at"):
+        cvt2.random_points(square, 10, density=negative)
+
+    class Mine(Exception):
+        pass
+
+    def raising(xy):
+        raise Mine("from the density")
+
+    for threads in (1, 2):
+        with pytest.raises(Mine, match="from the density"):
+            cvt2.optimize(square, cvt2.random_points(square, 20000, seed=2), density=raising,
+                          threads=threads)
+    with pytest.raises(Mine):
+        cvt2.random_points(square, 10, density=raising)
+    with pytest.raises(ZeroDivisionError):
+        cvt2.optimize(square, points, callback=lambda info: 1 / 0)
+    with pytest.raises(TypeError, match="density must be None, 'uniform', 'lipschitz' or a callable"):
+        cvt2.optimize(square, points, density=3)
+    with pytest.raises(ValueError, match="density must be None, 'uniform', 'lipschitz' or a callable, not 'x'"):
+        cvt2.optimize(square, points, density="x")
+    with pytest.raises(ValueError, match="boundary_size needs density='lipschitz'"):
+        cvt2.optimize(square, points, boundary_size=1.0)
+    with pytest.raises(ValueError, match="lipschitz_k must be positive"):
+        cvt2.random_points(square, 5, density="lipschitz", lipschitz_k=-1)
+    # The interpreter and the module are fine afterwards.
+    assert cvt2.optimize(square, points, density=lambda xy: np.ones(len(xy)), max_iterations=2).iterations == 2
+
+
+def test_bad_options(square):
+    points = cvt2.random_points(square, 50, seed=1)
+    with pytest.raises(ValueError, match="algorithm must be 'lbfgs' or 'lloyd', not 'newton'"):
+        cvt2.optimize(square, points, algorithm="newton")
+    with pytest.raises(ValueError, match="move_ratio must be >= 0"):
+        cvt2.optimize(square, points, move_ratio=-1)
+    with pytest.raises(ValueError, match="max_iterations must be >= 0"):
+        cvt2.optimize(square, points, max_iterations=-5)
+    with pytest.raises(TypeError, match="max_iterations must be an integer"):
+        cvt2.optimize(square, points, max_iterations=2.5)
+    with pytest.raises(ValueError, match="n must be >= 0"):
+        cvt2.random_points(square, -1)
+    with pytest.raises(ValueError, match="seed must be below 2\\*\\*64"):
+        cvt2.random_points(square, 3, seed=2**64)
+    with pytest.raises(TypeError, match="domain must be a cvt2.Domain"):
+        cvt2.random_points("square.poly", 3)
+    with pytest.raises(TypeError, match="callback must be None or a callable"):
+        cvt2.optimize(square, points, callback=3)
+
+
+def test_bad_domains(tmp_path):
+    with pytest.raises(FileNotFoundError):
+        cvt2.Domain.from_file(tmp_path / "missing.poly")
+    bad = tmp_path / "bad.poly"
+    bad.write_text("4 2 0 0\n0 0 0\n1 1 0\n2 1 1\n3 0 1\nx 0\n")
+    with pytest.raises(cvt2.ParseError) as e:
+        cvt2.Domain.from_file(bad)
+    assert e.value.file == str(bad) and e.value.line == 6 and str(e.value).startswith(f"{bad}:6: ")
+    unknown = tmp_path / "domain.txt"
+    unknown.write_text("x")
+    with pytest.raises(cvt2.ParseError, match="unknown domain format"):
+        cvt2.Domain.from_file(unknown)
+    crossing = tmp_path / "crossing.wkt"
+    crossing.write_text("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))\nLINESTRING (0.1 0.1, 0.9 0.9)\n"
+                        "LINESTRING (0.1 0.9, 0.9 0.1)\n")
+    with pytest.raises(cvt2.DomainError, match=f"{crossing}:3: this geometry crosses itself or an earlier one"):
+        cvt2.Domain.from_file(crossing)
+    # Arrays: rows named in messages.
+    with pytest.raises(cvt2.DomainError, match=r"<arrays>:3: segment .* crosses segment"):
+        cvt2.Domain([[0, 0], [1, 0], [1, 1], [0, 1]], [[0, 1], [1, 2], [0, 2], [1, 3]])
+    with pytest.raises(IndexError, match=r"segments\[1\] = \(1, 4\): no such vertex among 4"):
+        cvt2.Domain([[0, 0], [1, 0], [1, 1], [0, 1]], [[0, 1], [1, 4]])
+    with pytest.raises(TypeError, match="segments must hold integers"):
+        cvt2.Domain([[0, 0], [1, 0], [1, 1]], [[0.0, 1.0], [1.0, 2.0], [2.0, 0.0]])
+    with pytest.raises(cvt2.DomainError, match="the domain is empty"):
+        cvt2.Domain([[0, 0], [1, 0], [1, 1]], [[0, 1], [1, 2]])
+    with pytest.raises(cvt2.DomainError, match="is not finite"):
+        cvt2.Domain([[0, 0], [1, 0], [1, np.nan]], [[0, 1], [1, 2], [2, 0]])
+    # Shapely: geometries named in messages.
+    square = Polygon([(0, 0), (1, 0), (1, 1), (0, 1)])
+    with pytest.raises(cvt2.DomainError, match=r"<shapely>: constraints\[1\]: this geometry crosses"):
+        cvt2.Domain.from_shapely(square, [LineString([(0.1, 0.1), (0.9, 0.9)]),
+                                          LineString([(0.1, 0.9), (0.9, 0.1)])])
+    with pytest.raises(TypeError, match="must be a shapely Polygon or MultiPolygon, not Point"):
+        cvt2.Domain.from_shapely(Point(0, 0))
+    with pytest.raises(TypeError, match=r"constraints\[0\] must be a shapely LineString"):
+        cvt2.Domain.from_shapely(square, [square])
+    with pytest.raises(cvt2.DomainError, match="the domain is empty"):
+        cvt2.Domain.from_shapely(Polygon())
+    bowtie = Polygon([(0, 0), (1, 1), (1, 0), (0, 1)])
+    with pytest.raises(cvt2.DomainError, match="<shapely>: polygon: this geometry crosses itself"):
+        cvt2.Domain.from_shapely(bowtie)
