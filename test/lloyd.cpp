@@ -439,6 +439,61 @@ TEST_CASE("a density evaluated in batches gives the same bits as point by point"
   }
 }
 
+namespace {
+
+// A quadrature with the call operator only (no nodes()): a batch density runs it twice.
+struct Call_only_quadrature {
+  template <class Density, class PointRange>
+  CVT_2::Cell_moments_2<K> operator()(const Point& x, const PointRange& cell, const Density& rho,
+                                      std::size_t resolution) const {
+    return CVT_2::Midpoint_quadrature_2<K>()(x, cell, rho, resolution);
+  }
+};
+
+// A quadrature that asks for another point where the density is large: not for batches.
+struct Adaptive_quadrature {
+  template <class Density, class PointRange>
+  CVT_2::Cell_moments_2<K> operator()(const Point& x, const PointRange& cell, const Density& rho,
+                                      std::size_t resolution) const {
+    if (rho(x) > 1.5) rho(*cell.begin());
+    return CVT_2::Midpoint_quadrature_2<K>()(x, cell, rho, resolution);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("a quadrature without nodes() runs twice on a batch density, to the same bits",
+          "[lloyd]") {
+  const auto rho = [](const Point& p) { return 1.0 + std::exp(-4 * p.x() * p.x()); };
+  std::atomic<std::size_t> batches{0}, points{0};
+  using Batch = Batch_density<decltype(rho)>;
+  STATIC_REQUIRE(CVT_2::has_quadrature_nodes_v<CVT_2::Midpoint_quadrature_2<K>, K>);
+  STATIC_REQUIRE(!CVT_2::has_quadrature_nodes_v<Call_only_quadrature, K>);
+  STATIC_REQUIRE(!CVT_2::has_quadrature_nodes_v<CVT_2::Exact_quadrature_2<K>, K>);
+  Domain a, b, c;
+  for (Domain* d : {&a, &b, &c}) {
+    load_domain(*d, "four_clusters.poly");
+    insert_random_points(*d, 3000, 6);
+  }
+  CVT_2::Lloyd_optimizer_2<Cdt, decltype(rho)> pointwise(a.cdt, rho);
+  CVT_2::Lloyd_optimizer_2<Cdt, Batch, Call_only_quadrature> twice(b.cdt,
+                                                                   Batch{rho, &batches, &points});
+  for (const std::size_t resolution : {10, 40, 100}) {
+    CAPTURE(resolution);
+    const auto e = pointwise.evaluate(resolution);
+    const auto f = twice.evaluate(resolution);
+    CHECK(e.energy == f.energy);
+    CHECK(e.max_move_ratio == f.max_move_ratio);
+    pointwise.move();
+    twice.move();
+  }
+  CHECK(batches > 0);
+  CVT_2::Lloyd_optimizer_2<Cdt, Batch, Adaptive_quadrature> adaptive(c.cdt,
+                                                                     Batch{rho, &batches, &points});
+  CHECK_THROWS_WITH(adaptive.evaluate(10), Catch::Contains("needs a quadrature that asks for the "
+                                                           "same points"));
+}
+
 TEST_CASE("a batch density's values are checked: count, sign, finiteness, naming the point",
           "[lloyd]") {
   std::atomic<std::size_t> batches{0}, points{0};

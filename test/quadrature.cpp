@@ -195,6 +195,41 @@ TEST_CASE("midpoint rule with a constant density equals exact quadrature at reso
   CHECK(worst < 1e-12);
 }
 
+TEST_CASE("midpoint rule's nodes() and moments() give operator()'s points and bits",
+          "[quadrature]") {
+  STATIC_REQUIRE(CVT_2::has_quadrature_nodes_v<Midpoint, K>);
+  std::mt19937_64 rng(5);
+  const auto rho = [](const Point& p) { return 1 + 0.5 * std::sin(p.x()) * std::cos(3 * p.y()); };
+  std::vector<Point> asked;
+  const auto recording = [&](const Point& p) {
+    asked.push_back(p);
+    return rho(p);
+  };
+  for (int i = 0; i < 30; ++i) {
+    const Star_cell c = random_convex_cell(rng, 3, i % 2 == 0 ? 0.0 : 1e6);
+    for (const std::size_t n : {1, 7, 10, 33, 100, 150}) {
+      CAPTURE(i, n);
+      asked.clear();
+      const Moments direct = Midpoint()(c.x, c.cell, recording, n);
+      std::vector<Point> points;
+      std::vector<double> nodes, values;
+      const std::size_t count = Midpoint().nodes(c.x, c.cell, n, points, nodes);
+      REQUIRE(count == points.size());
+      CHECK(points == asked);
+      for (const Point& p : points) values.push_back(rho(p));
+      const Moments m = Midpoint().moments(nodes.data(), values.data(), count);
+      CHECK(m.mass == direct.mass);
+      CHECK(m.first_moment == direct.first_moment);
+      CHECK(m.energy == direct.energy);
+    }
+  }
+  // A cell of zero area: no point, the moments of operator().
+  std::vector<Point> points;
+  std::vector<double> nodes;
+  CHECK(Midpoint().nodes(origin, Points{origin, Point(1, 0), Point(2, 0)}, 10, points, nodes) == 0);
+  CHECK(Midpoint().moments(nodes.data(), nullptr, 0).mass == 0);
+}
+
 TEST_CASE("midpoint rule with a constant density is exact in exact arithmetic", "[quadrature]") {
   using EK = CGAL::Exact_predicates_exact_constructions_kernel;
   std::mt19937_64 rng(22);

@@ -25,6 +25,8 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -92,6 +94,31 @@ struct Replaying_density {
           "the same order, whatever the density's values");
     return (*values)[i];
   }
+};
+
+// Buffers lent to the threads of a pass, one each, and kept for the next pass: big ones are
+// not allocated (and their pages faulted in) again for each chunk. A copy starts empty.
+template <class Buffers>
+class Buffer_pool {
+ public:
+  Buffer_pool() = default;
+  Buffer_pool(const Buffer_pool&) {}
+  Buffer_pool& operator=(const Buffer_pool&) { return *this; }
+  std::unique_ptr<Buffers> take() const {
+    const std::lock_guard<std::mutex> lock(m_mutex);
+    if (m_free.empty()) return std::make_unique<Buffers>();
+    std::unique_ptr<Buffers> b = std::move(m_free.back());
+    m_free.pop_back();
+    return b;
+  }
+  void give_back(std::unique_ptr<Buffers>& b) const {
+    const std::lock_guard<std::mutex> lock(m_mutex);
+    m_free.push_back(std::move(b));
+  }
+
+ private:
+  mutable std::mutex m_mutex;
+  mutable std::vector<std::unique_ptr<Buffers>> m_free;
 };
 
 template <class K, class Density>
@@ -240,6 +267,26 @@ class Lloyd_optimizer_2 {
   template <class Face_iterator>
   void add_cells_in_batch(Face_iterator first, Face_iterator last, std::size_t resolution,
                           Chunk& sums) const;
+
+  // A cell of a chunk evaluated in batch, by where its data begin in the buffers.
+  struct Batch_cell {
+    Vertex_handle v;
+    bool is_free;
+    std::size_t vertices, asked, nodes;
+  };
+  // What a chunk evaluated in batch keeps between its passes; reused from chunk to chunk.
+  struct Batch_buffers {
+    std::vector<Batch_cell> cells;
+    std::vector<Point_2> vertices, asked;
+    std::vector<FT> nodes, values;
+    void clear() {
+      cells.clear();
+      vertices.clear();
+      asked.clear();
+      nodes.clear();
+      values.clear();
+    }
+  };
   void reduce_chunks();
   Cell_moments_2<Kernel> moments(const Point_2& x, const Cell_points& points,
                                  std::size_t resolution) const;
@@ -260,6 +307,7 @@ class Lloyd_optimizer_2 {
   std::vector<Chunk> m_chunk_sums;
   std::vector<Free_generator> m_moves;
   internal::Move_buffers<CDT> m_buffers;
+  internal::Buffer_pool<Batch_buffers> m_batch_buffers;  // one in use per thread at most
 };
 
 template <class CDT, class Density, class Quadrature, class Traits>
@@ -315,44 +363,56 @@ bool Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::cell_points(const Cell
 }
 
 // The cells of the faces [first, last) with a batch density (DensityFunction_2::evaluate()):
-// their quadrature points recorded in a first pass, the density evaluated at all of them in one
-// call, then the quadrature again on those values. The same bits as point by point.
+// their quadrature points listed in a first pass (by the quadrature's nodes() if it has them,
+// else by running it with a density that records them), the density evaluated at all of them
+// in one call, then the moments from those values (moments(), or the quadrature again). The
+// same bits as point by point.
 template <class CDT, class Density, class Quadrature, class Traits>
 template <class Face_iterator>
 void Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::add_cells_in_batch(Face_iterator first,
                                                                              Face_iterator last,
                                                                              std::size_t resolution,
                                                                              Chunk& sums) const {
-  struct Stored_cell {
-    Vertex_handle v;
-    bool is_free;
-    std::size_t end;  // of its points in `vertices`
-  };
-  std::vector<Stored_cell> cells;
-  std::vector<Point_2> vertices, asked;
-  std::vector<FT> values;
-  const internal::Recording_density<Point_2, FT> record{&asked};
+  constexpr bool with_nodes = has_quadrature_nodes_v<Quadrature, Kernel>;
+  auto b = m_batch_buffers.take();  // freed, not given back, if an exception leaves
+  b->clear();
   internal::for_each_cell_in_faces(m_diagram, first, last, [&](Vertex_handle v, const auto& cell) {
     Cell_points points;
     const bool is_free = cell_points(cell, points);
-    m_quadrature(v->point(), points, record, resolution);
-    vertices.insert(vertices.end(), points.begin(), points.end());
-    cells.push_back({v, is_free, vertices.size()});
+    const Batch_cell c{v, is_free, b->vertices.size(), b->asked.size(), b->nodes.size()};
+    if constexpr (with_nodes) {
+      m_quadrature.nodes(v->point(), points, resolution, b->asked, b->nodes);
+    } else {
+      const internal::Recording_density<Point_2, FT> record{&b->asked};
+      m_quadrature(v->point(), points, record, resolution);
+    }
+    b->vertices.insert(b->vertices.end(), points.begin(), points.end());
+    b->cells.push_back(c);
   });
-  internal::evaluate_in_batch(m_density, asked, values);
-  std::size_t next = 0, begin = 0;
-  const internal::Replaying_density<Point_2, FT> replay{&asked, &values, &next};
-  for (const Stored_cell& c : cells) {
-    const Cell_points points(vertices.begin() + std::ptrdiff_t(begin),
-                             vertices.begin() + std::ptrdiff_t(c.end));
-    begin = c.end;
-    sums.add(cell_figures(c.v, points, c.is_free,
-                          m_quadrature(c.v->point(), points, replay, resolution)));
+  internal::evaluate_in_batch(m_density, b->asked, b->values);
+  std::size_t next = 0;
+  const internal::Replaying_density<Point_2, FT> replay{&b->asked, &b->values, &next};
+  for (std::size_t k = 0; k < b->cells.size(); ++k) {
+    const Batch_cell& c = b->cells[k];
+    const bool last_cell = k + 1 == b->cells.size();
+    const std::size_t vertices_end = last_cell ? b->vertices.size() : b->cells[k + 1].vertices;
+    const Cell_points points(b->vertices.begin() + std::ptrdiff_t(c.vertices),
+                             b->vertices.begin() + std::ptrdiff_t(vertices_end));
+    if constexpr (with_nodes) {
+      const std::size_t asked_end = last_cell ? b->asked.size() : b->cells[k + 1].asked;
+      sums.add(cell_figures(c.v, points, c.is_free,
+                            m_quadrature.moments(b->nodes.data() + c.nodes,
+                                                 b->values.data() + c.asked, asked_end - c.asked)));
+    } else {
+      sums.add(cell_figures(c.v, points, c.is_free,
+                            m_quadrature(c.v->point(), points, replay, resolution)));
+    }
   }
-  if (next != asked.size())
+  if (!with_nodes && next != b->asked.size())
     throw std::logic_error(
         "a density evaluated in batches needs a quadrature that asks for the same points, in "
         "the same order, whatever the density's values");
+  m_batch_buffers.give_back(b);
 }
 
 // The figures of the cell `points` of v from its moments m: checked, and for a free generator

@@ -8,8 +8,11 @@
 
 #include <boost/container/small_vector.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <type_traits>
+#include <vector>
 
 namespace CVT_2 {
 
@@ -56,16 +59,74 @@ class Midpoint_quadrature_2 {
                           std::size_t resolution) const {
     static_assert(std::is_invocable_r_v<FT, const Density&, const Point_2&>,
                   "Density must model DensityFunction_2: FT operator()(const Point_2&) const");
-    // Coordinates relative to x: the midpoints, weights and moments stay accurate far from
-    // the origin.
-    boost::container::small_vector<Triangle, 128> triangles;
+    Triangles triangles;
+    subdivide(x, cell, resolution, triangles);
+    return sum(
+        triangles.size(), [&](std::size_t i) { return nodes_of(triangles[i]); },
+        [&](std::size_t, int, const FT& u, const FT& v) {
+          return rho(Point_2(x.x() + u, x.y() + v));
+        });
+  }
+
+  /// For densities evaluated in batches (see `CellQuadrature_2::nodes()`): appends to
+  /// `points` the points where `operator()` evaluates the density on `cell`, in its order, and
+  /// to `nodes` each sub-triangle's weight $|T|/3$ and midpoints relative to `x`.
+  /// Returns the number of points appended.
+  template <class PointRange>
+  std::size_t nodes(const Point_2& x, const PointRange& cell, std::size_t resolution,
+                    std::vector<Point_2>& points, std::vector<FT>& nodes) const {
+    Triangles triangles;
+    subdivide(x, cell, resolution, triangles);
+    for (const Triangle& t : triangles) {
+      const Nodes n = nodes_of(t);
+      nodes.insert(nodes.end(), n.begin(), n.end());
+      for (int j = 0; j < 3; ++j) points.emplace_back(x.x() + n[1 + 2 * j], x.y() + n[2 + 2 * j]);
+    }
+    return 3 * triangles.size();
+  }
+
+  /// The moments `operator()` computes on the cell whose `nodes()` start at `nodes`, from the
+  /// density's values at its `number_of_points` points, in order: the same bits.
+  Cell_moments moments(const FT* nodes, const FT* values, std::size_t number_of_points) const {
+    return sum(
+        number_of_points / 3,
+        [nodes](std::size_t i) {
+          Nodes n;
+          std::copy(nodes + 7 * i, nodes + 7 * i + 7, n.begin());
+          return n;
+        },
+        [values](std::size_t i, int j, const FT&, const FT&) { return values[3 * i + j]; });
+  }
+
+ private:
+  // A sub-triangle relative to x, rotated so that ab is its longest edge (rotation keeps the
+  // orientation); key = |b - a|².
+  struct Triangle {
+    FT ax, ay, bx, by, cx, cy, area, key;
+  };
+  using Triangles = boost::container::small_vector<Triangle, 128>;
+  // What the rule needs of a sub-triangle: its weight |T| / 3, then its edges' midpoints
+  // (u, v), relative to x, in the order the rule evaluates them.
+  using Nodes = std::array<FT, 7>;
+
+  static Nodes nodes_of(const Triangle& t) {
+    return {t.area / 3,        (t.ax + t.bx) / 2, (t.ay + t.by) / 2, (t.bx + t.cx) / 2,
+            (t.by + t.cy) / 2, (t.cx + t.ax) / 2, (t.cy + t.ay) / 2};
+  }
+
+  // The fan (x, c_i, c_i+1) of the cell, relative to x so that the midpoints, weights and
+  // moments stay accurate far from the origin, its triangles of zero area dropped, bisected
+  // until there are `resolution` triangles.
+  template <class PointRange>
+  static void subdivide(const Point_2& x, const PointRange& cell, std::size_t resolution,
+                        Triangles& triangles) {
     internal::for_each_polygon_edge(cell, [&](const Point_2& p, const Point_2& q) {
       const FT ax = p.x() - x.x(), ay = p.y() - x.y();
       const FT bx = q.x() - x.x(), by = q.y() - x.y();
       const FT area = (ax * by - ay * bx) / 2;
       if (area != 0) triangles.push_back(make_triangle(FT(0), FT(0), ax, ay, bx, by, area));
     });
-    if (triangles.empty()) return Cell_moments();
+    if (triangles.empty()) return;
 
     // Each step bisects the triangle whose longest edge is longest of all, which adds one
     // triangle. Halving the area (exact in binary floating point) keeps the sub-triangles' areas
@@ -83,21 +144,26 @@ class Midpoint_quadrature_2 {
         push(heap, {triangles.back().key, triangles.size() - 1});
       } while (triangles.size() < resolution);
     }
+  }
 
+  // The rule's sums over n sub-triangles: nodes(i) gives triangle i's Nodes, value(i, j, u, v)
+  // the density at its j-th midpoint (u, v).
+  template <class NodesAt, class ValueAt>
+  static Cell_moments sum(std::size_t n, const NodesAt& nodes, const ValueAt& value) {
+    if (n == 0) return Cell_moments();
     FT mass = 0, moment_x = 0, moment_y = 0, energy = 0;
-    for (const Triangle& t : triangles) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const Nodes t = nodes(i);
       FT m = 0, fx = 0, fy = 0, e = 0;
-      const auto add = [&](const FT& u, const FT& v) {  // u, v: a midpoint relative to x
-        const FT r = rho(Point_2(x.x() + u, x.y() + v));
+      for (int j = 0; j < 3; ++j) {
+        const FT &u = t[1 + 2 * j], &v = t[2 + 2 * j];
+        const FT r = value(i, j, u, v);
         m += r;
         fx += r * u;
         fy += r * v;
         e += r * (u * u + v * v);
-      };
-      add((t.ax + t.bx) / 2, (t.ay + t.by) / 2);
-      add((t.bx + t.cx) / 2, (t.by + t.cy) / 2);
-      add((t.cx + t.ax) / 2, (t.cy + t.ay) / 2);
-      const FT w = t.area / 3;
+      }
+      const FT w = t[0];
       mass += w * m;
       moment_x += w * fx;
       moment_y += w * fy;
@@ -109,13 +175,6 @@ class Midpoint_quadrature_2 {
     result.energy = energy;
     return result;
   }
-
- private:
-  // A sub-triangle relative to x, rotated so that ab is its longest edge (rotation keeps the
-  // orientation); key = |b - a|².
-  struct Triangle {
-    FT ax, ay, bx, by, cx, cy, area, key;
-  };
 
   static Triangle make_triangle(const FT& ax, const FT& ay, const FT& bx, const FT& by,
                                 const FT& cx, const FT& cy, const FT& area) {

@@ -24,7 +24,7 @@
 /// resolution schedule (the paper's \f$n = 10\f$ to \f$100\f$ sub-triangles as moves shrink)
 /// and passes it on every call. Exact models ignore it.
 ///
-/// \cgalHasModel `CVT_2::Midpoint_quadrature_2<K>` (any density)
+/// \cgalHasModel `CVT_2::Midpoint_quadrature_2<K>` (any density; with the batch members)
 /// \cgalHasModel `CVT_2::Exact_quadrature_2<K>` (uniform density only: evaluates \f$\rho(x)\f$)
 /// \sa `CVT_2::is_cell_quadrature_2`
 class CellQuadrature_2 {
@@ -40,6 +40,21 @@ class CellQuadrature_2 {
   template <class Density, class PointRange>
   CVT_2::Cell_moments_2<K> operator()(const Point_2& x, const PointRange& cell, const Density& rho,
                                       std::size_t resolution) const;
+
+  /// Optional, for densities evaluated in batches (`DensityFunction_2::evaluate()`): appends to
+  /// `points` the points at which `operator()` evaluates the density on `cell`, in the order it
+  /// does, and to `nodes` what `moments()` needs to finish its sums from the values there.
+  /// Returns the number of points appended. Without these two members, the optimizer records
+  /// the points by running `operator()` once with a density that notes them, and again on the
+  /// values; with them, the cell is subdivided once. `CVT_2::has_quadrature_nodes` tells.
+  template <class PointRange>
+  std::size_t nodes(const Point_2& x, const PointRange& cell, std::size_t resolution,
+                    std::vector<Point_2>& points, std::vector<FT>& nodes) const;
+
+  /// What `operator()` returns, bit for bit, for the cell whose `nodes()` begin at `nodes`,
+  /// given the density's values at its `number_of_points` points, in order.
+  CVT_2::Cell_moments_2<K> moments(const FT* nodes, const FT* values,
+                                   std::size_t number_of_points) const;
 };
 #endif  // DOXYGEN_RUNNING
 
@@ -81,6 +96,32 @@ struct is_cell_quadrature_2<
 template <class Q, class K, class Density, class PointRange = std::vector<typename K::Point_2>>
 inline constexpr bool is_cell_quadrature_2_v =
     is_cell_quadrature_2<Q, K, Density, PointRange>::value;
+
+/// \ingroup PkgCvt2Concepts
+/// Whether the quadrature `Q` has the optional members of `CellQuadrature_2` for densities
+/// evaluated in batches, `nodes()` and `moments()`, for the kernel `K`. A `std::true_type` or
+/// `std::false_type`.
+template <class Q, class K, class = void>
+struct has_quadrature_nodes : std::false_type {};
+
+/// \cond SKIP_IN_MANUAL
+template <class Q, class K>
+struct has_quadrature_nodes<
+    Q, K,
+    std::void_t<decltype(std::declval<const Q&>().nodes(
+                    std::declval<const typename K::Point_2&>(),
+                    std::declval<const std::vector<typename K::Point_2>&>(),
+                    std::declval<std::size_t>(), std::declval<std::vector<typename K::Point_2>&>(),
+                    std::declval<std::vector<typename K::FT>&>())),
+                decltype(std::declval<const Q&>().moments(
+                    std::declval<const typename K::FT*>(), std::declval<const typename K::FT*>(),
+                    std::declval<std::size_t>()))>> : std::true_type {};
+/// \endcond
+
+/// \ingroup PkgCvt2Concepts
+/// `has_quadrature_nodes<Q, K>::value`.
+template <class Q, class K>
+inline constexpr bool has_quadrature_nodes_v = has_quadrature_nodes<Q, K>::value;
 
 }  // namespace CVT_2
 
