@@ -29,6 +29,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -598,6 +599,41 @@ struct Diagram {
     return out;
   }
 
+  // The cells as one WKB GeometryCollection (little-endian), each a Polygon of polygons(k) or a
+  // MultiPolygon: what shapely reads in one call, far faster than a Polygon at a time.
+  py::bytes wkb() const {
+    std::string out;
+    const auto u32 = [&out](std::uint32_t x) {
+      for (int i = 0; i < 4; ++i) out.push_back(char((x >> (8 * i)) & 0xff));
+    };
+    const auto f64 = [&out](double x) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &x, sizeof bits);
+      for (int i = 0; i < 8; ++i) out.push_back(char((bits >> (8 * i)) & 0xff));
+    };
+    const auto polygon = [&](const std::vector<Index>& ring) {
+      out.push_back(1), u32(3), u32(1), u32(std::uint32_t(ring.size() + 1));
+      for (std::size_t j = 0; j <= ring.size(); ++j) {
+        const Point_2& p = mesh->point(ring[j % ring.size()]);
+        f64(p.x()), f64(p.y());
+      }
+    };
+    {
+      py::gil_scoped_release release;
+      out.push_back(1), u32(7), u32(std::uint32_t(mesh->number_of_cells()));
+      for (std::size_t k = 0; k < mesh->number_of_cells(); ++k) {
+        const auto rings = mesh->polygons(k);
+        if (rings.size() == 1) {
+          polygon(rings[0]);
+          continue;
+        }
+        out.push_back(1), u32(6), u32(std::uint32_t(rings.size()));
+        for (const auto& ring : rings) polygon(ring);
+      }
+    }
+    return py::bytes(out);
+  }
+
   template <class Writer>
   void write(const std::string& path, Writer writer) const {
     py::gil_scoped_release release;
@@ -783,6 +819,7 @@ PYBIND11_MODULE(_cvt2, m) {
       .def("cycles", &Diagram::cycles)
       .def("outlines", &Diagram::outlines)
       .def("polygons", &Diagram::polygons)
+      .def("wkb", &Diagram::wkb)
       .def("write_geojson",
            [](const Diagram& d, const std::string& path) {
              d.write(path, [&](std::ostream& os) { CVT_2::IO::write_geojson(os, *d.mesh); });

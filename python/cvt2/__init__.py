@@ -503,16 +503,9 @@ class BoundedVoronoi:
         MultiPolygon for a cell of several pieces that meet at its generator. Every one is
         valid; neighbouring cells share their vertices' coordinates exactly, so they neither
         overlap nor leave gaps, and their union is the domain."""
-        from shapely.geometry import MultiPolygon, Polygon
+        import shapely.wkb
 
-        v = self.vertices
-        out = []
-        for rings in self._impl.polygons():
-            if len(rings) == 1:
-                out.append(Polygon(v[rings[0]]))
-            else:
-                out.append(MultiPolygon([Polygon(v[r]) for r in rings]))
-        return out
+        return list(shapely.wkb.loads(self._impl.wkb()).geoms)
 
     def to_geojson(self, path) -> None:
         """Writes the cells as a GeoJSON FeatureCollection (``cvt2 --geojson``): one valid

@@ -164,5 +164,6 @@ def test_cells_respect_constraints_and_visibility():
         assert not cell.buffer(-1e-9).intersects(lines), k
         g = vd.points[k]
         for y in vd.vertices[vd.regions[k]]:  # every point of the cell sees its generator
-            sight = LineString([g, g + (1 - 1e-9) * (y - g)])  # short of a hair (rounding)
+            d = np.hypot(*(y - g))
+            sight = LineString([g, y - 1e-9 * (y - g) / d])  # short of a hair (rounding)
             assert region.contains(sight) and not sight.intersects(lines), k
