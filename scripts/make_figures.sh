@@ -51,7 +51,8 @@ cd "$tmp"
 if [ "$1" != convergence ]; then
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
 cmake --build "$build" -j "${JOBS:-2}" --target bvd_cells lloyd_four_clusters lloyd_uniform \
-  custom_density lloyd_adaptive lloyd_france lloyd_world lloyd_curved_hole cvt2
+  custom_density lloyd_adaptive lloyd_france lloyd_world lloyd_curved_hole cvt2 \
+  crack_interpolation
 
 "$ex/bvd_cells" "$data/four_clusters.poly" "$data/four_clusters_points.txt" bvd.svg > /dev/null
 png 700 bvd.svg "$fig/bvd_four_clusters.png"
@@ -85,6 +86,10 @@ png 1200 fig.svg "$fig/lloyd_curved_hole.png"
   "$data/us_kentucky_counties.geojson" kentucky.png \
   "cvt2 us_kentucky_counties.geojson -n 6000 --geojson: 7135 cells, coloured by county"
 pngquant --force --output "$fig/kentucky_counties.png" 64 kentucky.png
+
+"$ex/crack_interpolation" crack.txt
+/usr/bin/python3 "$root/scripts/plot_crack_interpolation.py" crack.txt crack.png
+pngquant --force --output "$fig/crack_interpolation.png" 64 crack.png
 fi
 
 if [ -n "$csv" ]; then

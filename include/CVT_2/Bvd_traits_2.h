@@ -108,6 +108,13 @@ struct Bvd_traits_2 : K {
   using Compare_blinding_distance_2 =
       CGAL::Filtered_predicate<internal::Compare_blinding_distance_2<Exact_kernel>,
                                internal::Compare_blinding_distance_2<Interval_kernel>, C2E, C2A>;
+  /// The way from the centroid of a triangle to its circumcenter, for a walk along it (the
+  /// natural-neighbour coordinates tag the faces of a virtual star so): made from p, q, r, it
+  /// answers `side_of_point(x)`, the orientation of centroid, circumcenter and x, and
+  /// `side_of_circumcenter(a, b)`, the orientation of a, b and the circumcenter, filtered, the
+  /// circumcenter never constructed.
+  using Dual_segment_2 =
+      internal::Filtered_dual_segment_2<K, Interval_kernel, Exact_kernel, C2A, C2E>;
 
   /// The circumcenter of pqr, as CGAL computes it (relative to p), on differences rescaled by
   /// a power of two: exact, so the result is CGAL's to the bit whenever CGAL's does not
@@ -205,6 +212,17 @@ struct Bvd_traits_2 : K {
   }
   /// the clip point functor
   Construct_clip_point_2 construct_clip_point_2_object() const { return Construct_clip_point_2(); }
+  /// a face's way from its centroid to its circumcenter
+  struct Construct_dual_segment_2 {
+    /// \pre p, q, r are not collinear.
+    Dual_segment_2 operator()(const Point_2& p, const Point_2& q, const Point_2& r) const {
+      return Dual_segment_2(p, q, r);
+    }
+  };
+  /// the dual segment functor
+  Construct_dual_segment_2 construct_dual_segment_2_object() const {
+    return Construct_dual_segment_2();
+  }
 
   /// @}
 

@@ -3,8 +3,12 @@
 #ifndef CVT_2_INTERNAL_BLINDNESS_PREDICATES_H
 #define CVT_2_INTERNAL_BLINDNESS_PREDICATES_H
 
+#include <CGAL/FPU.h>
+#include <CGAL/Uncertain.h>
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
+
+#include <optional>
 
 namespace CVT_2 {
 namespace internal {
@@ -41,16 +45,21 @@ struct Triangle_dual_segment_2 {
   // The sign of orientation(a, b, c).
   CGAL::Sign side_of_circumcenter(const typename K::Point_2& a,
                                   const typename K::Point_2& b) const {
+    return side_of_circumcenter_uncertain(a, b);
+  }
+  auto side_of_circumcenter_uncertain(const typename K::Point_2& a,
+                                      const typename K::Point_2& b) const {
     const RT ax = a.x() - px, ay = a.y() - py, dx = b.x() - a.x(), dy = b.y() - a.y();
-    const CGAL::Sign s = CGAL::sign(dx * (ny - den * ay) - dy * (nx - den * ax));
-    return s * CGAL::sign(den);
+    return CGAL::sign(dx * (ny - den * ay) - dy * (nx - den * ax)) * CGAL::sign(den);
   }
   // The sign of orientation(g, c, x).
   CGAL::Sign side_of_point(const typename K::Point_2& x) const {
+    return side_of_point_uncertain(x);
+  }
+  auto side_of_point_uncertain(const typename K::Point_2& x) const {
     const RT ux = RT(3) * nx - den * gx, uy = RT(3) * ny - den * gy;          // 3 den (c - g)
     const RT xx = RT(3) * (x.x() - px) - gx, xy = RT(3) * (x.y() - py) - gy;  // 3 (x - g)
-    const CGAL::Sign s = CGAL::sign(ux * xy - uy * xx);
-    return s * CGAL::sign(den);
+    return CGAL::sign(ux * xy - uy * xx) * CGAL::sign(den);
   }
   // Where [g, c] meets the line (a, b), as the parameter t = num / denom along g -> c, up to
   // the factor den common to all lines: t * den = num / denom.
@@ -110,6 +119,47 @@ struct Compare_blinding_distance_2 {
     const CGAL::Sign sd = CGAL::sign(s.den) * CGAL::sign(d1) * CGAL::sign(d2);
     return CGAL::Comparison_result(s12 * sd);
   }
+};
+
+// The way [g, c) of one triangle pqr, from its centroid to its circumcenter, for a walk along
+// it that asks many questions of it: built once in intervals; each question answered by them
+// or, when they cannot tell, exactly (the exact form built then, once).
+template <class K, class Interval_kernel, class Exact_kernel, class C2A, class C2E>
+class Filtered_dual_segment_2 {
+ public:
+  using Point_2 = typename K::Point_2;
+
+  Filtered_dual_segment_2(const Point_2& p, const Point_2& q, const Point_2& r) : m_p{p, q, r} {
+    CGAL::Protect_FPU_rounding<true> rounding;
+    m_interval.emplace(C2A()(p), C2A()(q), C2A()(r));
+  }
+  // The sign of orientation(g, c, x): where x lies from the way.
+  CGAL::Sign side_of_point(const Point_2& x) const {
+    {
+      CGAL::Protect_FPU_rounding<true> rounding;
+      const auto s = m_interval->side_of_point_uncertain(C2A()(x));
+      if (CGAL::is_certain(s)) return CGAL::get_certain(s);
+    }
+    return exact().side_of_point(C2E()(x));
+  }
+  // The sign of orientation(a, b, c): where the circumcenter lies from the line ab.
+  CGAL::Sign side_of_circumcenter(const Point_2& a, const Point_2& b) const {
+    {
+      CGAL::Protect_FPU_rounding<true> rounding;
+      const auto s = m_interval->side_of_circumcenter_uncertain(C2A()(a), C2A()(b));
+      if (CGAL::is_certain(s)) return CGAL::get_certain(s);
+    }
+    return exact().side_of_circumcenter(C2E()(a), C2E()(b));
+  }
+
+ private:
+  const Triangle_dual_segment_2<Exact_kernel>& exact() const {
+    if (!m_exact) m_exact.emplace(C2E()(m_p[0]), C2E()(m_p[1]), C2E()(m_p[2]));
+    return *m_exact;
+  }
+  Point_2 m_p[3];
+  std::optional<Triangle_dual_segment_2<Interval_kernel>> m_interval;
+  mutable std::optional<Triangle_dual_segment_2<Exact_kernel>> m_exact;
 };
 
 }  // namespace internal

@@ -1,0 +1,645 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Virtual_insertion: the bounded Voronoi diagram as it would be with one more point, without
+// inserting it: what natural-neighbour coordinates are made of.
+#ifndef CVT_2_INTERNAL_VIRTUAL_INSERTION_H
+#define CVT_2_INTERNAL_VIRTUAL_INSERTION_H
+
+#include <CVT_2/internal/construct_cell.h>
+#include <CVT_2/internal/tag_blind_faces.h>
+#include <CVT_2/mark_domain_2.h>
+
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/enum.h>
+
+#include <boost/container/small_vector.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace CVT_2 {
+namespace internal {
+
+// Inserting a point q into a constrained Delaunay triangulation removes its conflict zone (the
+// domain faces whose circumcircles hold q, connected to q's face through unconstrained edges)
+// and fills it with the star of q: a face (q, s, t) for each edge (s, t) of the zone's rim. This
+// class finds the zone and the star, tags the star's faces blind as Algorithm 1 would (a walk
+// along each face's way from its centroid to its circumcenter, through the star and the faces
+// around it, to the first constraint it meets), and gives the fans Algorithm 2 walks: around q,
+// and around each rim vertex before and after the insertion. The triangulation is not changed,
+// so queries may run at once on several threads, each with its own Virtual_insertion.
+//
+// A q on a constrained edge (a, b) splits it: the star has a gap there, its edges (q, a) and
+// (q, b) are constrained, halves of (a, b).
+template <class Diagram>
+class Virtual_insertion {
+ public:
+  using CDT = typename Diagram::Triangulation;
+  using Traits = typename Diagram::Geom_traits;
+  using Point_2 = typename CDT::Point_2;
+  using FT = typename CDT::Geom_traits::FT;
+  using Vertex_handle = typename CDT::Vertex_handle;  // the null handle stands for q
+  using Face_handle = typename CDT::Face_handle;
+  using Edge = typename CDT::Edge;
+  using Type = typename Diagram::Cell_vertex::Type;
+
+  // A constrained edge by its ends; a half of the edge q splits keeps that whole edge, which it
+  // is the same constraint as (one straight barrier), but not the other half.
+  struct Constraint {
+    Vertex_handle a, b, whole_a, whole_b;
+  };
+
+  // A face of the star: (q, s, t), counterclockwise; `inner` is the face of the zone whose edge
+  // `index` is the rim edge (s, t).
+  struct Star_face {
+    Vertex_handle s, t;
+    Face_handle inner;
+    int index;
+    bool rim_constrained;     // the rim edge (s, t) is a constraint
+    bool constrained_after;   // (q, t) is a half of the split constraint
+    bool constrained_before;  // (q, s) is
+    bool blind = false;
+    Constraint blinding;
+    Point_2 center;  // the circumcenter of (q, s, t)
+  };
+
+  enum Location { OUTSIDE, ON_VERTEX, INSIDE };
+
+  explicit Virtual_insertion(const Diagram& diagram)
+      : m_cdt(&diagram.triangulation()),
+        m_traits(diagram.geom_traits()),
+        m_circumcenter(m_traits.construct_circumcenter_2_object()),
+        m_clip_point(m_traits.construct_clip_point_2_object()) {}
+
+  // Queries on another diagram (of the same type), the buffers kept.
+  void attach(const Diagram& diagram) {
+    m_cdt = &diagram.triangulation();
+    m_traits = diagram.geom_traits();
+    m_circumcenter = m_traits.construct_circumcenter_2_object();
+    m_clip_point = m_traits.construct_clip_point_2_object();
+  }
+
+  // Inserts q virtually; `hint` (updated) is a face near q. OUTSIDE: q is not in the closed
+  // domain; ON_VERTEX: q is a vertex, vertex(); INSIDE: the star is built.
+  Location insert(const Point_2& q, Face_handle& hint);
+
+  const Point_2& query() const { return m_q; }
+  Vertex_handle vertex() const { return m_vertex; }
+  const std::vector<Star_face>& star() const { return m_star; }
+  bool in_conflict(Face_handle f) const {
+    return std::binary_search(m_conflict.begin(), m_conflict.end(), f, less_face);
+  }
+  const Point_2& point(Vertex_handle v) const { return v == Vertex_handle() ? m_q : v->point(); }
+
+  // The fans, as internal::fan_chain() reads them.
+  class Query_fan;     // around q
+  class Neighbor_fan;  // around a rim vertex, before or after the insertion
+
+  // The circumcenter of a face of the triangulation, built once a query.
+  const Point_2& circumcenter(Face_handle f) const {
+    for (const auto& [g, c] : m_centers)
+      if (g == f) return c;
+    m_centers.emplace_back(
+        f, m_circumcenter(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()));
+    return m_centers.back().second;
+  }
+
+  // The rim vertices, each once, in the order of the star: q's natural neighbours.
+  const std::vector<Vertex_handle>& rim() const { return m_rim; }
+
+  bool same(const Constraint& x, const Constraint& y) const {
+    const bool x_half = x.a == Vertex_handle() || x.b == Vertex_handle();
+    const bool y_half = y.a == Vertex_handle() || y.b == Vertex_handle();
+    if (x_half && y_half) return ends_equal(x.a, x.b, y.a, y.b);
+    return ends_equal(x.whole_a, x.whole_b, y.whole_a, y.whole_b);
+  }
+  Constraint real_constraint(const Edge& e) const {
+    const Vertex_handle a = e.first->vertex(CDT::ccw(e.second));
+    const Vertex_handle b = e.first->vertex(CDT::cw(e.second));
+    return {a, b, a, b};
+  }
+  Constraint half(Vertex_handle end) const { return {Vertex_handle(), end, m_split_a, m_split_b}; }
+
+ private:
+  static bool less_face(Face_handle f, Face_handle g) { return &*f < &*g; }
+  static bool ends_equal(Vertex_handle a, Vertex_handle b, Vertex_handle c, Vertex_handle d) {
+    return (a == c && b == d) || (a == d && b == c);
+  }
+  void find_conflict_zone(const std::vector<Face_handle>& seeds);
+  bool build_star();
+  void tag_star_face(Star_face& f) const;
+
+  const CDT* m_cdt;
+  Traits m_traits;
+  decltype(std::declval<const Traits&>().construct_circumcenter_2_object()) m_circumcenter;
+  decltype(std::declval<const Traits&>().construct_clip_point_2_object()) m_clip_point;
+  mutable std::vector<std::pair<Face_handle, Point_2>> m_centers;
+  Point_2 m_q;
+  Vertex_handle m_vertex;
+  Edge m_split;                         // the constrained edge q lies on, if any
+  Vertex_handle m_split_a, m_split_b;   // its ends
+  std::vector<Face_handle> m_conflict;  // sorted by address, for lookups
+  std::vector<Star_face> m_star;        // around q, counterclockwise
+  std::vector<Vertex_handle> m_rim;
+  std::vector<Face_handle> m_stack;
+  std::vector<Star_face> m_edges;  // build_star()'s
+  std::vector<char> m_used;
+};
+
+template <class Diagram>
+auto Virtual_insertion<Diagram>::insert(const Point_2& q, Face_handle& hint) -> Location {
+  m_q = q;
+  m_vertex = Vertex_handle();
+  m_split = Edge();
+  m_split_a = m_split_b = Vertex_handle();
+  m_conflict.clear();
+  m_star.clear();
+  m_rim.clear();
+  m_centers.clear();
+  if (m_cdt->dimension() < 2) return OUTSIDE;
+  typename CDT::Locate_type lt;
+  int li;
+  const Face_handle f = m_cdt->locate(q, lt, li, hint);
+  hint = f;
+  std::vector<Face_handle> seeds;
+  switch (lt) {
+    case CDT::VERTEX:
+      m_vertex = f->vertex(li);
+      return has_domain_face(*m_cdt, m_vertex) ? ON_VERTEX : OUTSIDE;
+    case CDT::FACE:
+      if (!f->is_inside_domain()) return OUTSIDE;
+      seeds.push_back(f);
+      break;
+    case CDT::EDGE: {
+      const Face_handle g = f->neighbor(li);
+      if (f->is_inside_domain()) seeds.push_back(f);
+      if (g->is_inside_domain() && !m_cdt->is_infinite(g)) seeds.push_back(g);
+      if (seeds.empty()) return OUTSIDE;
+      if (f->is_constrained(li)) {
+        m_split = Edge(f, li);
+        m_split_a = f->vertex(CDT::ccw(li));
+        m_split_b = f->vertex(CDT::cw(li));
+      }
+      break;
+    }
+    default:
+      return OUTSIDE;
+  }
+  find_conflict_zone(seeds);
+  if (!build_star()) return OUTSIDE;  // not reached on a valid triangulation
+  for (Star_face& s : m_star) {
+    s.center = m_circumcenter(q, point(s.s), point(s.t));
+    tag_star_face(s);
+  }
+  return INSIDE;
+}
+
+// The domain faces whose circumcircles hold q (perturbed as CGAL's insertion is), connected to
+// the seeds through unconstrained edges; a seed holds q on its closure. Each edge of the zone
+// is classified as its face is taken: the rim edges (constrained, or to a face not in conflict)
+// go to m_edges, but for the constraint q splits.
+template <class Diagram>
+void Virtual_insertion<Diagram>::find_conflict_zone(const std::vector<Face_handle>& seeds) {
+  m_stack = seeds;
+  m_conflict = seeds;
+  m_edges.clear();
+  std::sort(m_conflict.begin(), m_conflict.end(), less_face);
+  const bool split = m_split.first != Face_handle();
+  while (!m_stack.empty()) {
+    const Face_handle f = m_stack.back();
+    m_stack.pop_back();
+    for (int i = 0; i < 3; ++i) {
+      const Face_handle n = f->neighbor(i);
+      const bool constrained = f->is_constrained(i);
+      if (!constrained && !m_cdt->is_infinite(n) && n->is_inside_domain()) {
+        if (in_conflict(n)) continue;
+        if (m_cdt->side_of_oriented_circle(n, m_q, true) == CGAL::ON_POSITIVE_SIDE) {
+          m_conflict.insert(std::upper_bound(m_conflict.begin(), m_conflict.end(), n, less_face),
+                            n);
+          m_stack.push_back(n);
+          continue;
+        }
+      }
+      const Vertex_handle s = f->vertex(CDT::ccw(i)), t = f->vertex(CDT::cw(i));
+      if (split && ends_equal(s, t, m_split_a, m_split_b)) continue;  // not a rim edge
+      Star_face e;
+      e.s = s, e.t = t, e.inner = f, e.index = i;
+      e.rim_constrained = constrained;
+      e.constrained_after = e.constrained_before = false;
+      m_edges.push_back(e);
+    }
+  }
+}
+
+// The rim of the zone, counterclockwise around q, as faces of the star; with a split
+// constraint, each side's chain from one end of it to the other.
+template <class Diagram>
+bool Virtual_insertion<Diagram>::build_star() {
+  const std::vector<Star_face>& edges = m_edges;
+  // Chains: a rim edge follows the one that ends where it starts. With a split, the chains
+  // start at the rim edges that start at an end of the split constraint.
+  const auto next_of = [&](Vertex_handle t) {
+    for (std::size_t k = 0; k < edges.size(); ++k)
+      if (edges[k].s == t) return k;
+    return edges.size();
+  };
+  std::vector<char>& used = m_used;
+  used.assign(edges.size(), 0);
+  const bool split = m_split.first != Face_handle();
+  const auto follow = [&](std::size_t k) {
+    while (k < edges.size() && !used[k]) {
+      used[k] = 1;
+      m_star.push_back(edges[k]);
+      if (split && (edges[k].t == m_split_a || edges[k].t == m_split_b)) return;  // a chain ends
+      k = next_of(edges[k].t);
+    }
+  };
+  if (!split) {
+    if (edges.empty()) return false;
+    follow(0);
+  } else {
+    for (const Vertex_handle end : {m_split_b, m_split_a}) {
+      const std::size_t k = next_of(end);
+      if (k == edges.size() || used[k]) continue;
+      const std::size_t first = m_star.size();
+      follow(k);
+      m_star[first].constrained_before = true;
+      m_star.back().constrained_after = true;
+    }
+  }
+  if (m_star.size() != edges.size()) return false;
+  for (const Star_face& s : m_star)
+    if (std::find(m_rim.begin(), m_rim.end(), s.s) == m_rim.end()) m_rim.push_back(s.s);
+  for (const Star_face& s : m_star)
+    if (std::find(m_rim.begin(), m_rim.end(), s.t) == m_rim.end()) m_rim.push_back(s.t);
+  return true;
+}
+
+// The way [g, c) of triangle pqr in floating point, c the circumcenter as the traits build it
+// (off by at most 2^-30 of pqr's shortest side, then rounded), with a bound on the error of each
+// orientation: a sign beyond its bound is exact; the others are left to the exact predicates.
+// Most star faces are decided so: their circumcenter is well inside them or the next face.
+template <class Point_2>
+class Approximate_way {
+ public:
+  Approximate_way(const Point_2& p, const Point_2& q, const Point_2& r, const Point_2& c)
+      : m_cx(CGAL::to_double(c.x())), m_cy(CGAL::to_double(c.y())) {
+    const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(q.x()), CGAL::to_double(r.x())};
+    const double y[3] = {CGAL::to_double(p.y()), CGAL::to_double(q.y()), CGAL::to_double(r.y())};
+    m_gx = (x[0] + x[1] + x[2]) / 3, m_gy = (y[0] + y[1] + y[2]) / 3;
+    double shortest = HUGE_VAL, size = 0;
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3;
+      shortest = std::min(shortest, std::abs(x[j] - x[i]) + std::abs(y[j] - y[i]));
+      size += std::abs(x[i]) + std::abs(y[i]);
+    }
+    m_ec = 0x1.0p-29 * shortest + 0x1.0p-51 * (std::abs(m_cx) + std::abs(m_cy));
+    m_eg = 0x1.0p-50 * size;
+  }
+  // The sign of orientation(a, b, c), if sure.
+  bool beyond(const Point_2& a, const Point_2& b, CGAL::Sign& sign) const {
+    const double ax = CGAL::to_double(a.x()), ay = CGAL::to_double(a.y());
+    const double ux = CGAL::to_double(b.x()) - ax, uy = CGAL::to_double(b.y()) - ay;
+    const double wx = m_cx - ax, wy = m_cy - ay;
+    const double o = ux * wy - uy * wx;
+    const double bound = 2 * (std::abs(ux) + std::abs(uy)) * m_ec +
+                         0x1.0p-50 * (std::abs(ux * wy) + std::abs(uy * wx)) + tiny;
+    return sure(o, bound, sign);
+  }
+  // The sign of orientation(g, c, x), if sure.
+  bool side(const Point_2& x, CGAL::Sign& sign) const {
+    const double dx = m_cx - m_gx, dy = m_cy - m_gy;
+    const double ex = CGAL::to_double(x.x()) - m_gx, ey = CGAL::to_double(x.y()) - m_gy;
+    const double o = dx * ey - dy * ex;
+    const double bound =
+        2 * ((std::abs(ex) + std::abs(ey)) * (m_ec + m_eg) + (std::abs(dx) + std::abs(dy)) * m_eg) +
+        0x1.0p-50 * (std::abs(dx * ey) + std::abs(dy * ex)) + tiny;
+    return sure(o, bound, sign);
+  }
+  // Whether c lies inside pqr (counterclockwise), surely: then no constraint is on the way.
+  bool inside(const Point_2& p, const Point_2& q, const Point_2& r) const {
+    CGAL::Sign s;
+    return beyond(p, q, s) && s == CGAL::POSITIVE && beyond(q, r, s) && s == CGAL::POSITIVE &&
+           beyond(r, p, s) && s == CGAL::POSITIVE;
+  }
+
+ private:
+  static constexpr double tiny = 0x1.0p-1000;  // rounding below the normal range
+  static bool sure(double o, double bound, CGAL::Sign& sign) {
+    if (!(std::abs(o) > bound) || !(bound < HUGE_VAL)) return false;  // NaN and overflow too
+    sign = o > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
+    return true;
+  }
+  double m_cx, m_cy, m_gx, m_gy, m_ec, m_eg;
+};
+
+// Algorithm 1 for one face of the star: the first constraint that its way from the centroid g
+// to the circumcenter c meets, found by walking along [g, c) through the triangles it crosses:
+// those of the star, then those of the triangulation around it. A triangle's exit is the edge
+// c lies beyond and the way crosses (by the side of the vertex between two such edges); where
+// the way goes through a vertex, a constraint there meets it (the segments are closed).
+template <class Diagram>
+void Virtual_insertion<Diagram>::tag_star_face(Star_face& face) const {
+  const Point_2& p0 = m_q;
+  const Point_2& p1 = point(face.s);
+  const Point_2& p2 = point(face.t);
+  face.blind = false;
+  const Approximate_way<Point_2> approximate(p0, p1, p2, face.center);
+  if (approximate.inside(p0, p1, p2)) return;
+  std::optional<typename Traits::Dual_segment_2> way;  // exact, built if asked
+  const auto exact = [&]() -> const typename Traits::Dual_segment_2& {
+    if (!way) way.emplace(m_traits.construct_dual_segment_2_object()(p0, p1, p2));
+    return *way;
+  };
+  const auto side = [&](const Point_2& x) {
+    CGAL::Sign s;
+    return approximate.side(x, s) ? s : exact().side_of_point(x);
+  };
+  const auto beyond = [&](const Point_2& a, const Point_2& b) {
+    CGAL::Sign s;
+    return approximate.beyond(a, b, s) ? s : exact().side_of_circumcenter(a, b);
+  };
+  // A triangle the way crosses: a face of the star or of the triangulation, its vertices
+  // counterclockwise (the null handle is q); what lies across each edge is found when asked.
+  struct Triangle {
+    Vertex_handle v[3];
+    int star;  // the face of the star, or -1
+    Face_handle real;
+  };
+  const auto star_triangle = [&](int k) {
+    const Star_face& s = m_star[std::size_t(k)];
+    return Triangle{{Vertex_handle(), s.s, s.t}, k, Face_handle()};
+  };
+  const auto real_triangle = [&](Face_handle f) {
+    return Triangle{{f->vertex(0), f->vertex(1), f->vertex(2)}, -1, f};
+  };
+  // Edge i of a star face: 0 the rim edge, 1 (t, q), 2 (q, s).
+  const auto constrained = [&](const Triangle& t, int i) {
+    if (t.star < 0) return t.real->is_constrained(i);
+    const Star_face& s = m_star[std::size_t(t.star)];
+    return i == 0 ? s.rim_constrained : i == 1 ? s.constrained_after : s.constrained_before;
+  };
+  const auto constraint = [&](const Triangle& t, int i) {
+    if (t.star < 0) return real_constraint(Edge(t.real, i));
+    const Star_face& s = m_star[std::size_t(t.star)];
+    return i == 0 ? real_constraint(Edge(s.inner, s.index)) : half(i == 1 ? s.t : s.s);
+  };
+  const auto across = [&](const Triangle& t, int i) {
+    const int n = int(m_star.size());
+    if (t.star >= 0) {
+      const Star_face& s = m_star[std::size_t(t.star)];
+      if (i == 0) return real_triangle(s.inner->neighbor(s.index));
+      return star_triangle(i == 1 ? (t.star + 1) % n : (t.star + n - 1) % n);
+    }
+    const Face_handle f = t.real->neighbor(i);
+    if (!t.real->is_constrained(i) && in_conflict(f)) {  // into the star: the face of that edge
+      const Vertex_handle a = t.real->vertex(CDT::cw(i)), b = t.real->vertex(CDT::ccw(i));
+      for (int k = 0; k < n; ++k)
+        if (m_star[std::size_t(k)].s == a && m_star[std::size_t(k)].t == b) return star_triangle(k);
+    }
+    return real_triangle(f);
+  };
+  // Which constraint ends at vertex x, in the triangulation with q: the halves at q or at an end
+  // of the split constraint, the others as they are (a tie at x: the first by its far end).
+  const auto constraint_at = [&](Vertex_handle x, Constraint& out) {
+    bool found = false;
+    const auto consider = [&](const Constraint& c, Vertex_handle far) {
+      if (!found ||
+          CGAL::compare_xy(point(far), point(out.a == x ? out.b : out.a)) == CGAL::SMALLER)
+        out = c, found = true;
+    };
+    if (x == Vertex_handle()) {
+      if (m_split_a != Vertex_handle())
+        consider(half(m_split_a), m_split_a), consider(half(m_split_b), m_split_b);
+      return found;
+    }
+    if (x == m_split_a || x == m_split_b) consider(half(x), Vertex_handle());
+    auto ec = m_cdt->incident_edges(x), done = ec;
+    do {
+      const Edge e = *ec;
+      if (!m_cdt->is_constrained(e)) continue;
+      const Constraint c = real_constraint(e);
+      if (ends_equal(c.a, c.b, m_split_a, m_split_b)) continue;  // split: its halves count
+      consider(c, c.a == x ? c.b : c.a);
+    } while (++ec != done);
+    return found;
+  };
+
+  Triangle t = star_triangle(int(&face - m_star.data()));
+  int entered = -1;
+  for (std::size_t steps = 0; steps < 4 * (m_cdt->number_of_faces() + m_star.size()) + 16;
+       ++steps) {
+    int exit = -1;
+    Vertex_handle through = Vertex_handle();
+    bool through_vertex = false;
+    int candidates[2], n = 0;
+    for (int i = 0; i < 3; ++i) {
+      if (i == entered) continue;
+      const Point_2& a = point(t.v[(i + 1) % 3]);
+      const Point_2& b = point(t.v[(i + 2) % 3]);
+      if (beyond(a, b) == CGAL::NEGATIVE) candidates[n++] = i;
+    }
+    if (n == 0) return;  // c inside the triangle or on its boundary: seen
+    if (n == 1) {
+      exit = candidates[0];
+    } else {  // c beyond the vertex x the two edges share: the side of x says which
+      const int i = candidates[0], j = candidates[1];
+      const int x = 3 - i - j;  // the vertex shared by the edges opposite i and j
+      const CGAL::Sign sx = side(point(t.v[x]));
+      // The edge opposite i runs v[i+1] -> v[i+2]; the way leaves through the one whose first
+      // end is on its left and second on its right.
+      const auto leaves = [&](int e) {
+        return side(point(t.v[(e + 1) % 3])) != CGAL::NEGATIVE &&
+               side(point(t.v[(e + 2) % 3])) != CGAL::POSITIVE;
+      };
+      if (sx == CGAL::ZERO) {
+        through_vertex = true;
+        through = t.v[x];
+      }
+      exit = leaves(i) ? i : j;
+    }
+    // The way may go through an end of the exit edge.
+    if (!through_vertex)
+      for (const int e : {(exit + 1) % 3, (exit + 2) % 3})
+        if (side(point(t.v[e])) == CGAL::ZERO) through_vertex = true, through = t.v[e];
+    if (constrained(t, exit)) {
+      face.blind = true;
+      face.blinding = constraint(t, exit);
+      return;
+    }
+    if (through_vertex) {
+      Constraint c;
+      if (constraint_at(through, c)) {
+        face.blind = true;
+        face.blinding = c;
+        return;
+      }
+    }
+    // Into the triangle across the exit edge, entered through its edge of the same two ends.
+    const Vertex_handle ea = t.v[(exit + 1) % 3], eb = t.v[(exit + 2) % 3];
+    t = across(t, exit);
+    entered = -1;
+    for (int i = 0; i < 3; ++i)
+      if (ends_equal(t.v[(i + 1) % 3], t.v[(i + 2) % 3], ea, eb)) entered = i;
+    if (t.star < 0 && (m_cdt->is_infinite(t.real) || !t.real->is_inside_domain()))
+      return;  // left the domain without a constraint: not reached on a marked domain
+  }
+}
+
+// The faces of the star around q, as fan_chain() reads them.
+template <class Diagram>
+class Virtual_insertion<Diagram>::Query_fan {
+ public:
+  using Vertex = Vertex_handle;
+  using Constraint = typename Virtual_insertion::Constraint;
+  using Point_2 = typename Virtual_insertion::Point_2;
+  using Type = typename Virtual_insertion::Type;
+
+  explicit Query_fan(const Virtual_insertion& vi) : m_vi(vi) {}
+
+  std::size_t size() const { return m_vi.m_star.size(); }
+  bool starts_wedges() const { return m_vi.m_split_a != Vertex_handle(); }
+  bool inside(std::size_t) const { return true; }
+  bool blind(std::size_t j) const { return face(j).blind; }
+  Constraint blinding(std::size_t j) const { return face(j).blinding; }
+  const Point_2& circumcenter(std::size_t j) const { return face(j).center; }
+  Vertex after(std::size_t j) const { return face(j).t; }
+  Vertex before(std::size_t j) const { return face(j).s; }
+  Constraint edge_after(std::size_t j) const { return m_vi.half(face(j).t); }
+  Constraint edge_before(std::size_t j) const { return m_vi.half(face(j).s); }
+  bool constrained_after(std::size_t j) const { return face(j).constrained_after; }
+  bool same(const Constraint& a, const Constraint& b) const { return m_vi.same(a, b); }
+  Point_2 clip_point(Vertex w, const Constraint& c) const {
+    return m_vi.m_clip_point(m_vi.m_q, m_vi.point(w), m_vi.point(c.a), m_vi.point(c.b));
+  }
+  Point_2 midpoint(Vertex w) const { return CGAL::midpoint(m_vi.m_q, m_vi.point(w)); }
+  const Point_2& generator() const { return m_vi.m_q; }
+
+ private:
+  const Star_face& face(std::size_t j) const { return m_vi.m_star[j]; }
+  const Virtual_insertion& m_vi;
+};
+
+// The faces around a rim vertex i, as fan_chain() reads them: before the insertion, its faces
+// in the triangulation; after, the run of them in the zone replaced by the faces of the star at
+// i, (q, i, t) then (q, s, i); from a face that follows a constraint if i has one.
+template <class Diagram>
+class Virtual_insertion<Diagram>::Neighbor_fan {
+ public:
+  using Vertex = Vertex_handle;
+  using Constraint = typename Virtual_insertion::Constraint;
+  using Point_2 = typename Virtual_insertion::Point_2;
+  using Type = typename Virtual_insertion::Type;
+
+  Neighbor_fan(const Virtual_insertion& vi, Vertex_handle i, bool after_insertion)
+      : m_vi(vi), m_i(i) {
+    // The faces around i, from one out of the zone, the run in the zone replaced.
+    boost::container::small_vector<Face_handle, 16> around;
+    auto fc = vi.m_cdt->incident_faces(i), done = fc;
+    do around.push_back(fc);
+    while (++fc != done);
+    std::size_t start = 0;
+    while (start < around.size() && vi.in_conflict(around[start])) ++start;
+    bool replaced = false;
+    for (std::size_t n = 0; n < around.size(); ++n) {
+      const Face_handle f = around[(start + n) % around.size()];
+      if (!after_insertion || !vi.in_conflict(f)) {
+        m_entries.push_back({f, f->index(i), -1});
+      } else if (!replaced) {
+        replaced = true;
+        for (std::size_t k = 0; k < vi.m_star.size(); ++k)
+          if (vi.m_star[k].s == i) m_entries.push_back({Face_handle(), 0, int(k)});
+        for (std::size_t k = 0; k < vi.m_star.size(); ++k)
+          if (vi.m_star[k].t == i) m_entries.push_back({Face_handle(), 0, int(k)});
+      }
+    }
+    for (std::size_t j = 0; j < m_entries.size() && !m_wedges; ++j)
+      if (constrained_before_entry(j)) m_wedges = true, m_first = j;
+  }
+
+  std::size_t size() const { return m_entries.size(); }
+  bool starts_wedges() const { return m_wedges; }
+  bool inside(std::size_t j) const {
+    return entry(j).star >= 0 || entry(j).real->is_inside_domain();
+  }
+  bool blind(std::size_t j) const {
+    return entry(j).star >= 0 ? star(j).blind : entry(j).real->is_blinded();
+  }
+  Constraint blinding(std::size_t j) const {
+    return entry(j).star >= 0 ? star(j).blinding
+                              : m_vi.real_constraint(entry(j).real->blinding_edge());
+  }
+  const Point_2& circumcenter(std::size_t j) const {
+    return entry(j).star >= 0 ? star(j).center : m_vi.circumcenter(entry(j).real);
+  }
+  // Whether face j's circumcenter is the same before and after the insertion.
+  bool stable(std::size_t j) const { return entry(j).star < 0 && !m_vi.in_conflict(entry(j).real); }
+  // For (q, i, t): before t, after q; for (q, s, i): before q, after s.
+  Vertex after(std::size_t j) const {
+    const Entry& e = entry(j);
+    if (e.star < 0) return e.real->vertex(CDT::cw(e.index));
+    return star(j).s == m_i ? Vertex_handle() : star(j).s;
+  }
+  Vertex before(std::size_t j) const {
+    const Entry& e = entry(j);
+    if (e.star < 0) return e.real->vertex(CDT::ccw(e.index));
+    return star(j).s == m_i ? star(j).t : Vertex_handle();
+  }
+  Constraint edge_after(std::size_t j) const { return edge(j, true); }
+  Constraint edge_before(std::size_t j) const { return edge(j, false); }
+  bool constrained_after(std::size_t j) const { return constrained(j, true); }
+  bool same(const Constraint& a, const Constraint& b) const { return m_vi.same(a, b); }
+  Point_2 clip_point(Vertex w, const Constraint& c) const {
+    return m_vi.m_clip_point(m_i->point(), m_vi.point(w), m_vi.point(c.a), m_vi.point(c.b));
+  }
+  Point_2 midpoint(Vertex w) const { return CGAL::midpoint(m_i->point(), m_vi.point(w)); }
+  const Point_2& generator() const { return m_i->point(); }
+
+ private:
+  struct Entry {
+    Face_handle real;
+    int index;  // of i in `real`
+    int star;   // a face of the star, or -1
+  };
+  const Entry& entry(std::size_t j) const {
+    const std::size_t k = m_entries.size();
+    return m_entries[m_first + j < k ? m_first + j : m_first + j - k];
+  }
+  const Star_face& star(std::size_t j) const { return m_vi.m_star[std::size_t(entry(j).star)]; }
+  bool constrained_before_entry(std::size_t j) const {  // before the rotation to m_first
+    const Entry& e = m_entries[j];
+    if (e.star < 0) return e.real->is_constrained(CDT::cw(e.index));
+    const Star_face& s = m_vi.m_star[std::size_t(e.star)];
+    return s.s == m_i ? s.rim_constrained : s.constrained_after;
+  }
+  // The edge of entry j at i after (true) or before (false) it, and whether it is constrained.
+  bool constrained(std::size_t j, bool after_it) const {
+    const Entry& e = entry(j);
+    if (e.star < 0) return e.real->is_constrained(after_it ? CDT::ccw(e.index) : CDT::cw(e.index));
+    const Star_face& s = star(j);
+    const bool rim_side = (s.s == m_i) != after_it;  // (q, i, t): the rim edge is before
+    return rim_side ? s.rim_constrained : (s.s == m_i ? s.constrained_before : s.constrained_after);
+  }
+  Constraint edge(std::size_t j, bool after_it) const {
+    const Entry& e = entry(j);
+    if (e.star < 0)
+      return m_vi.real_constraint(Edge(e.real, after_it ? CDT::ccw(e.index) : CDT::cw(e.index)));
+    const Star_face& s = star(j);
+    const bool rim_side = (s.s == m_i) != after_it;
+    if (rim_side) return m_vi.real_constraint(Edge(s.inner, s.index));
+    return m_vi.half(m_i);
+  }
+
+  const Virtual_insertion& m_vi;
+  Vertex_handle m_i;
+  boost::container::small_vector<Entry, 16> m_entries;
+  std::size_t m_first = 0;
+  bool m_wedges = false;
+};
+
+}  // namespace internal
+}  // namespace CVT_2
+
+#endif  // CVT_2_INTERNAL_VIRTUAL_INSERTION_H
