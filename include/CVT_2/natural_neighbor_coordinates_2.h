@@ -128,12 +128,6 @@ class Natural_neighbors {
         before.constrained_after)
       return false;
     const Vertex_handle i = before.t;
-    lost = 0;
-    // q, s, i, t on a circle: the two circumcenters are one, q's cell has no edge on the
-    // bisector of q and i, and i loses nothing (the polygon would be rounding)
-    if (CGAL::side_of_oriented_circle(m_insertion.query(), before.s->point(), i->point(),
-                                      after.t->point()) == CGAL::ON_ORIENTED_BOUNDARY)
-      return true;
     m_polygon.clear();
     m_polygon.push_back(after.center);
     Face_handle g = after.inner;  // holds the rim edge (i, t); the run turns counterclockwise
@@ -150,8 +144,19 @@ class Natural_neighbors {
     }
     m_polygon.push_back(before.center);
     const Point_2& o = m_polygon[0];
-    for (std::size_t k = 1; k + 1 < m_polygon.size(); ++k)
+    lost = 0;
+    FT extent = 0;
+    for (std::size_t k = 1; k + 1 < m_polygon.size(); ++k) {
       lost += triangle(o, m_polygon[k], m_polygon[k + 1]);
+      extent = (std::max)(
+          extent, CGAL::abs(m_polygon[k].x() - o.x()) + CGAL::abs(m_polygon[k].y() - o.y()));
+    }
+    // A loss at the level of rounding: if q, s, i, t lie on a circle, the two circumcenters are
+    // one, q's cell has no edge on the bisector of q and i, and i loses nothing, exactly.
+    if (CGAL::abs(lost) <= 0x1.0p-40 * extent * extent &&
+        CGAL::side_of_oriented_circle(m_insertion.query(), before.s->point(), i->point(),
+                                      after.t->point()) == CGAL::ON_ORIENTED_BOUNDARY)
+      lost = 0;
     return true;
   }
 
@@ -324,7 +329,7 @@ CGAL::Triple<OutputIterator, typename Diagram::FT, bool> natural_neighbor_coordi
 template <class Vertex_handle, class FT>
 struct Natural_neighbor_matrix_2 {
   std::vector<Vertex_handle> nodes;  ///< column j is node `nodes[j]`: the diagram's generators,
-                                     ///< in the order of `for_each_cell()`
+                                     ///< in the triangulation's order of vertices
   std::vector<std::size_t> row_offsets{0};  ///< row k: `[row_offsets[k], row_offsets[k + 1])`
   std::vector<std::size_t> columns;         ///< by row, increasing within a row
   std::vector<FT> values;                   ///< likewise
@@ -352,11 +357,14 @@ natural_neighbor_matrix_2(const Diagram& bvd, const PointRange& queries,
       choose_parameter(get_parameter(np, natural_neighbor_method_t()), SIBSON);
   const auto threads = choose_parameter(get_parameter(np, number_of_threads_t()), 0u);
   Natural_neighbor_matrix_2<Vertex_handle, FT> m;
+  const auto& cdt = bvd.triangulation();
   std::unordered_map<Vertex_handle, std::size_t> column;
-  bvd.for_each_cell([&](Vertex_handle v, const auto&) {
-    column.emplace(v, m.nodes.size());
-    m.nodes.push_back(v);
-  });
+  column.reserve(cdt.number_of_vertices());
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    if (bvd.has_cell(v)) {
+      column.emplace(v, m.nodes.size());
+      m.nodes.push_back(v);
+    }
   const std::vector<Point_2> q(std::begin(queries), std::end(queries));
   constexpr std::size_t chunk = 1024;
   const std::size_t chunks = (q.size() + chunk - 1) / chunk;

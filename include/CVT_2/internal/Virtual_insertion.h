@@ -16,7 +16,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <optional>
 #include <vector>
 
 namespace CVT_2 {
@@ -88,8 +87,11 @@ class Virtual_insertion {
   const Point_2& query() const { return m_q; }
   Vertex_handle vertex() const { return m_vertex; }
   const std::vector<Star_face>& star() const { return m_star; }
+  // A zone has 4 faces on average: a linear search; a large one (cocircular points) is sorted.
   bool in_conflict(Face_handle f) const {
-    return std::binary_search(m_conflict.begin(), m_conflict.end(), f, less_face);
+    if (m_sorted.empty())
+      return std::find(m_conflict.begin(), m_conflict.end(), f) != m_conflict.end();
+    return std::binary_search(m_sorted.begin(), m_sorted.end(), f, less_face);
   }
   const Point_2& point(Vertex_handle v) const { return v == Vertex_handle() ? m_q : v->point(); }
 
@@ -128,8 +130,27 @@ class Virtual_insertion {
     return (a == c && b == d) || (a == d && b == c);
   }
   void find_conflict_zone(const std::vector<Face_handle>& seeds);
+  void add_to_zone(Face_handle f) {
+    constexpr std::size_t small = 32;
+    m_conflict.push_back(f);
+    if (m_conflict.size() < small) return;
+    if (m_sorted.empty()) {
+      m_sorted = m_conflict;
+      std::sort(m_sorted.begin(), m_sorted.end(), less_face);
+    } else {
+      m_sorted.insert(std::upper_bound(m_sorted.begin(), m_sorted.end(), f, less_face), f);
+    }
+  }
   bool build_star();
   void tag_star_face(Star_face& f) const;
+  [[gnu::noinline]] CGAL::Sign exact_side(const Point_2& p, const Point_2& q, const Point_2& r,
+                                          const Point_2& x) const {
+    return m_traits.construct_dual_segment_2_object()(p, q, r).side_of_point(x);
+  }
+  [[gnu::noinline]] CGAL::Sign exact_beyond(const Point_2& p, const Point_2& q, const Point_2& r,
+                                            const Point_2& a, const Point_2& b) const {
+    return m_traits.construct_dual_segment_2_object()(p, q, r).side_of_circumcenter(a, b);
+  }
 
   const CDT* m_cdt;
   Traits m_traits;
@@ -140,10 +161,11 @@ class Virtual_insertion {
   Vertex_handle m_vertex;
   Edge m_split;                         // the constrained edge q lies on, if any
   Vertex_handle m_split_a, m_split_b;   // its ends
-  std::vector<Face_handle> m_conflict;  // sorted by address, for lookups
+  std::vector<Face_handle> m_conflict;  // the zone, as found
+  std::vector<Face_handle> m_sorted;    // the zone sorted by address, once it is large
   std::vector<Star_face> m_star;        // around q, counterclockwise
   std::vector<Vertex_handle> m_rim;
-  std::vector<Face_handle> m_stack;
+  std::vector<Face_handle> m_stack, m_seeds;
   std::vector<Star_face> m_edges;  // build_star()'s
   std::vector<char> m_used;
 };
@@ -163,7 +185,8 @@ auto Virtual_insertion<Diagram>::insert(const Point_2& q, Face_handle& hint) -> 
   int li;
   const Face_handle f = m_cdt->locate(q, lt, li, hint);
   hint = f;
-  std::vector<Face_handle> seeds;
+  std::vector<Face_handle>& seeds = m_seeds;
+  seeds.clear();
   switch (lt) {
     case CDT::VERTEX:
       m_vertex = f->vertex(li);
@@ -204,8 +227,8 @@ template <class Diagram>
 void Virtual_insertion<Diagram>::find_conflict_zone(const std::vector<Face_handle>& seeds) {
   m_stack = seeds;
   m_conflict = seeds;
+  m_sorted.clear();
   m_edges.clear();
-  std::sort(m_conflict.begin(), m_conflict.end(), less_face);
   const bool split = m_split.first != Face_handle();
   while (!m_stack.empty()) {
     const Face_handle f = m_stack.back();
@@ -216,8 +239,7 @@ void Virtual_insertion<Diagram>::find_conflict_zone(const std::vector<Face_handl
       if (!constrained && !m_cdt->is_infinite(n) && n->is_inside_domain()) {
         if (in_conflict(n)) continue;
         if (m_cdt->side_of_oriented_circle(n, m_q, true) == CGAL::ON_POSITIVE_SIDE) {
-          m_conflict.insert(std::upper_bound(m_conflict.begin(), m_conflict.end(), n, less_face),
-                            n);
+          add_to_zone(n);
           m_stack.push_back(n);
           continue;
         }
@@ -348,18 +370,14 @@ void Virtual_insertion<Diagram>::tag_star_face(Star_face& face) const {
   face.blind = false;
   const Approximate_way<Point_2> approximate(p0, p1, p2, face.center);
   if (approximate.inside(p0, p1, p2)) return;
-  std::optional<typename Traits::Dual_segment_2> way;  // exact, built if asked
-  const auto exact = [&]() -> const typename Traits::Dual_segment_2& {
-    if (!way) way.emplace(m_traits.construct_dual_segment_2_object()(p0, p1, p2));
-    return *way;
-  };
+  // where floating point cannot tell, the exact predicates (rare: out of line)
   const auto side = [&](const Point_2& x) {
     CGAL::Sign s;
-    return approximate.side(x, s) ? s : exact().side_of_point(x);
+    return approximate.side(x, s) ? s : exact_side(p0, p1, p2, x);
   };
   const auto beyond = [&](const Point_2& a, const Point_2& b) {
     CGAL::Sign s;
-    return approximate.beyond(a, b, s) ? s : exact().side_of_circumcenter(a, b);
+    return approximate.beyond(a, b, s) ? s : exact_beyond(p0, p1, p2, a, b);
   };
   // A triangle the way crosses: a face of the star or of the triangulation, its vertices
   // counterclockwise (the null handle is q); what lies across each edge is found when asked.
@@ -429,8 +447,10 @@ void Virtual_insertion<Diagram>::tag_star_face(Star_face& face) const {
 
   Triangle t = star_triangle(int(&face - m_star.data()));
   int entered = -1;
-  for (std::size_t steps = 0; steps < 4 * (m_cdt->number_of_faces() + m_star.size()) + 16;
-       ++steps) {
+  // a bound against a loop that cannot be (the TDS counts its faces; Triangulation_2 would
+  // circulate the hull to leave the infinite ones out)
+  const std::size_t most = 4 * (m_cdt->tds().number_of_faces() + m_star.size()) + 16;
+  for (std::size_t steps = 0; steps < most; ++steps) {
     int exit = -1;
     Vertex_handle through = Vertex_handle();
     bool through_vertex = false;
