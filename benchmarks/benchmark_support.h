@@ -18,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <string>
@@ -40,6 +41,13 @@ using Clock = std::chrono::steady_clock;
 const double nan = std::numeric_limits<double>::quiet_NaN();
 const double hexagon = 5.0 / (18.0 * std::sqrt(3.0));  // E N / A² of the hexagonal tiling
 const std::string square = "unit_square", massachusetts = "us_massachusetts_counties";
+
+// The machine's load, to print beside figures that depend on it.
+inline std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string one, five;
+  return in >> one >> five ? one + " (1 min), " + five + " (5 min)" : std::string("unknown");
+}
 
 inline double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();

@@ -368,12 +368,6 @@ bool write_convergence(const std::string& path, const std::vector<Case>& cases) 
   return bool(out);
 }
 
-std::string load_average() {
-  std::ifstream in("/proc/loadavg");
-  std::string one, five;
-  return in >> one >> five ? one + " (1 min), " + five + " (5 min)" : std::string("unknown");
-}
-
 }  // namespace
 
 int main(int argc, char* argv[]) {

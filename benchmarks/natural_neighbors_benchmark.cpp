@@ -29,7 +29,6 @@
 #include <cstdlib>
 #include <ctime>
 #include <exception>
-#include <fstream>
 #include <iterator>
 #include <sstream>
 #include <string>
@@ -277,12 +276,6 @@ void bm_natural_neighbors(benchmark::State& state, const std::string& name) {
     rows.push_back(r);
   else
     *it = r;
-}
-
-std::string load_average() {
-  std::ifstream in("/proc/loadavg");
-  std::string one, five;
-  return in >> one >> five ? one + " (1 min), " + five + " (5 min)" : std::string("unknown");
 }
 
 }  // namespace
