@@ -7,6 +7,7 @@
 #include <CVT_2/Uniform_density_2.h>
 
 #include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -341,10 +342,22 @@ TEST_CASE(
   for (const auto v : scaffold) b.cdt.remove(v);
   load_domain(a, "earcut_dude.poly");
   load_domain(b, "earcut_dude.poly");
-  std::vector<const void*> faces_b;
-  for (auto f = b.cdt.finite_faces_begin(); f != b.cdt.finite_faces_end(); ++f)
-    faces_b.push_back(&*f);
-  REQUIRE(!std::is_sorted(faces_b.begin(), faces_b.end()));  // another layout indeed
+  // Another layout indeed: the same triangles, visited (in the order of their addresses) in
+  // another order.
+  const auto triangles_in_memory_order = [](const Cdt& cdt) {
+    std::vector<std::array<Point, 3>> triangles;
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+      std::array<Point, 3> t{f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()};
+      std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+      triangles.push_back(t);
+    }
+    return triangles;
+  };
+  const auto triangles_a = triangles_in_memory_order(a.cdt);
+  const auto triangles_b = triangles_in_memory_order(b.cdt);
+  REQUIRE(std::is_permutation(triangles_a.begin(), triangles_a.end(), triangles_b.begin(),
+                              triangles_b.end()));
+  REQUIRE(triangles_a != triangles_b);
   for (const std::optional<double> size : {std::optional<double>(), std::optional<double>(2.5)}) {
     const Sizing mu_a(a.cdt, 0.2, size), mu_b(b.cdt, 0.2, size);
     CHECK(mu_a.segments() == mu_b.segments());
