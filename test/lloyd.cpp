@@ -475,7 +475,8 @@ TEST_CASE("a quadrature without nodes() runs twice on a batch density, to the sa
     load_domain(*d, "four_clusters.poly");
     insert_random_points(*d, 3000, 6);
   }
-  CVT_2::Lloyd_optimizer_2<Cdt, decltype(rho)> pointwise(a.cdt, rho);
+  CVT_2::Lloyd_optimizer_2<Cdt, decltype(rho), CVT_2::Midpoint_quadrature_2<K>> pointwise(a.cdt,
+                                                                                          rho);
   CVT_2::Lloyd_optimizer_2<Cdt, Batch, Call_only_quadrature> twice(b.cdt,
                                                                    Batch{rho, &batches, &points});
   for (const std::size_t resolution : {10, 40, 100}) {

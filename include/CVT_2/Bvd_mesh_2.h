@@ -147,6 +147,19 @@ class Bvd_mesh_2 {
   using Face_handle = typename Triangulation::Face_handle;
   using Tri_edge = typename Triangulation::Edge;
 
+  // Algorithm 2's fan around a generator, its circumcenters the mesh's, computed once a face.
+  struct Fan : internal::Cdt_fan<Triangulation, typename Diagram::Geom_traits, Cell_vertex> {
+    Fan(const Triangulation& cdt, const typename Diagram::Geom_traits& traits, Vertex_handle v,
+        const Bvd_mesh_2& mesh)
+        : internal::Cdt_fan<Triangulation, typename Diagram::Geom_traits, Cell_vertex>(cdt, traits,
+                                                                                       v),
+          mesh(mesh) {}
+    const Point_2& circumcenter(std::size_t j) const {
+      return mesh.m_points[mesh.center_number(this->face(j))];
+    }
+    const Bvd_mesh_2& mesh;
+  };
+
   // The identity of a cell vertex other than a circumcenter: the generator (kind 1) by its
   // cell, a clip point (kind 2) by the cells of its bisector and of its constraint's ends.
   struct Key {
@@ -174,6 +187,7 @@ class Bvd_mesh_2 {
   void number_cells_and_circumcenters(const Diagram& bvd,
                                       const internal::Face_chunks<Triangulation>& chunks,
                                       unsigned threads);
+  bool add_free_cell(const Triangulation& cdt, Vertex_handle v, Chunk_cells& out) const;
   template <class Raw>
   void add_cell(Vertex_handle v, const Raw& raw, Chunk_cells& out) const;
   Index out_edge(Vertex_handle v, const Cell_vertex& a, const Cell_vertex& b,
@@ -250,6 +264,18 @@ void Bvd_mesh_2<Diagram>::number_cells_and_circumcenters(
   if (m_cell_offsets.back() >= none || m_center_offsets.back() >= none)
     throw std::length_error("Bvd_mesh_2: more than 2^32 - 1 cells or vertices");
   m_number_of_circumcenters = m_center_offsets.back();
+  // Each circumcenter once (the cells pass would compute it in each of its three cells).
+  m_points.resize(m_number_of_circumcenters);
+  const auto circumcenter = bvd.geom_traits().construct_circumcenter_2_object();
+  chunks.for_each(
+      [&](std::size_t c, auto first, auto last) {
+        std::size_t i = m_center_offsets[c];
+        for (auto f = first; f != last; ++f)
+          if (!cdt.is_infinite(f) && f->is_inside_domain() && !f->is_blinded())
+            m_points[i++] =
+                circumcenter(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+      },
+      threads);
   m_generators.reserve(m_cell_offsets.back());
   for (const auto& g : generators) m_generators.insert(m_generators.end(), g.begin(), g.end());
 }
@@ -301,6 +327,36 @@ auto Bvd_mesh_2<Diagram>::out_edge(Vertex_handle v, const Cell_vertex& a, const 
   return cell_number(a.type == Cell_vertex::GENERATOR ? b.neighbor : a.neighbor);
 }
 
+// Most cells are Voronoi cells: v is on no constraint and all its faces see their
+// circumcenters. Algorithm 2 then gives the cycle of their circumcenters, each edge on the
+// bisector of v and the vertex the next face shares: read from the topology alone. False (and
+// nothing added) for any other cell, or one with two faces at one circumcenter (cocircular).
+template <class Diagram>
+bool Bvd_mesh_2<Diagram>::add_free_cell(const Triangulation& cdt, Vertex_handle v,
+                                        Chunk_cells& out) const {
+  const std::size_t first = out.entries.size();
+  auto f = cdt.incident_faces(v);
+  const auto done = f;
+  do {
+    const int i = f->index(v);
+    if (!f->is_inside_domain() || f->is_blinded() || f->is_constrained(Triangulation::ccw(i)) ||
+        cdt.is_infinite(f)) {
+      out.entries.resize(first);
+      return false;
+    }
+    out.entries.push_back({center_number(f), cell_number(f->vertex(Triangulation::cw(i)))});
+  } while (++f != done);
+  const std::size_t n = out.entries.size() - first;
+  for (std::size_t j = 0; j < n; ++j)
+    if (m_points[out.entries[first + j].vertex] ==
+        m_points[out.entries[first + (j + 1) % n].vertex]) {
+      out.entries.resize(first);
+      return false;
+    }
+  out.sizes.push_back(Index(n));
+  return true;
+}
+
 // The chain of v's cell into `out`: runs of equal points become one vertex (the others of the
 // run recorded as merged into it), with the edge that leaves the run.
 template <class Diagram>
@@ -331,24 +387,27 @@ Bvd_mesh_2<Diagram>::Bvd_mesh_2(const Diagram& bvd, unsigned threads) {
   number_cells_and_circumcenters(bvd, chunks, threads);
   // The cells, chunk by chunk, in the order of the numbering.
   std::vector<Chunk_cells> found(chunks.size());
-  m_points.resize(m_number_of_circumcenters);
   chunks.for_each(
-      [&](std::size_t c, auto first, auto last) {
+      [&](std::size_t c, auto, auto) {
         std::vector<Cell_vertex> raw;
-        internal::for_each_face_prefetched(first, last, [&](auto f) {
-          for (int i = 0; i < 3; ++i) {
-            const Vertex_handle v = f->vertex(i);
-            if (v->face() != f || cdt.is_infinite(v)) continue;
-            raw.clear();
-            internal::construct_cell_chain<Cell_vertex>(
-                cdt, bvd.geom_traits(), v, [&raw](const Cell_vertex& x) { raw.push_back(x); });
-            if (raw.empty()) continue;
-            for (const Cell_vertex& x : raw)  // each circumcenter written by one cell
-              if (x.type == Cell_vertex::CIRCUMCENTER && x.face->vertex(0) == v)
-                m_points[center_number(x.face)] = x.point;
-            add_cell(v, raw, found[c]);
-          }
-        });
+        const Vertex_handle* generators = m_generators.data() + m_cell_offsets[c];
+        found[c].sizes.reserve(m_cell_offsets[c + 1] - m_cell_offsets[c]);
+        found[c].entries.reserve(7 * (m_cell_offsets[c + 1] - m_cell_offsets[c]));
+        internal::for_each_star_prefetched(
+            m_cell_offsets[c + 1] - m_cell_offsets[c],
+            [generators](std::size_t k) { return generators[k]; },
+            [&](std::size_t k) {
+              const Vertex_handle v = generators[k];
+              if (add_free_cell(cdt, v, found[c])) return;
+              raw.clear();
+              const Fan fan(cdt, bvd.geom_traits(), v, *this);
+              internal::fan_chain(fan, [&](const Point_2& p, Vertex_type type, std::size_t j,
+                                           const Tri_edge& e, Vertex_handle w) {
+                raw.push_back(
+                    Cell_vertex{p, type, j < fan.size() ? fan.face(j) : Face_handle(), e, w});
+              });
+              add_cell(v, raw, found[c]);
+            });
       },
       threads);
   assemble(found, threads);
@@ -456,27 +515,34 @@ void Bvd_mesh_2<Diagram>::merge_vertices(const std::vector<std::pair<Index, Inde
   m_points.resize(next);
   m_types.resize(next);
   for (Index& i : m_cell_vertices) i = renumber[i];
-  // A merge can leave a cell with the same vertex twice in a row: one of them goes.
-  std::vector<Index> vertices;
-  std::vector<Side> sides;
-  std::vector<std::size_t> offsets{0};
+  // A merge can leave a cell with the same vertex twice in a row: one of them goes, the cycles
+  // compacted in place (a cell's first vertex kept aside: the last one's successor).
+  std::size_t kept = 0, b = 0;
   for (std::size_t k = 0; k + 1 < m_offsets.size(); ++k) {
-    const std::size_t b = m_offsets[k], e = m_offsets[k + 1], n = e - b;
+    const std::size_t e = m_offsets[k + 1], n = e - b, start = kept;
+    if (n == 0) {
+      m_offsets[k] = start;
+      continue;
+    }
+    const Index first = m_cell_vertices[b];
+    const Side first_side = m_sides[b];
     for (std::size_t j = 0; j < n; ++j) {
-      const Index next_vertex = m_cell_vertices[b + (j + 1) % n];
-      if (n > 1 && m_cell_vertices[b + j] == next_vertex) continue;  // a zero-length edge
-      vertices.push_back(m_cell_vertices[b + j]);
-      sides.push_back(m_sides[b + j]);
+      const Index v = m_cell_vertices[b + j];
+      const Side s = m_sides[b + j];
+      if (n > 1 && v == (j + 1 < n ? m_cell_vertices[b + j + 1] : first)) continue;
+      m_cell_vertices[kept] = v;
+      m_sides[kept++] = s;
     }
-    if (vertices.size() == offsets.back() && n > 0) {  // all one point
-      vertices.push_back(m_cell_vertices[b]);
-      sides.push_back(m_sides[b]);
+    if (kept == start) {  // all one point
+      m_cell_vertices[kept] = first;
+      m_sides[kept++] = first_side;
     }
-    offsets.push_back(vertices.size());
+    m_offsets[k] = start;
+    b = e;
   }
-  m_cell_vertices.swap(vertices);
-  m_sides.swap(sides);
-  m_offsets.swap(offsets);
+  m_offsets.back() = kept;
+  m_cell_vertices.resize(kept);
+  m_sides.resize(kept);
 }
 
 // The cells on the two sides of an inner constraint end on it at different points: each side's
@@ -527,39 +593,57 @@ void Bvd_mesh_2<Diagram>::conform_constraints() {
     return std::lower_bound(position[c].begin(), position[c].end(), std::make_pair(x, Index(0)))
         ->second;
   };
-  // The edges that skip vertices of their constraint, in the order of m_sides.
-  std::vector<std::size_t> skipping;
+  // The edges that skip vertices of their constraint, in the order of m_sides, with their cells.
+  std::vector<std::pair<Index, std::size_t>> skipping;
   for (const auto& [k, e] : m_on_constraints) {
     const Index c = m_sides[e].constraint;
     if (position[c].empty()) continue;
     const Index from = at(c, m_cell_vertices[e]), to = at(c, m_cell_vertices[next(k, e)]);
-    if (from + 1 < to || to + 1 < from) skipping.push_back(e);
+    if (from + 1 < to || to + 1 < from) skipping.emplace_back(k, e);
   }
   if (skipping.empty()) return;
+  // The skipped vertices go in after each such edge: the arrays copied in runs between them,
+  // the offsets and the list of sides on constraints shifted by what went in before.
   std::vector<Index> vertices;
   std::vector<Side> sides;
-  std::vector<std::size_t> offsets{0};
   vertices.reserve(m_cell_vertices.size() + m_cell_vertices.size() / 64);
   sides.reserve(vertices.capacity());
-  offsets.reserve(m_offsets.size());
-  std::size_t s = 0;
-  for (std::size_t k = 0; k + 1 < m_offsets.size(); ++k) {
-    for (std::size_t e = m_offsets[k]; e < m_offsets[k + 1]; ++e) {
-      vertices.push_back(m_cell_vertices[e]);
-      sides.push_back(m_sides[e]);
-      if (s == skipping.size() || skipping[s] != e) continue;
-      ++s;
-      const Index c = m_sides[e].constraint;
-      const Index from = at(c, m_cell_vertices[e]), to = at(c, m_cell_vertices[next(k, e)]);
-      for (Index i = from; i + 1 < to;) vertices.push_back(on[c][++i]), sides.push_back(m_sides[e]);
-      for (Index i = from; i > to + 1;) vertices.push_back(on[c][--i]), sides.push_back(m_sides[e]);
-    }
-    offsets.push_back(vertices.size());
+  std::vector<std::pair<std::size_t, std::size_t>> added;  // (old position, count after it)
+  std::size_t copied = 0;
+  for (const auto& [k, e] : skipping) {
+    vertices.insert(vertices.end(), m_cell_vertices.begin() + std::ptrdiff_t(copied),
+                    m_cell_vertices.begin() + std::ptrdiff_t(e + 1));
+    sides.insert(sides.end(), m_sides.begin() + std::ptrdiff_t(copied),
+                 m_sides.begin() + std::ptrdiff_t(e + 1));
+    copied = e + 1;
+    const std::size_t before = vertices.size();
+    const Index c = m_sides[e].constraint;
+    const Index from = at(c, m_cell_vertices[e]), to = at(c, m_cell_vertices[next(k, e)]);
+    for (Index i = from; i + 1 < to;) vertices.push_back(on[c][++i]), sides.push_back(m_sides[e]);
+    for (Index i = from; i > to + 1;) vertices.push_back(on[c][--i]), sides.push_back(m_sides[e]);
+    added.emplace_back(e, vertices.size() - before);
+  }
+  vertices.insert(vertices.end(), m_cell_vertices.begin() + std::ptrdiff_t(copied),
+                  m_cell_vertices.end());
+  sides.insert(sides.end(), m_sides.begin() + std::ptrdiff_t(copied), m_sides.end());
+  std::size_t shift = 0, a = 0;  // inserted before the position at hand; records passed
+  for (std::size_t& offset : m_offsets) {
+    for (; a < added.size() && added[a].first < offset; ++a) shift += added[a].second;
+    offset += shift;
+  }
+  std::vector<std::pair<Index, std::size_t>> on_constraints;
+  on_constraints.reserve(m_on_constraints.size() + vertices.size() - m_cell_vertices.size());
+  shift = a = 0;
+  for (const auto& [k, e] : m_on_constraints) {
+    for (; a < added.size() && added[a].first < e; ++a) shift += added[a].second;
+    on_constraints.emplace_back(k, e + shift);
+    if (a < added.size() && added[a].first == e)
+      for (std::size_t i = 1; i <= added[a].second; ++i)
+        on_constraints.emplace_back(k, e + shift + i);
   }
   m_cell_vertices.swap(vertices);
   m_sides.swap(sides);
-  m_offsets.swap(offsets);
-  list_sides_on_constraints();
+  m_on_constraints.swap(on_constraints);
 }
 
 // An edge on a constraint inside the domain has a cell on each side: the same edge, walked the

@@ -46,11 +46,11 @@ constexpr std::size_t default_lbfgs_memory = 7;  // curvature pairs kept
 /// density) the energy never rises, unless a generator cannot get back to where a failed step
 /// started (the tests have not met one).
 ///
-/// With an approximate quadrature (`Midpoint_quadrature_2`) the energy and the centroids, and so
-/// the gradient, are approximations, whose error changes as the cells change shape and as the
-/// resolution rises: the line search compares computed energies, and when their error hides
-/// the decrease it fails and the step falls back to a Lloyd step. So the iteration goes on
-/// where a line search on approximate energies gets stuck, at the cost of the failed trials
+/// With an approximate quadrature (`Gauss_quadrature_2`, `Midpoint_quadrature_2`) the energy and
+/// the centroids, and so the gradient, are approximations, whose error changes as the cells change
+/// shape and as the resolution rises: the line search compares computed energies, and when their
+/// error hides the decrease it fails and the step falls back to a Lloyd step. So the iteration goes
+/// on where a line search on approximate energies gets stuck, at the cost of the failed trials
 /// (`number_of_fallbacks()` counts them).
 ///
 /// The free generators are numbered once, in the order of the first evaluation, so that the
@@ -60,7 +60,7 @@ constexpr std::size_t default_lbfgs_memory = 7;  // curvature pairs kept
 /// \tparam CDT as for `Bounded_voronoi_diagram_2`, with its domain marked.
 /// \tparam Density a model of `DensityFunction_2`.
 /// \tparam Quadrature a model of `CellQuadrature_2`; by default exact formulas for a uniform
-///         density, the paper's midpoint rule otherwise.
+///         density, `Gauss_quadrature_2` otherwise.
 /// \tparam Traits a model of `BvdTraits_2` for the diagram; by default `Bvd_traits_2`.
 /// \sa `lbfgs_optimize_2()`, which drives it with the paper's stopping rule; `Lloyd_optimizer_2`.
 template <class CDT, class Density = Uniform_density_2<typename CDT::Geom_traits>,

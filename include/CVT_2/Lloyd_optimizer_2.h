@@ -10,6 +10,7 @@
 #include <CVT_2/Concepts/CellQuadrature_2.h>
 #include <CVT_2/Concepts/DensityFunction_2.h>
 #include <CVT_2/Exact_quadrature_2.h>
+#include <CVT_2/Gauss_quadrature_2.h>
 #include <CVT_2/Midpoint_quadrature_2.h>
 #include <CVT_2/Optimization_result.h>
 #include <CVT_2/Uniform_density_2.h>
@@ -123,7 +124,7 @@ class Buffer_pool {
 
 template <class K, class Density>
 using Default_quadrature = std::conditional_t<is_uniform_density<Density>::value,
-                                              Exact_quadrature_2<K>, Midpoint_quadrature_2<K>>;
+                                              Exact_quadrature_2<K>, Gauss_quadrature_2<K>>;
 
 }  // namespace internal
 
@@ -148,7 +149,7 @@ class Lbfgs_optimizer_2;
 /// \tparam Density a model of `DensityFunction_2`; one with the optional batch member is
 ///         evaluated once a chunk of cells (the same bits).
 /// \tparam Quadrature a model of `CellQuadrature_2`; by default exact formulas for a uniform
-///         density, the paper's midpoint rule otherwise.
+///         density, `Gauss_quadrature_2` otherwise.
 /// \tparam Traits a model of `BvdTraits_2` for the diagram; by default `Bvd_traits_2`.
 template <class CDT, class Density = Uniform_density_2<typename CDT::Geom_traits>,
           class Quadrature = internal::Default_quadrature<typename CDT::Geom_traits, Density>,

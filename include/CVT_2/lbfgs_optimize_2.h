@@ -18,9 +18,9 @@ namespace CVT_2 {
 /// `lloyd_optimize_2()`: every move ratio \f$mr(x) = \|x - x^*\|/\mathrm{diameter}(V)\f$ of
 /// the last evaluation below `move_ratio_bound` (confirmed at the maximum quadrature
 /// resolution), or another limit. Constrained vertices stay; a free generator never crosses
-/// a constraint. With an exact quadrature the energy never rises; with the midpoint rule the
-/// energy and the gradient are approximate, and a line search that their error makes fail
-/// ends in a Lloyd step (see `Lbfgs_optimizer_2`).
+/// a constraint. With an exact quadrature the energy never rises; with an approximate quadrature
+/// the energy and the gradient are approximate, and a line search that their error makes fail ends
+/// in a Lloyd step (see `Lbfgs_optimizer_2`).
 ///
 /// The result describes the generators as they are at the end. An iteration is one step,
 /// its line search included; `energy_history` and the move ratio histories have one entry a

@@ -24,9 +24,11 @@ namespace CVT_2 {
 ///   - `sizing_field(mu)`: a sizing field \f$\mu\f$ instead, used as \f$\rho = 1/\mu^4\f$ (cell
 ///     size scales as \f$\rho^{-1/4}\f$); not together with `density`.
 ///   - `quadrature(q)`: a model of `CellQuadrature_2`; default `Exact_quadrature_2` for a
-///     `Uniform_density_2`, `Midpoint_quadrature_2` otherwise.
+///     `Uniform_density_2`, `Gauss_quadrature_2` otherwise (`Midpoint_quadrature_2`: the
+///     paper's rule).
 ///   - `minimum_quadrature_resolution(n)`, `maximum_quadrature_resolution(n)`: sub-triangles a
-///     cell, raised from the first to the second as moves shrink; default 10 and 100.
+///     cell, raised from the first to the second as moves shrink; default 10 and 100 (only
+///     quadratures with a resolution, as the midpoint rule, use them).
 ///   - `move_ratio_bound(p)`: stop when every move ratio is below `p`; default 0.01; 0 turns
 ///     this stop off.
 ///   - `number_of_iterations(n)`: at most `n` moves, an integer \f$\ge 0\f$; default 1000.
