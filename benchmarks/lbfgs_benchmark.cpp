@@ -37,6 +37,7 @@ using support::domain;
 using support::fmt;
 using support::hexagon;
 using support::K;
+using support::load_average;
 using support::massachusetts;
 using support::Point;
 using support::since;
@@ -419,7 +420,7 @@ int main(int argc, char* argv[]) {
   std::printf(
       "\nRandom points (seed 1), one run each, the cells on one thread per core (2 here). "
       "Uniform density: exact quadrature. Adaptive: sizing_field(mu), mu the k-Lipschitz sizing "
-      "of the boundary (k = %.1f), density 1/mu^4 by the midpoint rule (energies too), points "
+      "of the boundary (k = %.1f), density 1/mu^4 by the default Gauss rule (energies too), points "
       "drawn with density 1/mu^2. Evaluations: of the diagram, energy and centroids (the "
       "confirmation at the highest resolution and L-BFGS's line-search trials included). "
       "E_norm = E n / A² / (5/(18√3)), n cells; adaptive: (∫√ρ)² for A². Lloyd's energy after "

@@ -40,6 +40,7 @@ using support::Clock;
 using support::domain;
 using support::fmt;
 using support::K;
+using support::load_average;
 using support::massachusetts;
 using support::Point;
 using support::square;

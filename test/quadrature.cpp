@@ -111,6 +111,30 @@ struct Counting_density {
   }
 };
 
+// Checks that the nodes() and moments() of `rule` give its call operator's points, in its order,
+// and its bits, on cell c; returns the number of points.
+template <class Rule>
+std::size_t check_nodes(const Rule& rule, const Star_cell& c, std::size_t resolution) {
+  const auto rho = [](const Point& p) { return 1 + 0.5 * std::sin(p.x()) * std::cos(3 * p.y()); };
+  std::vector<Point> asked;
+  const auto recording = [&](const Point& p) {
+    asked.push_back(p);
+    return rho(p);
+  };
+  const Moments direct = rule(c.x, c.cell, recording, resolution);
+  std::vector<Point> points;
+  std::vector<double> nodes, values;
+  const std::size_t count = rule.nodes(c.x, c.cell, resolution, points, nodes);
+  REQUIRE(count == points.size());
+  CHECK(points == asked);
+  for (const Point& p : points) values.push_back(rho(p));
+  const Moments m = rule.moments(nodes.data(), values.data(), count);
+  CHECK(m.mass == direct.mass);
+  CHECK(m.first_moment == direct.first_moment);
+  CHECK(m.energy == direct.energy);
+  return count;
+}
+
 // [-1, 1]² around x = (0, 0) with slits along the positive and negative x axes: the polygon
 // goes out to the boundary along each slit and back, so x appears twice.
 const Point origin(0, 0);
@@ -201,28 +225,11 @@ TEST_CASE("midpoint rule's nodes() and moments() give operator()'s points and bi
           "[quadrature]") {
   STATIC_REQUIRE(CVT_2::has_quadrature_nodes_v<Midpoint, K>);
   std::mt19937_64 rng(5);
-  const auto rho = [](const Point& p) { return 1 + 0.5 * std::sin(p.x()) * std::cos(3 * p.y()); };
-  std::vector<Point> asked;
-  const auto recording = [&](const Point& p) {
-    asked.push_back(p);
-    return rho(p);
-  };
   for (int i = 0; i < 30; ++i) {
     const Star_cell c = random_convex_cell(rng, 3, i % 2 == 0 ? 0.0 : 1e6);
     for (const std::size_t n : {1, 7, 10, 33, 100, 150}) {
       CAPTURE(i, n);
-      asked.clear();
-      const Moments direct = Midpoint()(c.x, c.cell, recording, n);
-      std::vector<Point> points;
-      std::vector<double> nodes, values;
-      const std::size_t count = Midpoint().nodes(c.x, c.cell, n, points, nodes);
-      REQUIRE(count == points.size());
-      CHECK(points == asked);
-      for (const Point& p : points) values.push_back(rho(p));
-      const Moments m = Midpoint().moments(nodes.data(), values.data(), count);
-      CHECK(m.mass == direct.mass);
-      CHECK(m.first_moment == direct.first_moment);
-      CHECK(m.energy == direct.energy);
+      check_nodes(Midpoint(), c, n);
     }
   }
   // A cell of zero area: no point, the moments of operator().
@@ -370,30 +377,12 @@ TEST_CASE("the Gauss rule's nodes() and moments() give operator()'s points and b
           "[quadrature][gauss]") {
   STATIC_REQUIRE(CVT_2::has_quadrature_nodes_v<Gauss, K>);
   std::mt19937_64 rng(6);
-  const auto rho = [](const Point& p) { return 1 + 0.5 * std::sin(p.x()) * std::cos(3 * p.y()); };
-  std::vector<Point> asked;
-  const auto recording = [&](const Point& p) {
-    asked.push_back(p);
-    return rho(p);
-  };
   for (int i = 0; i < 30; ++i) {
     const Star_cell c = random_convex_cell(rng, 3, i % 2 == 0 ? 0.0 : 1e6);
     for (const std::size_t m : {1, 2, 4}) {
       CAPTURE(i, m);
-      asked.clear();
-      const Gauss rule(m);
-      const Moments direct = rule(c.x, c.cell, recording, 0);
-      std::vector<Point> points;
-      std::vector<double> nodes, values;
-      const std::size_t count = rule.nodes(c.x, c.cell, 0, points, nodes);
-      REQUIRE(count == points.size());
-      CHECK(count == 7 * m * m * c.cell.size());  // x is inside: no fan triangle is flat
-      CHECK(points == asked);
-      for (const Point& p : points) values.push_back(rho(p));
-      const Moments b = rule.moments(nodes.data(), values.data(), count);
-      CHECK(b.mass == direct.mass);
-      CHECK(b.first_moment == direct.first_moment);
-      CHECK(b.energy == direct.energy);
+      // x is inside: no fan triangle is flat
+      CHECK(check_nodes(Gauss(m), c, 0) == 7 * m * m * c.cell.size());
     }
   }
   std::vector<Point> points;

@@ -143,12 +143,23 @@ class Boundary_lipschitz_sizing_2 {
   /// evaluates only the few segments that can be the minimizing one there.
   class Restriction {
    public:
-    /// \f$\min_s (k\, d(x, s) + \mathrm{size}(s))\f$ over the kept segments.
+    /// \f$\min_s (k\, d(x, s) + \mathrm{size}(s))\f$ over the kept segments. They are
+    /// visited by their value at the disk's center: a segment's value at x is at least that
+    /// minus \f$k |x - c|\f$, so once that bound exceeds the least value found, with a margin
+    /// for rounding, no later segment can give less and the walk stops (the same bits).
     FT operator()(const Point_2& x) const {
+      const double dx = CGAL::to_double(x.x()) - m_cx, dy = CGAL::to_double(x.y()) - m_cy;
+      const double reach = m_k * std::sqrt(dx * dx + dy * dy);
       std::optional<FT> best;
-      for (const std::size_t i : m_candidates) {
+      double bound = std::numeric_limits<double>::infinity();
+      for (const auto& [at_center, i] : m_candidates) {
+        if (at_center - reach > bound) break;
         const FT v = value(*m_data, x, i);
-        if (!best || v < *best) best = v;
+        if (!best || v < *best) {
+          best = v;
+          const double b = CGAL::to_double(v);
+          bound = b + 1e-12 * (std::abs(b) + at_center + reach + m_scale);
+        }
       }
       return best ? *best : FT(std::numeric_limits<double>::quiet_NaN());
     }
@@ -157,9 +168,16 @@ class Boundary_lipschitz_sizing_2 {
 
    private:
     friend class Boundary_lipschitz_sizing_2;
-    explicit Restriction(const Data& d) : m_data(&d) {}
+    explicit Restriction(const Data& d, const Point_2& center)
+        : m_data(&d),
+          m_cx(CGAL::to_double(center.x())),
+          m_cy(CGAL::to_double(center.y())),
+          m_k(CGAL::to_double(d.k)),
+          m_scale(m_k * (std::abs(m_cx) + std::abs(m_cy))) {}
     const Data* m_data;
-    std::vector<std::size_t> m_candidates;
+    double m_cx, m_cy, m_k, m_scale;  // m_scale: k times the center's size, for rounding
+    // (value at the center, segment), by value
+    std::vector<std::pair<double, std::size_t>> m_candidates;
   };
 
   /// \f$\mu(x) = \min_s (k\, d(x, s) + \mathrm{size}(s))\f$.
@@ -185,9 +203,11 @@ class Boundary_lipschitz_sizing_2 {
   Restriction restrict_to_disk(const Point_2& center, const FT& radius) const {
     Collect collect(*m_data, center, 2 * CGAL::to_double(m_data->k * radius));
     m_data->tree.traversal_with_priority(center, collect);
-    Restriction r(*m_data);
+    Restriction r(*m_data, center);
     for (const auto& [value, i] : collect.candidates)
-      if (value <= collect.best_double + collect.slack) r.m_candidates.push_back(i);
+      if (value <= collect.best_double + collect.slack)
+        r.m_candidates.emplace_back(value + collect.margin, i);
+    std::sort(r.m_candidates.begin(), r.m_candidates.end());
     return r;
   }
 

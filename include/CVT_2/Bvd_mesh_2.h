@@ -239,14 +239,21 @@ void Bvd_mesh_2<Diagram>::number_cells_and_circumcenters(
   m_cell_offsets.assign(chunks.size() + 1, 0);
   m_center_offsets.assign(chunks.size() + 1, 0);
   std::vector<std::vector<Vertex_handle>> generators(chunks.size());
+  // Each circumcenter once (the cells pass would compute it in each of its three cells), while
+  // the face and its vertices are at hand.
+  std::vector<std::vector<Point_2>> centers(chunks.size());
+  const auto circumcenter = bvd.geom_traits().construct_circumcenter_2_object();
   // Hash maps are filled by one thread; the records' ids by all.
   const unsigned writers = m_cell_of.in_record && m_circumcenter_of.in_record ? threads : 1u;
   chunks.for_each(
       [&](std::size_t c, auto first, auto last) {
-        std::size_t cells = 0, centers = 0;
+        std::size_t cells = 0;
         for (auto f = first; f != last; ++f) {
-          if (!cdt.is_infinite(f) && f->is_inside_domain() && !f->is_blinded())
-            m_circumcenter_of.set(f, (c << center_bits) | centers++);
+          if (!cdt.is_infinite(f) && f->is_inside_domain() && !f->is_blinded()) {
+            m_circumcenter_of.set(f, (c << center_bits) | centers[c].size());
+            centers[c].push_back(
+                circumcenter(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()));
+          }
           for (int i = 0; i < 3; ++i) {
             const Vertex_handle v = f->vertex(i);
             if (v->face() != f || cdt.is_infinite(v)) continue;
@@ -256,7 +263,7 @@ void Bvd_mesh_2<Diagram>::number_cells_and_circumcenters(
           }
         }
         m_cell_offsets[c + 1] = cells;
-        m_center_offsets[c + 1] = centers;
+        m_center_offsets[c + 1] = centers[c].size();
       },
       writers);
   std::partial_sum(m_cell_offsets.begin(), m_cell_offsets.end(), m_cell_offsets.begin());
@@ -264,20 +271,14 @@ void Bvd_mesh_2<Diagram>::number_cells_and_circumcenters(
   if (m_cell_offsets.back() >= none || m_center_offsets.back() >= none)
     throw std::length_error("Bvd_mesh_2: more than 2^32 - 1 cells or vertices");
   m_number_of_circumcenters = m_center_offsets.back();
-  // Each circumcenter once (the cells pass would compute it in each of its three cells).
   m_points.resize(m_number_of_circumcenters);
-  const auto circumcenter = bvd.geom_traits().construct_circumcenter_2_object();
-  chunks.for_each(
-      [&](std::size_t c, auto first, auto last) {
-        std::size_t i = m_center_offsets[c];
-        for (auto f = first; f != last; ++f)
-          if (!cdt.is_infinite(f) && f->is_inside_domain() && !f->is_blinded())
-            m_points[i++] =
-                circumcenter(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
-      },
-      threads);
-  m_generators.reserve(m_cell_offsets.back());
-  for (const auto& g : generators) m_generators.insert(m_generators.end(), g.begin(), g.end());
+  m_generators.resize(m_cell_offsets.back());
+  internal::run_chunks(chunks.size(), threads, [&](std::size_t c) {
+    std::copy(centers[c].begin(), centers[c].end(), m_points.begin() + m_center_offsets[c]);
+    std::copy(generators[c].begin(), generators[c].end(), m_generators.begin() + m_cell_offsets[c]);
+    centers[c] = std::vector<Point_2>();
+    generators[c] = std::vector<Vertex_handle>();
+  });
 }
 
 template <class Diagram>

@@ -19,11 +19,11 @@ namespace CVT_2 {
 /// It evaluates \f$\rho\f$ once, at the generator \f$x\f$, and takes it for constant: with a
 /// variable density it returns the moments of the constant density \f$\rho(x)\f$, not those of
 /// \f$\rho\f$. The Lloyd optimizer selects it only for uniform densities; use
-/// `Midpoint_quadrature_2` otherwise. Exact up to rounding (exact with an exact kernel); it
+/// `Gauss_quadrature_2` otherwise. Exact up to rounding (exact with an exact kernel); it
 /// ignores `resolution`.
 ///
 /// \tparam K a CGAL kernel with Cartesian coordinates.
-/// \sa `Midpoint_quadrature_2`, `Cell_moments_2`
+/// \sa `Gauss_quadrature_2`, `Midpoint_quadrature_2`, `Cell_moments_2`
 template <class K>
 class Exact_quadrature_2 {
  public:

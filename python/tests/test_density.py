@@ -43,7 +43,7 @@ def test_the_density_is_called_with_batches(data):
                            move_ratio=0)
     assert result.evaluations == 4
     # One call a chunk of cells an evaluation: a few calls, each with the quadrature points of
-    # thousands of cells (at least 30 a cell: 10 sub-triangles, 3 midpoints each).
+    # thousands of cells (about 42 a cell: 7 a fan triangle, 6 fan triangles a cell on average).
     calls_per_evaluation = len(rho.sizes) / result.evaluations
     assert calls_per_evaluation == int(calls_per_evaluation) and 2 <= calls_per_evaluation <= 40
     assert min(rho.sizes) >= 30 * 500

@@ -24,6 +24,7 @@
 /// resolution schedule (the paper's \f$n = 10\f$ to \f$100\f$ sub-triangles as moves shrink)
 /// and passes it on every call. Exact models ignore it.
 ///
+/// \cgalHasModel `CVT_2::Gauss_quadrature_2<K>` (any density; with the batch members)
 /// \cgalHasModel `CVT_2::Midpoint_quadrature_2<K>` (any density; with the batch members)
 /// \cgalHasModel `CVT_2::Exact_quadrature_2<K>` (uniform density only: evaluates \f$\rho(x)\f$)
 /// \sa `CVT_2::is_cell_quadrature_2`
