@@ -40,7 +40,8 @@ int main(int argc, char* argv[]) {
         cdt, CVT_2::random_points_in_domain_2(
                  cdt, n, CVT_2::parameters::density(start_density).random_seed(1)));
 
-    // sizing_field(mu) iterates with the density 1/mu^4, integrated by the midpoint rule.
+    // sizing_field(mu) iterates with the density 1/mu^4, integrated by the Gauss rule
+    // (Gauss_quadrature_2, the default for a density that is not uniform).
     const CVT_2::Optimization_result r = CVT_2::lloyd_optimize_2(
         cdt, CVT_2::parameters::sizing_field(mu).number_of_iterations(iterations));
 
