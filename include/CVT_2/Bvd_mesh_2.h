@@ -401,12 +401,9 @@ Bvd_mesh_2<Diagram>::Bvd_mesh_2(const Diagram& bvd, unsigned threads) {
               const Vertex_handle v = generators[k];
               if (add_free_cell(cdt, v, found[c])) return;
               raw.clear();
-              const Fan fan(cdt, bvd.geom_traits(), v, *this);
-              internal::fan_chain(fan, [&](const Point_2& p, Vertex_type type, std::size_t j,
-                                           const Tri_edge& e, Vertex_handle w) {
-                raw.push_back(
-                    Cell_vertex{p, type, j < fan.size() ? fan.face(j) : Face_handle(), e, w});
-              });
+              internal::fan_cell_chain<Cell_vertex>(
+                  Fan(cdt, bvd.geom_traits(), v, *this),
+                  [&raw](const Cell_vertex& x) { raw.push_back(x); });
               add_cell(v, raw, found[c]);
             });
       },
@@ -594,13 +591,18 @@ void Bvd_mesh_2<Diagram>::conform_constraints() {
     return std::lower_bound(position[c].begin(), position[c].end(), std::make_pair(x, Index(0)))
         ->second;
   };
-  // The edges that skip vertices of their constraint, in the order of m_sides, with their cells.
-  std::vector<std::pair<Index, std::size_t>> skipping;
+  // The edges that skip vertices of their constraint, in the order of m_sides, with the
+  // positions of their ends along it.
+  struct Skipping {
+    std::size_t e;
+    Index from, to;
+  };
+  std::vector<Skipping> skipping;
   for (const auto& [k, e] : m_on_constraints) {
     const Index c = m_sides[e].constraint;
     if (position[c].empty()) continue;
     const Index from = at(c, m_cell_vertices[e]), to = at(c, m_cell_vertices[next(k, e)]);
-    if (from + 1 < to || to + 1 < from) skipping.emplace_back(k, e);
+    if (from + 1 < to || to + 1 < from) skipping.push_back({e, from, to});
   }
   if (skipping.empty()) return;
   // The skipped vertices go in after each such edge: the arrays copied in runs between them,
@@ -611,7 +613,7 @@ void Bvd_mesh_2<Diagram>::conform_constraints() {
   sides.reserve(vertices.capacity());
   std::vector<std::pair<std::size_t, std::size_t>> added;  // (old position, count after it)
   std::size_t copied = 0;
-  for (const auto& [k, e] : skipping) {
+  for (const auto& [e, from, to] : skipping) {
     vertices.insert(vertices.end(), m_cell_vertices.begin() + std::ptrdiff_t(copied),
                     m_cell_vertices.begin() + std::ptrdiff_t(e + 1));
     sides.insert(sides.end(), m_sides.begin() + std::ptrdiff_t(copied),
@@ -619,7 +621,6 @@ void Bvd_mesh_2<Diagram>::conform_constraints() {
     copied = e + 1;
     const std::size_t before = vertices.size();
     const Index c = m_sides[e].constraint;
-    const Index from = at(c, m_cell_vertices[e]), to = at(c, m_cell_vertices[next(k, e)]);
     for (Index i = from; i + 1 < to;) vertices.push_back(on[c][++i]), sides.push_back(m_sides[e]);
     for (Index i = from; i > to + 1;) vertices.push_back(on[c][--i]), sides.push_back(m_sides[e]);
     added.emplace_back(e, vertices.size() - before);

@@ -195,18 +195,22 @@ class Cdt_fan {
   bool m_wedges = false;
 };
 
+// fan_chain() on a Cdt_fan (or a class derived from one), each cell vertex as a `Cell_vertex`.
+template <class Cell_vertex, class Fan, class Emit>
+void fan_cell_chain(const Fan& fan, const Emit& emit) {
+  fan_chain(fan, [&](const typename Fan::Point_2& p, typename Fan::Type type, std::size_t j,
+                     const typename Fan::Constraint& c, typename Fan::Vertex w) {
+    emit(Cell_vertex{p, type, j < fan.size() ? fan.face(j) : typename Fan::Face_handle(), c, w});
+  });
+}
+
 // The cell of v, counterclockwise: emit(c) for each of its vertices c in turn, a `Cell_vertex`,
 // as fan_chain() makes it (a point may come twice in a row; nothing for a vertex without a cell).
 template <class Cell_vertex, class CDT, class Traits, class Emit>
 void construct_cell_chain(const CDT& cdt, const Traits& traits, typename CDT::Vertex_handle v,
                           const Emit& emit) {
   if (cdt.dimension() < 2 || cdt.is_infinite(v)) return;
-  using Fan = Cdt_fan<CDT, Traits, Cell_vertex>;
-  const Fan fan(cdt, traits, v);
-  fan_chain(fan, [&](const typename Fan::Point_2& p, typename Fan::Type type, std::size_t j,
-                     const typename Fan::Constraint& c, typename Fan::Vertex w) {
-    emit(Cell_vertex{p, type, j < fan.size() ? fan.face(j) : typename Fan::Face_handle(), c, w});
-  });
+  fan_cell_chain<Cell_vertex>(Cdt_fan<CDT, Traits, Cell_vertex>(cdt, traits, v), emit);
 }
 
 // The cell of v, counterclockwise, into `out` (cleared first), without repeated points.
