@@ -165,7 +165,8 @@ class Virtual_insertion {
   std::vector<Face_handle> m_sorted;    // the zone sorted by address, once it is large
   std::vector<Star_face> m_star;        // around q, counterclockwise
   std::vector<Vertex_handle> m_rim;
-  std::vector<Face_handle> m_stack, m_seeds;
+  std::vector<std::pair<Face_handle, int>> m_stack;  // find_conflict_zone()'s: edges to visit
+  std::vector<Face_handle> m_seeds;
   std::vector<Star_face> m_edges;  // build_star()'s
   std::vector<char> m_used;
 };
@@ -220,38 +221,42 @@ auto Virtual_insertion<Diagram>::insert(const Point_2& q, Face_handle& hint) -> 
 }
 
 // The domain faces whose circumcircles hold q (perturbed as CGAL's insertion is), connected to
-// the seeds through unconstrained edges; a seed holds q on its closure. Each edge of the zone
-// is classified as its face is taken: the rim edges (constrained, or to a face not in conflict)
-// go to m_edges, but for the constraint q splits.
+// the seeds through unconstrained edges; a seed holds q on its closure. Depth first, each face's
+// edges counterclockwise from the one it was entered by: the zone is a triangulated polygon with
+// all its vertices on its rim, so the rim edges (constrained, or to a face not in conflict) come
+// out in order around q, into m_edges, but for the constraint q splits.
 template <class Diagram>
 void Virtual_insertion<Diagram>::find_conflict_zone(const std::vector<Face_handle>& seeds) {
-  m_stack = seeds;
-  m_conflict = seeds;
+  const bool split = m_split.first != Face_handle();
+  // Without a split, the second seed (q on the edge they share) is found in conflict from the
+  // first: the rim's order runs through it.
+  m_conflict.assign(seeds.begin(), split ? seeds.end() : seeds.begin() + 1);
   m_sorted.clear();
   m_edges.clear();
-  const bool split = m_split.first != Face_handle();
+  m_stack.clear();
+  for (std::size_t k = m_conflict.size(); k-- > 0;)
+    for (const int i : {2, 1, 0}) m_stack.emplace_back(m_conflict[k], i);
   while (!m_stack.empty()) {
-    const Face_handle f = m_stack.back();
+    const auto [f, i] = m_stack.back();
     m_stack.pop_back();
-    for (int i = 0; i < 3; ++i) {
-      const Face_handle n = f->neighbor(i);
-      const bool constrained = f->is_constrained(i);
-      if (!constrained && !m_cdt->is_infinite(n) && n->is_inside_domain()) {
-        if (in_conflict(n)) continue;
-        if (m_cdt->side_of_oriented_circle(n, m_q, true) == CGAL::ON_POSITIVE_SIDE) {
-          add_to_zone(n);
-          m_stack.push_back(n);
-          continue;
-        }
+    const Face_handle n = f->neighbor(i);
+    const bool constrained = f->is_constrained(i);
+    if (!constrained && !m_cdt->is_infinite(n) && n->is_inside_domain()) {
+      if (in_conflict(n)) continue;
+      if (m_cdt->side_of_oriented_circle(n, m_q, true) == CGAL::ON_POSITIVE_SIDE) {
+        add_to_zone(n);
+        const int j = n->index(f);
+        m_stack.emplace_back(n, CDT::cw(j));
+        m_stack.emplace_back(n, CDT::ccw(j));
+        continue;
       }
-      const Vertex_handle s = f->vertex(CDT::ccw(i)), t = f->vertex(CDT::cw(i));
-      if (split && ends_equal(s, t, m_split_a, m_split_b)) continue;  // not a rim edge
-      Star_face e;
-      e.s = s, e.t = t, e.inner = f, e.index = i;
-      e.rim_constrained = constrained;
-      e.constrained_after = e.constrained_before = false;
-      m_edges.push_back(e);
     }
+    const Vertex_handle s = f->vertex(CDT::ccw(i)), t = f->vertex(CDT::cw(i));
+    if (split && ends_equal(s, t, m_split_a, m_split_b)) continue;  // not a rim edge
+    Star_face& e = m_edges.emplace_back();
+    e.s = s, e.t = t, e.inner = f, e.index = i;
+    e.rim_constrained = constrained;
+    e.constrained_after = e.constrained_before = false;
   }
 }
 
@@ -259,7 +264,23 @@ void Virtual_insertion<Diagram>::find_conflict_zone(const std::vector<Face_handl
 // constraint, each side's chain from one end of it to the other.
 template <class Diagram>
 bool Virtual_insertion<Diagram>::build_star() {
-  const std::vector<Star_face>& edges = m_edges;
+  std::vector<Star_face>& edges = m_edges;
+  const bool split = m_split.first != Face_handle();
+  if (!split) {  // as found, if they close a cycle (they do on a valid triangulation)
+    bool cycle = !edges.empty();
+    bool simple = true;  // each rim vertex once: no constraint on the rim to turn around
+    for (std::size_t k = 0; k < edges.size() && cycle; ++k) {
+      cycle = edges[k].t == edges[k + 1 == edges.size() ? 0 : k + 1].s;
+      simple = simple && !edges[k].rim_constrained;
+    }
+    if (cycle) {
+      m_star.swap(edges);
+      for (const Star_face& s : m_star)
+        if (simple || std::find(m_rim.begin(), m_rim.end(), s.s) == m_rim.end())
+          m_rim.push_back(s.s);
+      return true;
+    }
+  }
   // Chains: a rim edge follows the one that ends where it starts. With a split, the chains
   // start at the rim edges that start at an end of the split constraint.
   const auto next_of = [&](Vertex_handle t) {
@@ -269,7 +290,6 @@ bool Virtual_insertion<Diagram>::build_star() {
   };
   std::vector<char>& used = m_used;
   used.assign(edges.size(), 0);
-  const bool split = m_split.first != Face_handle();
   const auto follow = [&](std::size_t k) {
     while (k < edges.size() && !used[k]) {
       used[k] = 1;
@@ -302,7 +322,7 @@ bool Virtual_insertion<Diagram>::build_star() {
 // The way [g, c) of triangle pqr in floating point, c the circumcenter as the traits build it
 // (off by at most 2^-30 of pqr's shortest side, then rounded), with a bound on the error of each
 // orientation: a sign beyond its bound is exact; the others are left to the exact predicates.
-// Most star faces are decided so: their circumcenter is well inside them or the next face.
+// Most star faces are decided so: their circumcenter is well inside them or the next triangle.
 template <class Point_2>
 class Approximate_way {
  public:
@@ -340,12 +360,6 @@ class Approximate_way {
         0x1.0p-50 * (std::abs(dx * ey) + std::abs(dy * ex)) + tiny;
     return sure(o, bound, sign);
   }
-  // Whether c lies inside pqr (counterclockwise), surely: then no constraint is on the way.
-  bool inside(const Point_2& p, const Point_2& q, const Point_2& r) const {
-    CGAL::Sign s;
-    return beyond(p, q, s) && s == CGAL::POSITIVE && beyond(q, r, s) && s == CGAL::POSITIVE &&
-           beyond(r, p, s) && s == CGAL::POSITIVE;
-  }
 
  private:
   static constexpr double tiny = 0x1.0p-1000;  // rounding below the normal range
@@ -369,7 +383,35 @@ void Virtual_insertion<Diagram>::tag_star_face(Star_face& face) const {
   const Point_2& p2 = point(face.t);
   face.blind = false;
   const Approximate_way<Point_2> approximate(p0, p1, p2, face.center);
-  if (approximate.inside(p0, p1, p2)) return;
+  // The common cases, sure in floating point: c in the face; or c in the triangle across one
+  // unconstrained edge (a, b), a star face or one of the triangulation, and the way through
+  // that open edge (a and b on either side of it).
+  CGAL::Sign rim, after, before;  // c beyond the rim edge, (t, q), (q, s): negative
+  if (approximate.beyond(p1, p2, rim) && approximate.beyond(p2, p0, after) &&
+      approximate.beyond(p0, p1, before)) {
+    const int exits =
+        (rim == CGAL::NEGATIVE) + (after == CGAL::NEGATIVE) + (before == CGAL::NEGATIVE);
+    if (exits == 0) return;
+    const std::size_t n = m_star.size(), k = std::size_t(&face - m_star.data());
+    const Point_2 *a = nullptr, *b = nullptr, *x = nullptr;  // across (a, b): (b, a, x) ccw
+    if (after == CGAL::NEGATIVE) {
+      const Star_face& next = m_star[(k + 1) % n];
+      if (!face.constrained_after && next.s == face.t) a = &p2, b = &p0, x = &point(next.t);
+    } else if (before == CGAL::NEGATIVE) {
+      const Star_face& previous = m_star[(k + n - 1) % n];
+      if (!face.constrained_before && previous.t == face.s)
+        a = &p0, b = &p1, x = &point(previous.s);
+    } else if (!face.rim_constrained) {
+      const Face_handle out = face.inner->neighbor(face.index);
+      if (!m_cdt->is_infinite(out) && out->is_inside_domain())
+        a = &p1, b = &p2, x = &out->vertex(out->index(face.inner))->point();
+    }
+    CGAL::Sign u, v, sa, sb;
+    if (exits == 1 && a != nullptr && approximate.beyond(*a, *x, u) && u == CGAL::POSITIVE &&
+        approximate.beyond(*x, *b, v) && v == CGAL::POSITIVE && approximate.side(*a, sa) &&
+        approximate.side(*b, sb) && sa != sb)
+      return;
+  }
   // where floating point cannot tell, the exact predicates (rare: out of line)
   const auto side = [&](const Point_2& x) {
     CGAL::Sign s;
