@@ -6,6 +6,7 @@
 #define CVT_2_NATURAL_NEIGHBOR_COORDINATES_2_H
 
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/internal/Handle_numbering.h>
 #include <CVT_2/internal/Virtual_insertion.h>
 #include <CVT_2/internal/construct_cell.h>
 #include <CVT_2/internal/run_chunks.h>
@@ -21,7 +22,6 @@
 #include <cstddef>
 #include <iterator>
 #include <stdexcept>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -341,7 +341,9 @@ struct Natural_neighbor_matrix_2 {
 /// matrix (`Natural_neighbor_matrix_2`): the shape functions of the constrained natural element
 /// method at those points. Queries are taken in chunks in their order, each located from the
 /// one before it (spatially sorted queries locate fastest); the result is the same, bit for bit,
-/// whatever the number of threads.
+/// whatever the number of threads. Nodes are numbered in the vertices' `id()` when they have
+/// one (CGAL's `Triangulation_vertex_base_with_id_2`, as in `Cvt_triangulation_2`): the call
+/// writes them.
 /// \param np optional named parameters: `natural_neighbor_method(m)` (default `SIBSON`),
 ///        `number_of_threads(n)` (default 0, one per core).
 /// \throws std::invalid_argument for a query that is not finite, naming it.
@@ -358,22 +360,24 @@ natural_neighbor_matrix_2(const Diagram& bvd, const PointRange& queries,
   const auto threads = choose_parameter(get_parameter(np, number_of_threads_t()), 0u);
   Natural_neighbor_matrix_2<Vertex_handle, FT> m;
   const auto& cdt = bvd.triangulation();
-  std::unordered_map<Vertex_handle, std::size_t> column;
+  // Columns in the vertices' ids where they have one (read where the query has the vertex in
+  // cache already), else in a hash map.
+  internal::Handle_numbering<Vertex_handle> column;
   column.reserve(cdt.number_of_vertices());
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     if (bvd.has_cell(v)) {
-      column.emplace(v, m.nodes.size());
+      column.set(v, m.nodes.size());
       m.nodes.push_back(v);
     }
   const std::vector<Point_2> q(std::begin(queries), std::end(queries));
   constexpr std::size_t chunk = 1024;
   const std::size_t chunks = (q.size() + chunk - 1) / chunk;
   struct Rows {
-    std::vector<std::size_t> sizes, columns;
+    std::vector<std::size_t> ends, columns;  // ends: of each row, from the chunk's start
     std::vector<FT> values;
-    std::vector<unsigned char> inside;
   };
   std::vector<Rows> rows(chunks);
+  m.inside.resize(q.size());
   internal::run_chunks(chunks, static_cast<unsigned>(threads), [&](std::size_t c) {
     internal::Natural_neighbors<Diagram> nn(bvd);
     std::vector<std::pair<Vertex_handle, FT>> w;
@@ -381,23 +385,31 @@ natural_neighbor_matrix_2(const Diagram& bvd, const PointRange& queries,
     typename Diagram::Face_handle hint;
     Rows& out = rows[c];
     for (std::size_t k = c * chunk; k < std::min(q.size(), (c + 1) * chunk); ++k) {
-      out.inside.push_back(nn.compute(q[k], method, hint, w) ? 1 : 0);
+      m.inside[k] = nn.compute(q[k], method, hint, w) ? 1 : 0;
       FT norm = 0;
       for (const auto& e : w) norm += e.second;
       row.clear();
-      for (const auto& e : w) row.emplace_back(column.at(e.first), e.second / norm);
+      for (const auto& e : w) row.emplace_back(column.get(e.first), e.second / norm);
       std::sort(row.begin(), row.end(),
                 [](const auto& a, const auto& b) { return a.first < b.first; });
       for (const auto& [j, value] : row) out.columns.push_back(j), out.values.push_back(value);
-      out.sizes.push_back(row.size());
+      out.ends.push_back(out.columns.size());
     }
   });
-  for (const Rows& r : rows) {
-    for (const std::size_t s : r.sizes) m.row_offsets.push_back(m.row_offsets.back() + s);
-    m.columns.insert(m.columns.end(), r.columns.begin(), r.columns.end());
-    m.values.insert(m.values.end(), r.values.begin(), r.values.end());
-    m.inside.insert(m.inside.end(), r.inside.begin(), r.inside.end());
-  }
+  // The chunks' rows in place, each at the sum of the sizes before it.
+  std::vector<std::size_t> start(chunks + 1, 0);
+  for (std::size_t c = 0; c < chunks; ++c) start[c + 1] = start[c] + rows[c].columns.size();
+  m.row_offsets.resize(q.size() + 1);
+  m.columns.resize(start.back());
+  m.values.resize(start.back());
+  internal::run_chunks(chunks, static_cast<unsigned>(threads), [&](std::size_t c) {
+    Rows& r = rows[c];
+    for (std::size_t k = 0; k < r.ends.size(); ++k)
+      m.row_offsets[c * chunk + k + 1] = start[c] + r.ends[k];
+    std::copy(r.columns.begin(), r.columns.end(), m.columns.begin() + std::ptrdiff_t(start[c]));
+    std::copy(r.values.begin(), r.values.end(), m.values.begin() + std::ptrdiff_t(start[c]));
+    r = Rows();
+  });
   return m;
 }
 

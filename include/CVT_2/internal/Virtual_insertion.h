@@ -371,6 +371,21 @@ class Approximate_way {
   double m_cx, m_cy, m_gx, m_gy, m_ec, m_eg;
 };
 
+// The sign of the angle at p of triangle pqr, if sure in floating point: negative when it is
+// obtuse, that is when the circumcenter lies strictly beyond the edge qr.
+template <class Point_2>
+bool acute(const Point_2& p, const Point_2& q, const Point_2& r, CGAL::Sign& sign) {
+  const double ax = CGAL::to_double(q.x()) - CGAL::to_double(p.x());
+  const double ay = CGAL::to_double(q.y()) - CGAL::to_double(p.y());
+  const double bx = CGAL::to_double(r.x()) - CGAL::to_double(p.x());
+  const double by = CGAL::to_double(r.y()) - CGAL::to_double(p.y());
+  const double dot = ax * bx + ay * by;
+  const double bound = 0x1.0p-50 * (std::abs(ax * bx) + std::abs(ay * by)) + 0x1.0p-1000;
+  if (!(std::abs(dot) > bound) || !(bound < HUGE_VAL)) return false;  // NaN and overflow too
+  sign = dot > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
+  return true;
+}
+
 // Algorithm 1 for one face of the star: the first constraint that its way from the centroid g
 // to the circumcenter c meets, found by walking along [g, c) through the triangles it crosses:
 // those of the star, then those of the triangulation around it. A triangle's exit is the edge
@@ -382,13 +397,11 @@ void Virtual_insertion<Diagram>::tag_star_face(Star_face& face) const {
   const Point_2& p1 = point(face.s);
   const Point_2& p2 = point(face.t);
   face.blind = false;
-  const Approximate_way<Point_2> approximate(p0, p1, p2, face.center);
-  // The common cases, sure in floating point: c in the face; or c in the triangle across one
-  // unconstrained edge (a, b), a star face or one of the triangulation, and the way through
-  // that open edge (a and b on either side of it).
+  // The common cases, sure in floating point: c in the face (no angle obtuse); or c in the
+  // triangle across one unconstrained edge (a, b), a star face or one of the triangulation, and
+  // the way through that open edge (a and b on either side of it).
   CGAL::Sign rim, after, before;  // c beyond the rim edge, (t, q), (q, s): negative
-  if (approximate.beyond(p1, p2, rim) && approximate.beyond(p2, p0, after) &&
-      approximate.beyond(p0, p1, before)) {
+  if (acute(p0, p1, p2, rim) && acute(p1, p2, p0, after) && acute(p2, p0, p1, before)) {
     const int exits =
         (rim == CGAL::NEGATIVE) + (after == CGAL::NEGATIVE) + (before == CGAL::NEGATIVE);
     if (exits == 0) return;
@@ -406,12 +419,14 @@ void Virtual_insertion<Diagram>::tag_star_face(Star_face& face) const {
       if (!m_cdt->is_infinite(out) && out->is_inside_domain())
         a = &p1, b = &p2, x = &out->vertex(out->index(face.inner))->point();
     }
+    const Approximate_way<Point_2> approximate(p0, p1, p2, face.center);
     CGAL::Sign u, v, sa, sb;
     if (exits == 1 && a != nullptr && approximate.beyond(*a, *x, u) && u == CGAL::POSITIVE &&
         approximate.beyond(*x, *b, v) && v == CGAL::POSITIVE && approximate.side(*a, sa) &&
         approximate.side(*b, sb) && sa != sb)
       return;
   }
+  const Approximate_way<Point_2> approximate(p0, p1, p2, face.center);
   // where floating point cannot tell, the exact predicates (rare: out of line)
   const auto side = [&](const Point_2& x) {
     CGAL::Sign s;
