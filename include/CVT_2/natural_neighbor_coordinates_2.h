@@ -92,21 +92,29 @@ class Natural_neighbors {
     const auto& star = m_insertion.star();
     const std::size_t n = star.size();
     m_slow.clear();
+    // As many rim vertices as star faces: each ends one face (the usual case, no search).
+    const bool distinct = m_insertion.rim().size() == n;
     for (std::size_t k = 0; k < n; ++k) {
       const auto& before = star[k];           // (q, s, i)
       const auto& after = star[(k + 1) % n];  // (q, i, t)
       const Vertex_handle i = before.t;
       FT lost = 0;
       const bool fast = i == after.s && run_area(before, after, lost);
+      if (distinct) {
+        out.emplace_back(i, lost);
+        if (!fast) m_slow.push_back(i);
+        continue;
+      }
       auto it = std::find_if(out.begin(), out.end(), [&](const auto& e) { return e.first == i; });
       if (it == out.end()) it = out.insert(out.end(), {i, FT(0)});
       it->second += lost;
       if (!fast && std::find(m_slow.begin(), m_slow.end(), i) == m_slow.end()) m_slow.push_back(i);
     }
-    for (const Vertex_handle i : m_insertion.rim())  // an end of a chain of the star alone
-      if (std::find_if(out.begin(), out.end(), [&](const auto& e) { return e.first == i; }) ==
-          out.end())
-        out.emplace_back(i, FT(0)), m_slow.push_back(i);
+    if (!distinct)
+      for (const Vertex_handle i : m_insertion.rim())  // an end of a chain of the star alone
+        if (std::find_if(out.begin(), out.end(), [&](const auto& e) { return e.first == i; }) ==
+            out.end())
+          out.emplace_back(i, FT(0)), m_slow.push_back(i);
     // Near constraints, a node whose cell q's does not touch can still get a loss of rounding
     // from its two chains; it is a neighbour only if q's cell has an edge on their bisector.
     m_bisected.clear();
