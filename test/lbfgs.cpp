@@ -482,7 +482,8 @@ std::vector<Vector> conjugate_directions(std::mt19937_64& rng, const Matrix& a) 
   return s;
 }
 // The pair (s, A s) into the history: from x = 0, g = 0 to x = s, g = A s.
-bool add_pair(CVT_2::internal::Lbfgs_history& history, const Vector& s, const Vector& y) {
+template <class History>
+bool add_pair(History& history, const Vector& s, const Vector& y) {
   const Vector zero(s.size(), 0);
   return history.add(zero, s, zero, y);
 }
@@ -543,18 +544,23 @@ TEST_CASE(
   const Matrix a = random_spd(rng, n);
   const std::vector<Vector> s = conjugate_directions(rng, a);
   std::vector<Vector> y;
-  CVT_2::internal::Lbfgs_history history(n + extra);
-  Vector d;
+  CVT_2::internal::Lbfgs_history<double> history(n + extra);
+  CVT_2::internal::Lbfgs_history<float> small(n + extra);  // the optimizer's: pairs as floats
+  Vector d, d_small;
   for (std::size_t i = 0; i < n; ++i) {
     CAPTURE(i);
     y.push_back(times(a, s[i]));
     REQUIRE(add_pair(history, s[i], y[i]));
+    REQUIRE(add_pair(small, s[i], y[i]));
     CHECK(history.size() == i + 1);
     // At any number of pairs: -H g with H the matrix of the updates, and downhill. (Rounding:
     // measured 4e-16 here, 5e-16 for the Newton direction below.)
     const Vector g = random_vector(rng, n), h = random_h(rng, k);
     CHECK(history.direction(g, h, d));
     CHECK(dot(g, d) < 0);
+    // With float pairs, the same direction to float's precision (measured 1e-6), downhill.
+    CHECK(small.direction(g, h, d_small));
+    CHECK(norm(subtract(d_small, d)) <= 1e-5 * norm(d));
     CHECK(off_opposite(d, times(inverse_hessian({s.begin(), s.begin() + i + 1}, y, h), g)) <=
           1e-12);
     if (i + 2 == n) CHECK(off_opposite(d, solve(a, g)) > 1e-3);  // a pair short: not Newton's
@@ -577,7 +583,7 @@ TEST_CASE("Lbfgs_history: L-BFGS with exact line searches minimizes a quadratic 
   const Matrix a = random_spd(rng, n);
   const Vector b = random_vector(rng, n), minimum = solve(a, b);
   const Vector h = random_h(rng, k);
-  CVT_2::internal::Lbfgs_history history(n);
+  CVT_2::internal::Lbfgs_history<double> history(n);
   Vector x = random_vector(rng, n), g = subtract(times(a, x), b), d(n);
   const double g0 = norm(g);
   for (std::size_t step = 0; step < n; ++step) {
@@ -601,16 +607,17 @@ TEST_CASE("Lbfgs_history: L-BFGS with exact line searches minimizes a quadratic 
   CHECK(norm(subtract(x, minimum)) <= 1e-9 * norm(minimum));
 }
 
-TEST_CASE(
+TEMPLATE_TEST_CASE(
     "Lbfgs_history: a pair without positive curvature is rejected and changes nothing, "
     "whether the ring is full or not",
-    "[lbfgs][lbfgs_history]") {
+    "[lbfgs][lbfgs_history]", float, double) {
+  using History = CVT_2::internal::Lbfgs_history<TestType>;
   const std::size_t k = 3, n = 2 * k, capacity = 3;
   std::mt19937_64 rng(23);
   const Matrix a = random_spd(rng, n);
   const std::vector<Vector> s = conjugate_directions(rng, a);
   const Vector g = random_vector(rng, n), h = random_h(rng, k);
-  CVT_2::internal::Lbfgs_history history(capacity);
+  History history(capacity);
   // Curvature s.y < 0 (y = -A s), and s.y = 0 (y orthogonal to s).
   const Vector bad_s = random_vector(rng, n);
   Vector negative = times(a, bad_s), orthogonal = random_vector(rng, n);
@@ -632,7 +639,7 @@ TEST_CASE(
     }
   }
   // Full, the oldest pair left: the same direction as a history of the last `capacity` pairs.
-  CVT_2::internal::Lbfgs_history last(capacity);
+  History last(capacity);
   for (std::size_t i = 1; i <= capacity; ++i) REQUIRE(add_pair(last, s[i], times(a, s[i])));
   Vector expected;
   REQUIRE(last.direction(g, h, expected));

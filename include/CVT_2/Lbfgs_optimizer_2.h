@@ -11,7 +11,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <unordered_map>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -97,7 +97,7 @@ class Lbfgs_optimizer_2 {
     if (!gather(m_trial)) {  // other generators than before: number them again
       number_generators();
       gather(m_trial);
-    } else if (m_has_current && m_trial.points != m_current.points) {
+    } else if (m_has_current && !same_positions(m_trial, m_current)) {
       m_history.clear();
     }
     std::swap(m_current, m_trial);
@@ -154,22 +154,42 @@ class Lbfgs_optimizer_2 {
   static constexpr std::size_t max_halvings = 2;  // of the step, before a Lloyd step instead
   static constexpr double armijo = 1e-4;          // sufficient decrease: a fraction of g.s
 
-  // A point of the iteration, generators in their fixed order: positions, centroids, the
-  // coordinates x, the gradient g (both 2 per generator) and the preconditioner 1/(2 m).
+  // A point of the iteration, generators in their fixed order: positions (kept apart from x
+  // only if the number type is not double), centroids, the coordinates x, the gradient g (both
+  // 2 per generator) and the preconditioner 1/(2 m).
+  static constexpr bool positions_in_x = std::is_same_v<FT, double>;
   struct Iterate {
     std::vector<Point_2> points, centroids;
     std::vector<double> x, g, h;
     Evaluation evaluation;
   };
+  static Point_2 position(const Iterate& it, std::size_t i) {
+    if constexpr (positions_in_x)
+      return Point_2(it.x[2 * i], it.x[2 * i + 1]);
+    else
+      return it.points[i];
+  }
+  static bool same_positions(const Iterate& a, const Iterate& b) {
+    if constexpr (positions_in_x)
+      return a.x == b.x;
+    else
+      return a.points == b.points;
+  }
+  // The free generators by their handles' addresses, for the lookups gather() needs.
+  static bool by_address(const std::pair<Vertex_handle, std::size_t>& a,
+                         const std::pair<Vertex_handle, std::size_t>& b) {
+    return &*a.first < &*b.first;
+  }
 
   void number_generators() {
     m_vertices.clear();
     m_index.clear();
     m_order.clear();
     for (const auto& f : m_lloyd.free_generators()) {
-      m_index.emplace(f.vertex, m_vertices.size());
+      m_index.emplace_back(f.vertex, m_vertices.size());
       m_vertices.push_back(f.vertex);
     }
+    std::sort(m_index.begin(), m_index.end(), by_address);
     m_history.clear();
   }
 
@@ -179,7 +199,7 @@ class Lbfgs_optimizer_2 {
     const auto& generators = m_lloyd.free_generators();
     const std::size_t n = m_vertices.size();
     if (generators.size() != n) return false;
-    it.points.resize(n);
+    if constexpr (!positions_in_x) it.points.resize(n);
     it.centroids.resize(n);
     it.x.resize(2 * n);
     it.g.resize(2 * n);
@@ -196,8 +216,9 @@ class Lbfgs_optimizer_2 {
       if (next < m_previous_order.size() && m_vertices[m_previous_order[next]] == f.vertex) {
         i = m_previous_order[next];
       } else {
-        const auto found = m_index.find(f.vertex);
-        if (found == m_index.end()) return false;
+        const auto found = std::lower_bound(m_index.begin(), m_index.end(),
+                                            std::make_pair(f.vertex, std::size_t(0)), by_address);
+        if (found == m_index.end() || found->first != f.vertex) return false;
         i = found->second;
         if (m_previous_order.size() == n) next = m_position[i];
       }
@@ -206,7 +227,7 @@ class Lbfgs_optimizer_2 {
       const Point_2& p = f.vertex->point();
       // A mass that underflowed to 0 would make the preconditioner infinite.
       const double m = std::max(CGAL::to_double(f.mass), std::numeric_limits<double>::min());
-      it.points[i] = p;
+      if constexpr (!positions_in_x) it.points[i] = p;
       it.centroids[i] = f.centroid;
       it.x[2 * i] = CGAL::to_double(p.x());
       it.x[2 * i + 1] = CGAL::to_double(p.y());
@@ -236,7 +257,8 @@ class Lbfgs_optimizer_2 {
   // still on their way after the first ones); if one cannot get there to the bit, the Lloyd step
   // that follows starts from an evaluation of where they are.
   void go_back(std::size_t resolution) {
-    m_targets = m_current.points;
+    m_targets.resize(m_vertices.size());
+    for (std::size_t i = 0; i < m_vertices.size(); ++i) m_targets[i] = position(m_current, i);
     if (move_to_targets(4 * max_passes) > 0) evaluate(resolution);
   }
 
@@ -280,9 +302,9 @@ class Lbfgs_optimizer_2 {
 
   CDT& m_cdt;
   Lloyd_optimizer m_lloyd;
-  internal::Lbfgs_history m_history;
-  std::vector<Vertex_handle> m_vertices;                   // the free generators, by number
-  std::unordered_map<Vertex_handle, std::size_t> m_index;  // and their numbers (lookup only)
+  internal::Lbfgs_history<float> m_history;
+  std::vector<Vertex_handle> m_vertices;                       // the free generators, by number
+  std::vector<std::pair<Vertex_handle, std::size_t>> m_index;  // and their numbers, by_address
   Iterate m_current, m_trial;
   bool m_has_current = false;
   std::vector<double> m_direction;

@@ -3,8 +3,10 @@
 #ifndef CVT_2_INTERNAL_LBFGS_HISTORY_H
 #define CVT_2_INTERNAL_LBFGS_HISTORY_H
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -23,38 +25,54 @@ inline double dot(const std::vector<double>& a, const std::vector<double>& b) {
 // value per point, h_i for both coordinates of point i, scaled by the newest pair as in Nocedal
 // and Wright (7.20). On a quadratic with Hessian A, after pairs along n A-conjugate directions
 // the direction is exactly -A^-1 g.
+//
+// Each vector of a pair is kept as `Stored` numbers times a power of two (its largest entry
+// below 1): float halves the memory of the pairs, whatever their magnitude, and the recursion
+// uses the pairs as stored (their curvature s.y included), so it is the exact recursion of
+// slightly other pairs. With double, the numbers are those of unscaled storage, bit for bit.
+template <class Stored = float>
 class Lbfgs_history {
  public:
   explicit Lbfgs_history(std::size_t capacity = 0) : m_capacity(capacity) {}
-
   std::size_t capacity() const { return m_capacity; }  // the most pairs kept
   std::size_t size() const { return m_size; }          // the pairs kept now
   void clear() { m_size = 0; }
 
   // Adds the pair s = x1 - x0, y = g1 - g0, unless its curvature s.y is not positive (relative
-  // to |s||y|): such a pair would make the inverse Hessian indefinite. When the ring is full the
+  // to |s||y|, beyond the rounding of the stored numbers): such a pair would make the inverse
+  // Hessian indefinite. When the ring is full the
   // oldest pair leaves. Returns whether the pair was added.
   bool add(const std::vector<double>& x0, const std::vector<double>& x1,
            const std::vector<double>& g0, const std::vector<double>& g1) {
     if (m_capacity == 0) return false;
     const std::size_t n = x0.size();
-    m_new_s.resize(n);
-    m_new_y.resize(n);
+    double s_max = 0, y_max = 0;
     for (std::size_t j = 0; j < n; ++j) {
-      m_new_s[j] = x1[j] - x0[j];
-      m_new_y[j] = g1[j] - g0[j];
+      s_max = std::max(s_max, std::abs(x1[j] - x0[j]));
+      y_max = std::max(y_max, std::abs(g1[j] - g0[j]));
     }
-    const double sy = dot(m_new_s, m_new_y);
-    if (!(sy > 1e-10 * std::sqrt(dot(m_new_s, m_new_s) * dot(m_new_y, m_new_y)))) return false;
-    if (m_s.size() < m_capacity) {
-      m_s.resize(m_capacity);
-      m_y.resize(m_capacity);
-      m_inverse_sy.resize(m_capacity);
+    if (!(s_max > 0 && y_max > 0 && std::isfinite(s_max) && std::isfinite(y_max))) return false;
+    int es, ey;  // s = 2^es s', y = 2^ey y', |s'|, |y'| < 1
+    std::frexp(s_max, &es);
+    std::frexp(y_max, &ey);
+    const auto stored = [](double v, int e) { return Stored(std::ldexp(v, -e)); };
+    double sy = 0, ss = 0, yy = 0;  // of s' and y' as stored
+    for (std::size_t j = 0; j < n; ++j) {
+      const double s = stored(x1[j] - x0[j], es), y = stored(g1[j] - g0[j], ey);
+      sy += s * y, ss += s * s, yy += y * y;
     }
-    const std::size_t k = slot(m_size);  // past the newest; the oldest's slot when full
-    m_s[k].swap(m_new_s);
-    m_y[k].swap(m_new_y);
-    m_inverse_sy[k] = 1 / sy;
+    constexpr double least = std::max(1e-10, 64 * double(std::numeric_limits<Stored>::epsilon()));
+    if (!(sy > least * std::sqrt(ss * yy))) return false;
+    if (m_pairs.size() < m_capacity) m_pairs.resize(m_capacity);
+    Pair& p = m_pairs[slot(m_size)];  // past the newest; the oldest's slot when full
+    p.s.resize(n);
+    p.y.resize(n);
+    for (std::size_t j = 0; j < n; ++j) {
+      p.s[j] = stored(x1[j] - x0[j], es);
+      p.y[j] = stored(g1[j] - g0[j], ey);
+    }
+    p.s_exponent = es, p.y_exponent = ey;
+    p.inverse_sy = std::ldexp(1 / sy, -es - ey);
     if (m_size < m_capacity)
       ++m_size;
     else
@@ -70,24 +88,28 @@ class Lbfgs_history {
     d = g;
     m_alpha.resize(m_size);
     for (std::size_t t = m_size; t-- > 0;) {
-      const std::size_t k = slot(t);
-      m_alpha[t] = m_inverse_sy[k] * dot(m_s[k], d);
-      for (std::size_t j = 0; j < d.size(); ++j) d[j] -= m_alpha[t] * m_y[k][j];
+      const Pair& p = m_pairs[slot(t)];
+      m_alpha[t] = p.inverse_sy * std::ldexp(scaled_dot(p.s, d), p.s_exponent);
+      const double a = std::ldexp(m_alpha[t], p.y_exponent);
+      for (std::size_t j = 0; j < d.size(); ++j) d[j] -= a * double(p.y[j]);
     }
-    const std::size_t newest = slot(m_size - 1);
-    const std::vector<double>& y = m_y[newest];
+    const Pair& newest = m_pairs[slot(m_size - 1)];
     double yhy = 0;
-    for (std::size_t i = 0; i < h.size(); ++i)
-      yhy += h[i] * (y[2 * i] * y[2 * i] + y[2 * i + 1] * y[2 * i + 1]);
-    const double gamma = 1 / (m_inverse_sy[newest] * yhy);
+    for (std::size_t i = 0; i < h.size(); ++i) {
+      const double y0 = newest.y[2 * i], y1 = newest.y[2 * i + 1];
+      yhy += h[i] * (y0 * y0 + y1 * y1);
+    }
+    const double gamma =
+        1 / (newest.inverse_sy * std::ldexp(yhy, 2 * newest.y_exponent));  // s.y / y.H0 y
     for (std::size_t i = 0; i < h.size(); ++i) {
       d[2 * i] *= gamma * h[i];
       d[2 * i + 1] *= gamma * h[i];
     }
     for (std::size_t t = 0; t < m_size; ++t) {
-      const std::size_t k = slot(t);
-      const double beta = m_inverse_sy[k] * dot(m_y[k], d);
-      for (std::size_t j = 0; j < d.size(); ++j) d[j] += (m_alpha[t] - beta) * m_s[k][j];
+      const Pair& p = m_pairs[slot(t)];
+      const double beta = p.inverse_sy * std::ldexp(scaled_dot(p.y, d), p.y_exponent);
+      const double a = std::ldexp(m_alpha[t] - beta, p.s_exponent);
+      for (std::size_t j = 0; j < d.size(); ++j) d[j] += a * double(p.s[j]);
     }
     for (double& v : d) v = -v;
     const double slope = dot(g, d);
@@ -95,12 +117,20 @@ class Lbfgs_history {
   }
 
  private:
+  struct Pair {
+    std::vector<Stored> s, y;
+    int s_exponent = 0, y_exponent = 0;  // s = 2^s_exponent s_stored; likewise y
+    double inverse_sy = 0;               // 1 / (s . y)
+  };
+  static double scaled_dot(const std::vector<Stored>& a, const std::vector<double>& b) {
+    double s = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) s += double(a[i]) * b[i];
+    return s;
+  }
   std::size_t slot(std::size_t t) const { return (m_first + t) % m_capacity; }  // t-th oldest
-
   std::size_t m_capacity, m_first = 0, m_size = 0;
-  std::vector<std::vector<double>> m_s, m_y;  // the pairs, a ring
-  std::vector<double> m_inverse_sy;           // 1 / (s . y) of each pair
-  std::vector<double> m_new_s, m_new_y, m_alpha;
+  std::vector<Pair> m_pairs;  // a ring
+  std::vector<double> m_alpha;
 };
 
 }  // namespace internal
