@@ -386,6 +386,25 @@ bool acute(const Point_2& p, const Point_2& q, const Point_2& r, CGAL::Sign& sig
   return true;
 }
 
+// Whether the circumcenter c of the triangle (a, b, w), counterclockwise, lies surely (in
+// floating point) on the left of a -> x: the sign of orientation(a, x, c) is that of
+// |v|² (e.u) - |u|² (e.v), u = b - a, v = w - a, e = x - a, with no circumcenter built. Called
+// from a and from b (then the sign of orientation(x, b, c), as (b, a, w) is clockwise), it says
+// whether c, beyond ab, is in the triangle (b, a, x) across it.
+template <class Point_2>
+bool center_across(const Point_2& a, const Point_2& b, const Point_2& w, const Point_2& x) {
+  const double ox = CGAL::to_double(a.x()), oy = CGAL::to_double(a.y());
+  const double ux = CGAL::to_double(b.x()) - ox, uy = CGAL::to_double(b.y()) - oy;
+  const double vx = CGAL::to_double(w.x()) - ox, vy = CGAL::to_double(w.y()) - oy;
+  const double ex = CGAL::to_double(x.x()) - ox, ey = CGAL::to_double(x.y()) - oy;
+  const double uu = ux * ux + uy * uy, vv = vx * vx + vy * vy;
+  const double value = vv * (ex * ux + ey * uy) - uu * (ex * vx + ey * vy);
+  const double bound = 0x1.0p-48 * (vv * (std::abs(ex * ux) + std::abs(ey * uy)) +
+                                    uu * (std::abs(ex * vx) + std::abs(ey * vy))) +
+                       0x1.0p-1000;
+  return value > bound && bound < HUGE_VAL;
+}
+
 // Algorithm 1 for one face of the star: the first constraint that its way from the centroid g
 // to the circumcenter c meets, found by walking along [g, c) through the triangles it crosses:
 // those of the star, then those of the triangulation around it. A triangle's exit is the edge
@@ -405,25 +424,26 @@ void Virtual_insertion<Diagram>::tag_star_face(Star_face& face) const {
     const int exits =
         (rim == CGAL::NEGATIVE) + (after == CGAL::NEGATIVE) + (before == CGAL::NEGATIVE);
     if (exits == 0) return;
+    // The exit edge (a, b) (the face on its left, w its third vertex) and x, the third vertex
+    // of the triangle across it. With one angle obtuse and the others acute, the way crosses
+    // that open edge (the centroid and the circumcenter project into it).
     const std::size_t n = m_star.size(), k = std::size_t(&face - m_star.data());
-    const Point_2 *a = nullptr, *b = nullptr, *x = nullptr;  // across (a, b): (b, a, x) ccw
+    const Point_2 *a = nullptr, *b = nullptr, *w = nullptr, *x = nullptr;
     if (after == CGAL::NEGATIVE) {
       const Star_face& next = m_star[(k + 1) % n];
-      if (!face.constrained_after && next.s == face.t) a = &p2, b = &p0, x = &point(next.t);
+      if (!face.constrained_after && next.s == face.t)
+        a = &p2, b = &p0, w = &p1, x = &point(next.t);
     } else if (before == CGAL::NEGATIVE) {
       const Star_face& previous = m_star[(k + n - 1) % n];
       if (!face.constrained_before && previous.t == face.s)
-        a = &p0, b = &p1, x = &point(previous.s);
+        a = &p0, b = &p1, w = &p2, x = &point(previous.s);
     } else if (!face.rim_constrained) {
       const Face_handle out = face.inner->neighbor(face.index);
       if (!m_cdt->is_infinite(out) && out->is_inside_domain())
-        a = &p1, b = &p2, x = &out->vertex(out->index(face.inner))->point();
+        a = &p1, b = &p2, w = &p0, x = &out->vertex(out->index(face.inner))->point();
     }
-    const Approximate_way<Point_2> approximate(p0, p1, p2, face.center);
-    CGAL::Sign u, v, sa, sb;
-    if (exits == 1 && a != nullptr && approximate.beyond(*a, *x, u) && u == CGAL::POSITIVE &&
-        approximate.beyond(*x, *b, v) && v == CGAL::POSITIVE && approximate.side(*a, sa) &&
-        approximate.side(*b, sb) && sa != sb)
+    if (exits == 1 && a != nullptr && center_across(*a, *b, *w, *x) &&
+        center_across(*b, *a, *w, *x))
       return;
   }
   const Approximate_way<Point_2> approximate(p0, p1, p2, face.center);
