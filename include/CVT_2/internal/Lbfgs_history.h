@@ -55,10 +55,13 @@ class Lbfgs_history {
     int es, ey;  // s = 2^es s', y = 2^ey y', |s'|, |y'| < 1
     std::frexp(s_max, &es);
     std::frexp(y_max, &ey);
-    const auto stored = [](double v, int e) { return Stored(std::ldexp(v, -e)); };
+    if (std::abs(es) > 1000 || std::abs(ey) > 1000) return false;  // scales out of range
+    // Scaling by a power of two is exact (as ldexp, which is a library call an entry).
+    const double to_s = std::ldexp(1.0, -es), to_y = std::ldexp(1.0, -ey);
+    const auto stored = [](double v, double scale) { return Stored(v * scale); };
     double sy = 0, ss = 0, yy = 0;  // of s' and y' as stored
     for (std::size_t j = 0; j < n; ++j) {
-      const double s = stored(x1[j] - x0[j], es), y = stored(g1[j] - g0[j], ey);
+      const double s = stored(x1[j] - x0[j], to_s), y = stored(g1[j] - g0[j], to_y);
       sy += s * y, ss += s * s, yy += y * y;
     }
     constexpr double least = std::max(1e-10, 64 * double(std::numeric_limits<Stored>::epsilon()));
@@ -68,8 +71,8 @@ class Lbfgs_history {
     p.s.resize(n);
     p.y.resize(n);
     for (std::size_t j = 0; j < n; ++j) {
-      p.s[j] = stored(x1[j] - x0[j], es);
-      p.y[j] = stored(g1[j] - g0[j], ey);
+      p.s[j] = stored(x1[j] - x0[j], to_s);
+      p.y[j] = stored(g1[j] - g0[j], to_y);
     }
     p.s_exponent = es, p.y_exponent = ey;
     p.inverse_sy = std::ldexp(1 / sy, -es - ey);
