@@ -6,7 +6,6 @@
 #define CVT_2_NATURAL_NEIGHBOR_COORDINATES_2_H
 
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
-#include <CVT_2/internal/Handle_numbering.h>
 #include <CVT_2/internal/Virtual_insertion.h>
 #include <CVT_2/internal/construct_cell.h>
 #include <CVT_2/internal/run_chunks.h>
@@ -22,6 +21,7 @@
 #include <cstddef>
 #include <iterator>
 #include <stdexcept>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -92,8 +92,9 @@ class Natural_neighbors {
     const auto& star = m_insertion.star();
     const std::size_t n = star.size();
     m_slow.clear();
-    // As many rim vertices as star faces: each ends one face (the usual case, no search).
-    const bool distinct = m_insertion.rim().size() == n;
+    // As many rim vertices as star faces, the last face ending where the first starts (a cycle,
+    // or two chains across a split constraint): each rim vertex ends one face, no search.
+    const bool distinct = m_insertion.rim().size() == n && star.back().t == star.front().s;
     for (std::size_t k = 0; k < n; ++k) {
       const auto& before = star[k];           // (q, s, i)
       const auto& after = star[(k + 1) % n];  // (q, i, t)
@@ -349,9 +350,7 @@ struct Natural_neighbor_matrix_2 {
 /// matrix (`Natural_neighbor_matrix_2`): the shape functions of the constrained natural element
 /// method at those points. Queries are taken in chunks in their order, each located from the
 /// one before it (spatially sorted queries locate fastest); the result is the same, bit for bit,
-/// whatever the number of threads. Nodes are numbered in the vertices' `id()` when they have
-/// one (CGAL's `Triangulation_vertex_base_with_id_2`, as in `Cvt_triangulation_2`): the call
-/// writes them.
+/// whatever the number of threads.
 /// \param np optional named parameters: `natural_neighbor_method(m)` (default `SIBSON`),
 ///        `number_of_threads(n)` (default 0, one per core).
 /// \throws std::invalid_argument for a query that is not finite, naming it.
@@ -368,13 +367,13 @@ natural_neighbor_matrix_2(const Diagram& bvd, const PointRange& queries,
   const auto threads = choose_parameter(get_parameter(np, number_of_threads_t()), 0u);
   Natural_neighbor_matrix_2<Vertex_handle, FT> m;
   const auto& cdt = bvd.triangulation();
-  // Columns in the vertices' ids where they have one (read where the query has the vertex in
-  // cache already), else in a hash map.
-  internal::Handle_numbering<Vertex_handle> column;
+  // Columns in a hash map: the diagram is not ours to write (vertex ids may hold a mesh's
+  // numbers, or the user's).
+  std::unordered_map<Vertex_handle, std::size_t> column;
   column.reserve(cdt.number_of_vertices());
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     if (bvd.has_cell(v)) {
-      column.set(v, m.nodes.size());
+      column.emplace(v, m.nodes.size());
       m.nodes.push_back(v);
     }
   const std::vector<Point_2> q(std::begin(queries), std::end(queries));
@@ -397,7 +396,7 @@ natural_neighbor_matrix_2(const Diagram& bvd, const PointRange& queries,
       FT norm = 0;
       for (const auto& e : w) norm += e.second;
       row.clear();
-      for (const auto& e : w) row.emplace_back(column.get(e.first), e.second / norm);
+      for (const auto& e : w) row.emplace_back(column.at(e.first), e.second / norm);
       std::sort(row.begin(), row.end(),
                 [](const auto& a, const auto& b) { return a.first < b.first; });
       for (const auto& [j, value] : row) out.columns.push_back(j), out.values.push_back(value);

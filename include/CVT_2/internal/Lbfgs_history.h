@@ -66,6 +66,11 @@ class Lbfgs_history {
     }
     constexpr double least = std::max(1e-10, 64 * double(std::numeric_limits<Stored>::epsilon()));
     if (!(sy > least * std::sqrt(ss * yy))) return false;
+    // s.y, 1 / s.y and y.y unscaled, which the recursion forms, in the normal range
+    const double sy_unscaled = std::ldexp(sy, es + ey), yy_unscaled = std::ldexp(yy, 2 * ey);
+    if (!std::isnormal(sy_unscaled) || !std::isnormal(1 / sy_unscaled) ||
+        !std::isnormal(yy_unscaled))
+      return false;
     if (m_pairs.size() < m_capacity) m_pairs.resize(m_capacity);
     Pair& p = m_pairs[slot(m_size)];  // past the newest; the oldest's slot when full
     p.s.resize(n);

@@ -401,6 +401,7 @@ bool center_across(const Point_2& a, const Point_2& b, const Point_2& w, const P
   const double value = vv * (ex * ux + ey * uy) - uu * (ex * vx + ey * vy);
   const double bound = 0x1.0p-48 * (vv * (std::abs(ex * ux) + std::abs(ey * uy)) +
                                     uu * (std::abs(ex * vx) + std::abs(ey * vy))) +
+                       0x1.0p-1070 * (vv + uu) +  // products below the normal range, scaled
                        0x1.0p-1000;
   return value > bound && bound < HUGE_VAL;
 }
