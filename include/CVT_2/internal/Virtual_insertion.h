@@ -399,10 +399,13 @@ bool center_across(const Point_2& a, const Point_2& b, const Point_2& w, const P
   const double ex = CGAL::to_double(x.x()) - ox, ey = CGAL::to_double(x.y()) - oy;
   const double uu = ux * ux + uy * uy, vv = vx * vx + vy * vy;
   const double value = vv * (ex * ux + ey * uy) - uu * (ex * vx + ey * vy);
+  // Products below the normal range err by 2^-1075 each, then scaled by |u|², |v|²: at most
+  // 2^-1000 unless these exceed 2^70 (the term is built only then, as a subnormal product
+  // would be slow).
+  const double spread = vv + uu;
   const double bound = 0x1.0p-48 * (vv * (std::abs(ex * ux) + std::abs(ey * uy)) +
                                     uu * (std::abs(ex * vx) + std::abs(ey * vy))) +
-                       0x1.0p-1070 * (vv + uu) +  // products below the normal range, scaled
-                       0x1.0p-1000;
+                       (spread > 0x1.0p70 ? 0x1.0p-1070 * spread : 0x1.0p-1000) + 0x1.0p-1000;
   return value > bound && bound < HUGE_VAL;
 }
 
