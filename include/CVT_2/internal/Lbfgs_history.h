@@ -40,8 +40,8 @@ class Lbfgs_history {
 
   // Adds the pair s = x1 - x0, y = g1 - g0, unless its curvature s.y is not positive (relative
   // to |s||y|, beyond the rounding of the stored numbers): such a pair would make the inverse
-  // Hessian indefinite. When the ring is full the
-  // oldest pair leaves. Returns whether the pair was added.
+  // Hessian indefinite. When the ring is full the oldest pair leaves. Returns whether the pair
+  // was added.
   bool add(const std::vector<double>& x0, const std::vector<double>& x1,
            const std::vector<double>& g0, const std::vector<double>& g1) {
     if (m_capacity == 0) return false;
@@ -56,7 +56,7 @@ class Lbfgs_history {
     std::frexp(s_max, &es);
     std::frexp(y_max, &ey);
     if (std::abs(es) > 1000 || std::abs(ey) > 1000) return false;  // scales out of range
-    // Scaling by a power of two is exact (as ldexp, which is a library call an entry).
+    // Multiplying by a power of two is exact, as ldexp is, without a library call an entry.
     const double to_s = std::ldexp(1.0, -es), to_y = std::ldexp(1.0, -ey);
     const auto stored = [](double v, double scale) { return Stored(v * scale); };
     double sy = 0, ss = 0, yy = 0;  // of s' and y' as stored

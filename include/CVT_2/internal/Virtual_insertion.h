@@ -322,7 +322,7 @@ bool Virtual_insertion<Diagram>::build_star() {
 // The way [g, c) of triangle pqr in floating point, c the circumcenter as the traits build it
 // (off by at most 2^-30 of pqr's shortest side, then rounded), with a bound on the error of each
 // orientation: a sign beyond its bound is exact; the others are left to the exact predicates.
-// Most star faces are decided so: their circumcenter is well inside them or the next triangle.
+// The walk of tag_star_face() uses it for the few star faces its tests on the points leave.
 template <class Point_2>
 class Approximate_way {
  public:
@@ -420,9 +420,9 @@ void Virtual_insertion<Diagram>::tag_star_face(Star_face& face) const {
   const Point_2& p1 = point(face.s);
   const Point_2& p2 = point(face.t);
   face.blind = false;
-  // The common cases, sure in floating point: c in the face (no angle obtuse); or c in the
-  // triangle across one unconstrained edge (a, b), a star face or one of the triangulation, and
-  // the way through that open edge (a and b on either side of it).
+  // The common cases, sure in floating point from the points alone: c in the face (no angle
+  // obtuse); or c in the triangle across one unconstrained edge, a star face or one of the
+  // triangulation.
   CGAL::Sign rim, after, before;  // c beyond the rim edge, (t, q), (q, s): negative
   if (acute(p0, p1, p2, rim) && acute(p1, p2, p0, after) && acute(p2, p0, p1, before)) {
     const int exits =
