@@ -100,7 +100,7 @@ class Natural_neighbors {
       const auto& after = star[(k + 1) % n];  // (q, i, t)
       const Vertex_handle i = before.t;
       FT lost = 0;
-      const bool fast = i == after.s && run_area(before, after, lost);
+      const bool fast = i == after.s && run_area(before, after, distinct, lost);
       if (distinct) {
         out.emplace_back(i, lost);
         if (!fast) m_slow.push_back(i);
@@ -131,11 +131,11 @@ class Natural_neighbors {
   }
 
   // The area the run of zone faces around i = before.t = after.s loses, if the fast case holds.
+  // With each rim vertex once on the rim, i has no rim edges but those two: the run stays in
+  // the zone.
   template <class Star_face>
-  bool run_area(const Star_face& before, const Star_face& after, FT& lost) {
-    if (before.blind || after.blind || before.rim_constrained || after.rim_constrained ||
-        before.constrained_after)
-      return false;
+  bool run_area(const Star_face& before, const Star_face& after, bool distinct, FT& lost) {
+    if (before.blind || after.blind || before.constrained_after) return false;
     const Vertex_handle i = before.t;
     m_polygon.clear();
     m_polygon.push_back(after.center);
@@ -149,7 +149,7 @@ class Natural_neighbors {
       if (g->is_constrained(u)) return false;
       from = g->vertex(3 - u - g->index(i));
       g = g->neighbor(u);
-      if (!m_insertion.in_conflict(g)) return false;
+      if (!distinct && !m_insertion.in_conflict(g)) return false;
     }
     m_polygon.push_back(before.center);
     const Point_2& o = m_polygon[0];

@@ -241,15 +241,16 @@ void Virtual_insertion<Diagram>::find_conflict_zone(const std::vector<Face_handl
     m_stack.pop_back();
     const Face_handle n = f->neighbor(i);
     const bool constrained = f->is_constrained(i);
-    if (!constrained && !m_cdt->is_infinite(n) && n->is_inside_domain()) {
-      if (in_conflict(n)) continue;
-      if (m_cdt->side_of_oriented_circle(n, m_q, true) == CGAL::ON_POSITIVE_SIDE) {
+    // The in-circle test first: a face not in conflict (most) needs no search of the zone.
+    if (!constrained && !m_cdt->is_infinite(n) && n->is_inside_domain() &&
+        m_cdt->side_of_oriented_circle(n, m_q, true) == CGAL::ON_POSITIVE_SIDE) {
+      if (!in_conflict(n)) {
         add_to_zone(n);
         const int j = n->index(f);
         m_stack.emplace_back(n, CDT::cw(j));
         m_stack.emplace_back(n, CDT::ccw(j));
-        continue;
       }
+      continue;
     }
     const Vertex_handle s = f->vertex(CDT::ccw(i)), t = f->vertex(CDT::cw(i));
     if (split && ends_equal(s, t, m_split_a, m_split_b)) continue;  // not a rim edge
@@ -371,18 +372,23 @@ class Approximate_way {
   double m_cx, m_cy, m_gx, m_gy, m_ec, m_eg;
 };
 
-// The sign of the angle at p of triangle pqr, if sure in floating point: negative when it is
-// obtuse, that is when the circumcenter lies strictly beyond the edge qr.
+// The signs of the angles of triangle pqr at p, q and r, if sure in floating point: negative
+// where the angle is obtuse, that is where the circumcenter lies strictly beyond the opposite
+// edge. From u = q - p and v = r - p: the dot products u.v, |u|² - u.v and |v|² - u.v.
 template <class Point_2>
-bool acute(const Point_2& p, const Point_2& q, const Point_2& r, CGAL::Sign& sign) {
-  const double ax = CGAL::to_double(q.x()) - CGAL::to_double(p.x());
-  const double ay = CGAL::to_double(q.y()) - CGAL::to_double(p.y());
-  const double bx = CGAL::to_double(r.x()) - CGAL::to_double(p.x());
-  const double by = CGAL::to_double(r.y()) - CGAL::to_double(p.y());
-  const double dot = ax * bx + ay * by;
-  const double bound = 0x1.0p-50 * (std::abs(ax * bx) + std::abs(ay * by)) + 0x1.0p-1000;
-  if (!(std::abs(dot) > bound) || !(bound < HUGE_VAL)) return false;  // NaN and overflow too
-  sign = dot > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
+bool angle_signs(const Point_2& p, const Point_2& q, const Point_2& r, CGAL::Sign sign[3]) {
+  const double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y());
+  const double ux = CGAL::to_double(q.x()) - px, uy = CGAL::to_double(q.y()) - py;
+  const double vx = CGAL::to_double(r.x()) - px, vy = CGAL::to_double(r.y()) - py;
+  const double xx = ux * vx, yy = uy * vy, uu = ux * ux + uy * uy, vv = vx * vx + vy * vy;
+  const double dot = xx + yy, cross = std::abs(xx) + std::abs(yy);
+  const double value[3] = {dot, uu - dot, vv - dot};
+  const double bound[3] = {0x1.0p-50 * cross + 0x1.0p-1000, 0x1.0p-50 * (uu + cross) + 0x1.0p-1000,
+                           0x1.0p-50 * (vv + cross) + 0x1.0p-1000};
+  for (int i = 0; i < 3; ++i) {
+    if (!(std::abs(value[i]) > bound[i]) || !(bound[i] < HUGE_VAL)) return false;  // NaN too
+    sign[i] = value[i] > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
+  }
   return true;
 }
 
@@ -423,8 +429,9 @@ void Virtual_insertion<Diagram>::tag_star_face(Star_face& face) const {
   // The common cases, sure in floating point from the points alone: c in the face (no angle
   // obtuse); or c in the triangle across one unconstrained edge, a star face or one of the
   // triangulation.
-  CGAL::Sign rim, after, before;  // c beyond the rim edge, (t, q), (q, s): negative
-  if (acute(p0, p1, p2, rim) && acute(p1, p2, p0, after) && acute(p2, p0, p1, before)) {
+  CGAL::Sign angle[3];  // at q, s, t: c beyond the rim edge, (t, q), (q, s) if negative
+  if (angle_signs(p0, p1, p2, angle)) {
+    const CGAL::Sign rim = angle[0], after = angle[1], before = angle[2];
     const int exits =
         (rim == CGAL::NEGATIVE) + (after == CGAL::NEGATIVE) + (before == CGAL::NEGATIVE);
     if (exits == 0) return;
