@@ -16,6 +16,7 @@
 #include <CVT_2/natural_neighbor_coordinates_2.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Unique_hash_map.h>
 #include <CGAL/function_objects.h>
 #include <CGAL/hilbert_sort.h>
 #include <CGAL/natural_neighbor_coordinates_2.h>
@@ -32,7 +33,6 @@
 #include <iterator>
 #include <sstream>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -217,10 +217,10 @@ void bm_natural_neighbors(benchmark::State& state, const std::string& name) {
     Stopwatch t;
     std::size_t cells = 0;
     {
-      std::unordered_map<Bvd::Vertex_handle, std::size_t> column;
-      column.reserve(cdt.number_of_vertices());
+      CGAL::Unique_hash_map<Bvd::Vertex_handle, std::size_t> column(std::size_t(-1),
+                                                                    cdt.number_of_vertices());
       for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-        if (bvd.has_cell(v)) column.emplace(v, cells++);
+        if (bvd.has_cell(v)) column[v] = cells++;
     }
     numbering.push_back(t.wall_s() * per_query);
     benchmark::DoNotOptimize(cells);

@@ -14,6 +14,7 @@
 #include <CVT_2/parameters.h>
 
 #include <CGAL/Kernel/global_functions.h>
+#include <CGAL/Unique_hash_map.h>
 #include <CGAL/tuple.h>
 
 #include <algorithm>
@@ -21,7 +22,6 @@
 #include <cstddef>
 #include <iterator>
 #include <stdexcept>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -368,14 +368,17 @@ natural_neighbor_matrix_2(const Diagram& bvd, const PointRange& queries,
   Natural_neighbor_matrix_2<Vertex_handle, FT> m;
   const auto& cdt = bvd.triangulation();
   // Columns in a hash map: the diagram is not ours to write (vertex ids may hold a mesh's
-  // numbers, or the user's).
-  std::unordered_map<Vertex_handle, std::size_t> column;
-  column.reserve(cdt.number_of_vertices());
+  // numbers, or the user's). CGAL's, keyed by the handles' addresses, keeps its items in one
+  // table (a lookup is one read of memory, on any number of threads; std::unordered_map's are
+  // nodes of their own, one allocation an insertion).
+  CGAL::Unique_hash_map<Vertex_handle, std::size_t> column(std::size_t(-1),
+                                                           cdt.number_of_vertices());
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     if (bvd.has_cell(v)) {
-      column.emplace(v, m.nodes.size());
+      column[v] = m.nodes.size();
       m.nodes.push_back(v);
     }
+  const auto& columns = column;  // const from here: lookups only, thread-safe
   const std::vector<Point_2> q(std::begin(queries), std::end(queries));
   constexpr std::size_t chunk = 1024;
   const std::size_t chunks = (q.size() + chunk - 1) / chunk;
@@ -396,7 +399,7 @@ natural_neighbor_matrix_2(const Diagram& bvd, const PointRange& queries,
       FT norm = 0;
       for (const auto& e : w) norm += e.second;
       row.clear();
-      for (const auto& e : w) row.emplace_back(column.at(e.first), e.second / norm);
+      for (const auto& e : w) row.emplace_back(columns[e.first], e.second / norm);
       std::sort(row.begin(), row.end(),
                 [](const auto& a, const auto& b) { return a.first < b.first; });
       for (const auto& [j, value] : row) out.columns.push_back(j), out.values.push_back(value);
