@@ -147,6 +147,13 @@ class Bounded_voronoi_diagram_2 {
 
   /// Tags the blind faces again, after the triangulation or its domain changed.
   void update() { m_number_of_blinded_faces = internal::tag_blind_faces(m_cdt, m_traits); }
+  /// \cond SKIP_IN_MANUAL
+  // update(), its pass over the faces on `threads` threads, in the chunks of the optimizers
+  // (up to date with the triangulation); the same tags.
+  void update(const internal::Face_chunks<CDT>& chunks, unsigned threads) {
+    m_number_of_blinded_faces = internal::tag_blind_faces(m_cdt, m_traits, chunks, threads);
+  }
+  /// \endcond
 
   const CDT& triangulation() const { return m_cdt; }      ///< the triangulation
   const Traits& geom_traits() const { return m_traits; }  ///< the traits

@@ -315,8 +315,8 @@ template <class CDT, class Density, class Quadrature, class Traits>
 auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::evaluate(std::size_t resolution)
     -> const Evaluation& {
   ++m_number_of_evaluations;
-  m_diagram.update();
   m_chunks.update(m_cdt);
+  m_diagram.update(m_chunks, m_number_of_threads);
   // Cells in chunks, on several threads; each chunk sums its own cells in order, then the
   // chunks are summed in order: the same bits whatever the threads.
   m_chunk_sums.assign(m_chunks.size(), Chunk());

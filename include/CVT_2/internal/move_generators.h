@@ -13,7 +13,8 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <unordered_set>
+#include <cstdint>
+#include <iterator>
 #include <vector>
 
 namespace CVT_2 {
@@ -29,7 +30,33 @@ struct Move_buffers {
   // what each chunk of faces found, before they are put together in the order of the chunks
   std::vector<std::vector<typename CDT::Face_handle>> chunk_inverted;
   std::vector<std::vector<Flip_candidate<CDT>>> chunk_stack;
+  std::vector<std::vector<std::size_t>> chunk_pending;
 };
+
+// The i of `order` (random access) whose vertex(i) is not at target(i), in that order, into
+// `b.pending`: a read of every vertex, in chunks on `threads` threads.
+template <class CDT, class OrderRange, class VertexAt, class TargetAt>
+void list_pending(const OrderRange& order, const VertexAt& vertex, const TargetAt& target,
+                  unsigned threads, Move_buffers<CDT>& b) {
+  constexpr std::size_t distance = 8, chunk_size = 4096;
+  const std::size_t n = std::size_t(std::end(order) - std::begin(order));
+  const std::size_t chunks = (n + chunk_size - 1) / chunk_size;
+  b.chunk_pending.resize(std::max(b.chunk_pending.size(), chunks));
+  run_chunks(chunks, threads, [&](std::size_t c) {
+    std::vector<std::size_t>& out = b.chunk_pending[c];
+    out.clear();
+    const auto first = std::begin(order);
+    const std::size_t end = std::min(n, (c + 1) * chunk_size);
+    for (std::size_t k = c * chunk_size; k < end; ++k) {
+      if (k + distance < end) prefetch(&*vertex(first[std::ptrdiff_t(k + distance)]));
+      const std::size_t i = first[std::ptrdiff_t(k)];
+      if (vertex(i)->point() != target(i)) out.push_back(i);
+    }
+  });
+  b.pending.clear();
+  for (std::size_t c = 0; c < chunks; ++c)
+    b.pending.insert(b.pending.end(), b.chunk_pending[c].begin(), b.chunk_pending[c].end());
+}
 
 // Sets vertex(i) to target(i) for every i of `pending`, in chunks on `threads` threads,
 // remembering where each was in `b.from`.
@@ -91,8 +118,10 @@ void check_moved_faces(const CDT& cdt, const Face_chunks<CDT>& chunks, unsigned 
 // Rounds of putting back: a face that is not positive has a vertex that moved (at their old
 // places, its vertices made a positive face), so each round puts back at least one and the
 // rounds end, at the latest with the old triangulation. A round looks its vertices up in one
-// pass over `pending`, so that everything happens in the order of `pending`, not of addresses.
-// The vertices put back are listed in `b.kept_back`, in the order of `pending`.
+// pass over `pending`, so that everything happens in the order of `pending`, not of addresses;
+// the few vertices a round wants are sorted, and a bitmap of their hashes turns away almost
+// every other vertex of the pass in one read. The vertices put back are listed in
+// `b.kept_back`, in the order of `pending`.
 template <class CDT, class VertexAt>
 void put_back_inverted(const CDT& cdt, const std::vector<std::size_t>& pending,
                        const VertexAt& vertex, Move_buffers<CDT>& b) {
@@ -100,15 +129,28 @@ void put_back_inverted(const CDT& cdt, const std::vector<std::size_t>& pending,
   const auto orientation = cdt.geom_traits().orientation_2_object();
   const std::size_t n = pending.size();
   std::vector<bool> put_back(b.inverted.empty() ? 0 : n, false);
-  std::unordered_set<Vertex_handle> wanted;
+  constexpr std::size_t bits = std::size_t(1) << 16;
+  std::vector<std::uint64_t> bitmap(b.inverted.empty() ? 0 : bits / 64);
+  const auto hash = [](Vertex_handle v) {
+    return (reinterpret_cast<std::uintptr_t>(&*v) * std::uintptr_t(0x9E3779B97F4A7C15u)) >> 48;
+  };
+  const auto less = [](Vertex_handle u, Vertex_handle v) { return &*u < &*v; };
+  std::vector<Vertex_handle> wanted;
   while (!b.inverted.empty()) {
     wanted.clear();
     for (const auto f : b.inverted)
-      for (int i = 0; i < 3; ++i) wanted.insert(f->vertex(i));
+      for (int i = 0; i < 3; ++i) wanted.push_back(f->vertex(i));
+    std::sort(wanted.begin(), wanted.end(), less);
+    wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
+    std::fill(bitmap.begin(), bitmap.end(), 0);
+    for (const Vertex_handle v : wanted) bitmap[hash(v) >> 6] |= std::uint64_t(1) << (hash(v) & 63);
     b.inverted.clear();
     for (std::size_t k = 0; k < n; ++k) {
       const Vertex_handle v = vertex(pending[k]);
-      if (put_back[k] || wanted.count(v) == 0) continue;
+      const std::size_t h = hash(v);
+      if (put_back[k] || !(bitmap[h >> 6] >> (h & 63) & 1) ||
+          !std::binary_search(wanted.begin(), wanted.end(), v, less))
+        continue;
       put_back[k] = true;
       v->set_point(b.from[k]);
       auto fc = cdt.incident_faces(v), end = fc;
@@ -161,9 +203,7 @@ std::size_t move_free_vertices(CDT& cdt, const Face_chunks<CDT>& chunks, unsigne
                                const OrderRange& order, const VertexAt& vertex,
                                const TargetAt& target, std::size_t passes, Move_buffers<CDT>& b) {
   std::vector<std::size_t>& pending = b.pending;
-  pending.clear();
-  for (const std::size_t i : order)
-    if (vertex(i)->point() != target(i)) pending.push_back(i);
+  list_pending(order, vertex, target, threads, b);
   for (std::size_t pass = 0; pass < passes && !pending.empty(); ++pass) {
     const bool at_once = pass == 0 && pending.size() * 8 > order.size();
     if (at_once) {

@@ -3,6 +3,8 @@
 #ifndef CVT_2_INTERNAL_TAG_BLIND_FACES_H
 #define CVT_2_INTERNAL_TAG_BLIND_FACES_H
 
+#include <CVT_2/internal/Face_chunks.h>
+
 #include <CGAL/enum.h>
 
 #include <cstddef>
@@ -35,23 +37,24 @@ bool blinds_first(const Traits& traits, typename CDT::Face_handle f, const typen
                                                      tb) == CGAL::SMALLER;
 }
 
-// Clears every tag (writing only to the faces that have one) and returns the sides of
-// constrained edges that domain faces lie on: Algorithm 1's loop runs over them.
-template <class CDT>
-std::vector<typename CDT::Edge> clear_tags_and_list_constraint_sides(const CDT& cdt) {
-  std::vector<typename CDT::Edge> sides;
+// Clears every tag of the faces [first, last) (writing only to the faces that have one) and
+// appends to `sides` the sides of constrained edges that domain faces among them lie on:
+// Algorithm 1's loop runs over them.
+template <class CDT, class Face_iterator>
+void clear_tags_and_list_constraint_sides(const CDT& cdt, Face_iterator first, Face_iterator last,
+                                          std::vector<typename CDT::Edge>& sides) {
   const bool planar = cdt.dimension() == 2;
-  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) {
+  for (auto f = first; f != last; ++f) {
     if (f->is_blinded()) f->clear_blinding();
     if (planar && f->is_inside_domain() && !cdt.is_infinite(f))
       for (int i = 0; i < 3; ++i)
         if (f->is_constrained(i)) sides.emplace_back(f, i);
   }
-  return sides;
 }
 
-// Algorithm 1: tags every face of the domain that a constraint hides from its circumcenter with
-// the first such constraint; returns the number of blinded faces.
+// Algorithm 1, from the constraint sides that clear_tags_and_list_constraint_sides() lists: tags
+// every face of the domain that a constraint hides from its circumcenter with the first such
+// constraint; returns the number of blinded faces.
 //
 // The faces blinded by a constrained edge e are connected through unconstrained edges and reach
 // e (the Voronoi diagram of their vertices on one side of e is a tree rooted at the dual ray of
@@ -60,11 +63,11 @@ std::vector<typename CDT::Edge> clear_tags_and_list_constraint_sides(const CDT& 
 // through faces tagged by another constraint, and remembers them in `elsewhere` so as to visit
 // each face once per walk.
 template <class CDT, class Traits>
-std::size_t tag_blind_faces(const CDT& cdt, const Traits& traits) {
+std::size_t tag_blind_faces_from(const CDT& cdt, const Traits& traits,
+                                 const std::vector<typename CDT::Edge>& sides) {
   using Face_handle = typename CDT::Face_handle;
   using Edge = typename CDT::Edge;
   const auto is_blinded = traits.is_blinded_2_object();
-  const std::vector<Edge> sides = clear_tags_and_list_constraint_sides(cdt);
   const auto tagged_by = [](Face_handle f, const Edge& e) {
     if (!f->is_blinded()) return false;
     const Edge t = f->blinding_edge();
@@ -100,6 +103,31 @@ std::size_t tag_blind_faces(const CDT& cdt, const Traits& traits) {
     }
   }
   return count;
+}
+
+// Algorithm 1 on the whole triangulation, its tags cleared first.
+template <class CDT, class Traits>
+std::size_t tag_blind_faces(const CDT& cdt, const Traits& traits) {
+  std::vector<typename CDT::Edge> sides;
+  clear_tags_and_list_constraint_sides(cdt, cdt.all_faces_begin(), cdt.all_faces_end(), sides);
+  return tag_blind_faces_from(cdt, traits, sides);
+}
+
+// The same, the pass over the faces on `threads` threads in the chunks of `chunks` (up to date
+// with `cdt`): the sides come out in the same order, and so do the tags.
+template <class CDT, class Traits>
+std::size_t tag_blind_faces(const CDT& cdt, const Traits& traits, const Face_chunks<CDT>& chunks,
+                            unsigned threads) {
+  if (chunks.size() == 0) return tag_blind_faces(cdt, traits);  // no plane: no chunks
+  std::vector<std::vector<typename CDT::Edge>> parts(chunks.size());
+  chunks.for_each(
+      [&](std::size_t c, auto first, auto last) {
+        clear_tags_and_list_constraint_sides(cdt, first, last, parts[c]);
+      },
+      threads);
+  std::vector<typename CDT::Edge> sides;
+  for (const auto& part : parts) sides.insert(sides.end(), part.begin(), part.end());
+  return tag_blind_faces_from(cdt, traits, sides);
 }
 
 }  // namespace internal
