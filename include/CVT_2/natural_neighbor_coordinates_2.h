@@ -399,7 +399,11 @@ natural_neighbor_matrix_2(const Diagram& bvd, const PointRange& queries,
       FT norm = 0;
       for (const auto& e : w) norm += e.second;
       row.clear();
-      for (const auto& e : w) row.emplace_back(columns[e.first], e.second / norm);
+      for (const auto& e : w) {
+        const std::size_t j = columns[e.first];
+        CGAL_assertion(j != std::size_t(-1));  // a neighbour is a vertex of a domain face
+        row.emplace_back(j, e.second / norm);
+      }
       std::sort(row.begin(), row.end(),
                 [](const auto& a, const auto& b) { return a.first < b.first; });
       for (const auto& [j, value] : row) out.columns.push_back(j), out.values.push_back(value);

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <iterator>
 #include <vector>
 
@@ -131,10 +132,13 @@ void put_back_inverted(const CDT& cdt, const std::vector<std::size_t>& pending,
   std::vector<bool> put_back(b.inverted.empty() ? 0 : n, false);
   constexpr std::size_t bits = std::size_t(1) << 16;
   std::vector<std::uint64_t> bitmap(b.inverted.empty() ? 0 : bits / 64);
-  const auto hash = [](Vertex_handle v) {
-    return (reinterpret_cast<std::uintptr_t>(&*v) * std::uintptr_t(0x9E3779B97F4A7C15u)) >> 48;
+  const auto hash = [](Vertex_handle v) {  // 16 bits of the address, mixed (on any width)
+    const std::uint64_t a = std::uint64_t(reinterpret_cast<std::uintptr_t>(&*v));
+    return std::size_t((a * std::uint64_t(0x9E3779B97F4A7C15u)) >> 48);
   };
-  const auto less = [](Vertex_handle u, Vertex_handle v) { return &*u < &*v; };
+  const auto less = [](Vertex_handle u, Vertex_handle v) {
+    return std::less<const void*>()(&*u, &*v);
+  };
   std::vector<Vertex_handle> wanted;
   while (!b.inverted.empty()) {
     wanted.clear();
