@@ -55,8 +55,10 @@ void list_pending(const OrderRange& order, const VertexAt& vertex, const TargetA
     }
   });
   b.pending.clear();
-  for (std::size_t c = 0; c < chunks; ++c)
+  for (std::size_t c = 0; c < chunks; ++c) {
     b.pending.insert(b.pending.end(), b.chunk_pending[c].begin(), b.chunk_pending[c].end());
+    std::vector<std::size_t>().swap(b.chunk_pending[c]);  // one copy of the list at a time
+  }
 }
 
 // Sets vertex(i) to target(i) for every i of `pending`, in chunks on `threads` threads,
