@@ -17,7 +17,6 @@
 #include <CVT_2/exceptions.h>
 #include <CVT_2/internal/Face_chunks.h>
 #include <CVT_2/internal/move_generators.h>
-#include <CVT_2/internal/run_chunks.h>
 #include <CVT_2/internal/to_string.h>
 
 #include <boost/container/small_vector.hpp>
@@ -444,23 +443,16 @@ auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::cell_figures(
 // The chunks' sums, in the order of the chunks, into the evaluation and the moves.
 template <class CDT, class Density, class Quadrature, class Traits>
 void Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::reduce_chunks() {
+  m_moves.clear();
   double sum_ratio = 0, mass = 0;
-  std::vector<std::size_t> start(m_chunk_sums.size() + 1, 0);  // of each chunk's moves
-  for (std::size_t k = 0; k < m_chunk_sums.size(); ++k) {
-    const Chunk& c = m_chunk_sums[k];
+  for (Chunk& c : m_chunk_sums) {
     mass += c.mass;
     m_evaluation.energy += c.energy;
     m_evaluation.max_move_ratio = std::max(m_evaluation.max_move_ratio, c.max_move_ratio);
     sum_ratio += c.sum_move_ratio;
-    start[k + 1] = start[k] + c.moves.size();
+    m_moves.insert(m_moves.end(), c.moves.begin(), c.moves.end());
+    std::vector<Free_generator>().swap(c.moves);  // one copy of the moves at a time
   }
-  // The moves in chunk order, copied on all threads.
-  m_moves.resize(start.back());
-  internal::run_chunks(m_chunk_sums.size(), m_number_of_threads, [&](std::size_t k) {
-    std::vector<Free_generator>& moves = m_chunk_sums[k].moves;
-    std::copy(moves.begin(), moves.end(), m_moves.begin() + std::ptrdiff_t(start[k]));
-    std::vector<Free_generator>().swap(moves);
-  });
   // One cell may underflow (a generator 1e-320 from another: it stays put), not the domain.
   if (!(mass >= std::numeric_limits<double>::min()) || !(m_evaluation.energy > 0))
     throw Domain_error("the domain's mass " + internal::number_to_string(mass) + " and energy " +

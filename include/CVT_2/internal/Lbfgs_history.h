@@ -13,9 +13,11 @@
 namespace CVT_2 {
 namespace internal {
 
-inline double dot(const std::vector<double>& a, const std::vector<double>& b) {
+// a.b in double, a's numbers as stored (double or float)
+template <class T>
+double dot(const std::vector<T>& a, const std::vector<double>& b) {
   double s = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
+  for (std::size_t i = 0; i < a.size(); ++i) s += double(a[i]) * b[i];
   return s;
 }
 
@@ -97,7 +99,7 @@ class Lbfgs_history {
     m_alpha.resize(m_size);
     for (std::size_t t = m_size; t-- > 0;) {
       const Pair& p = m_pairs[slot(t)];
-      m_alpha[t] = p.inverse_sy * std::ldexp(scaled_dot(p.s, d), p.s_exponent);
+      m_alpha[t] = p.inverse_sy * std::ldexp(dot(p.s, d), p.s_exponent);
       const double a = std::ldexp(m_alpha[t], p.y_exponent);
       for (std::size_t j = 0; j < d.size(); ++j) d[j] -= a * double(p.y[j]);
     }
@@ -115,7 +117,7 @@ class Lbfgs_history {
     }
     for (std::size_t t = 0; t < m_size; ++t) {
       const Pair& p = m_pairs[slot(t)];
-      const double beta = p.inverse_sy * std::ldexp(scaled_dot(p.y, d), p.y_exponent);
+      const double beta = p.inverse_sy * std::ldexp(dot(p.y, d), p.y_exponent);
       const double a = std::ldexp(m_alpha[t] - beta, p.s_exponent);
       for (std::size_t j = 0; j < d.size(); ++j) d[j] += a * double(p.s[j]);
     }
@@ -130,11 +132,6 @@ class Lbfgs_history {
     int s_exponent = 0, y_exponent = 0;  // s = 2^s_exponent s_stored; likewise y
     double inverse_sy = 0;               // 1 / (s . y)
   };
-  static double scaled_dot(const std::vector<Stored>& a, const std::vector<double>& b) {
-    double s = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) s += double(a[i]) * b[i];
-    return s;
-  }
   std::size_t slot(std::size_t t) const { return (m_first + t) % m_capacity; }  // t-th oldest
   std::size_t m_capacity, m_first = 0, m_size = 0;
   std::vector<Pair> m_pairs;  // a ring
