@@ -19,6 +19,7 @@
 #include <boost/container/small_vector.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
@@ -50,7 +51,8 @@ namespace CVT_2 {
 /// bound walk skips every box whose lower bound
 /// \f$k\, d_{xy}(x, \mathrm{box}) + z_{\min}(\mathrm{box})\f$ already reaches the best value
 /// found. The candidates it keeps are evaluated exactly as in the formula, so the result
-/// equals the minimum over all segments up to rounding.
+/// equals the minimum over all segments up to rounding. With `double` coordinates the segments
+/// are also kept flat, as the many evaluations of a cell read them.
 ///
 /// Copies share the tree and are cheap; the call operator changes nothing and may run in
 /// several threads at once.
@@ -152,13 +154,14 @@ class Boundary_lipschitz_sizing_2 {
       const double reach = m_k * std::sqrt(dx * dx + dy * dy);
       std::optional<FT> best;
       double bound = std::numeric_limits<double>::infinity();
-      for (const auto& [at_center, i] : m_candidates) {
-        if (at_center - reach > bound) break;
-        const FT v = value(*m_data, x, i);
+      for (const Candidate& c : m_candidates) {
+        if (c.at_center - reach > bound) break;
+        if (c.at_center + c.slope_x * dx + c.slope_y * dy - c.slope_error * reach > bound) continue;
+        const FT v = value(*m_data, x, c.segment);
         if (!best || v < *best) {
           best = v;
           const double b = CGAL::to_double(v);
-          bound = b + 1e-12 * (std::abs(b) + at_center + reach + m_scale);
+          bound = b + 1e-12 * (std::abs(b) + c.at_center + reach + m_scale);
         }
       }
       return best ? *best : FT(std::numeric_limits<double>::quiet_NaN());
@@ -174,10 +177,60 @@ class Boundary_lipschitz_sizing_2 {
           m_cy(CGAL::to_double(center.y())),
           m_k(CGAL::to_double(d.k)),
           m_scale(m_k * (std::abs(m_cx) + std::abs(m_cy))) {}
+    // A kept segment s: its value v at the center c and its slope there, k times the unit
+    // vector g from the point of s nearest c. The distance to a segment is convex, so its
+    // value at x is at least v + k g.(x - c): a second bound, tighter than v - k|x - c| across
+    // g, that spares the distance of most segments that cannot beat the best value. g is
+    // rounded: slope_error (times k|x - c|) covers it; 1 when c is too near s for g to mean
+    // anything (the bound is then v - k|x - c|).
+    struct Candidate {
+      double at_center, slope_x, slope_y, slope_error;
+      std::size_t segment;
+      bool operator<(const Candidate& o) const {
+        return at_center < o.at_center || (at_center == o.at_center && segment < o.segment);
+      }
+    };
+    void add(double at_center, std::size_t i) {
+      Candidate c{at_center, 0, 0, 1, i};
+      const auto [px, py, extent] = nearest_point(*m_data, m_cx, m_cy, i);
+      const double gx = m_cx - px, gy = m_cy - py, d = std::sqrt(gx * gx + gy * gy);
+      // the rounding of c - p, relative to its length
+      const double error = 1e-14 * (extent + std::abs(m_cx) + std::abs(m_cy)) / d;
+      if (d > 0 && error < 1) c = {at_center, m_k * gx / d, m_k * gy / d, error, i};
+      m_candidates.push_back(c);
+    }
+    // Keeps, after sorting, the first segment b and those that can beat it somewhere within
+    // `radius`: by the bound above and b's value there, at most
+    // v_b + k g_b.(x - c) + k |x - c|^2 / (2 (d_b - radius)) (the distance to a segment curves
+    // by at most 1/d, and d >= d_b - radius on the disk), s beats b only if
+    // v_s - v_b <= radius |k g_s - k g_b| + k radius^2 / (2 (d_b - radius)), plus the slopes'
+    // rounding. Along a finely cut curve this keeps the segments near the center's foot, not
+    // all those within 2 k radius.
+    void keep_competitors(double radius, double slack) {
+      std::sort(m_candidates.begin(), m_candidates.end());
+      if (m_candidates.size() < 2) return;
+      const Candidate b = m_candidates.front();
+      const double reach = m_k * radius;
+      const double d_b = std::sqrt(std::max(0.0, nearest_squared_distance(b.segment)));
+      const double curving = d_b > radius ? reach * radius / (2 * (d_b - radius))
+                                          : std::numeric_limits<double>::infinity();
+      const auto cannot_beat = [&](const Candidate& c) {
+        const double sx = c.slope_x - b.slope_x, sy = c.slope_y - b.slope_y;
+        const double gain = std::min(2 * reach, radius * std::sqrt(sx * sx + sy * sy) + curving +
+                                                    (c.slope_error + b.slope_error) * reach);
+        return c.at_center - b.at_center > gain + slack;
+      };
+      m_candidates.erase(std::remove_if(m_candidates.begin() + 1, m_candidates.end(), cannot_beat),
+                         m_candidates.end());
+    }
+    double nearest_squared_distance(std::size_t i) const {
+      const auto [px, py, extent] = nearest_point(*m_data, m_cx, m_cy, i);
+      (void)extent;
+      return (m_cx - px) * (m_cx - px) + (m_cy - py) * (m_cy - py);
+    }
     const Data* m_data;
-    double m_cx, m_cy, m_k, m_scale;  // m_scale: k times the center's size, for rounding
-    // (value at the center, segment), by value
-    std::vector<std::pair<double, std::size_t>> m_candidates;
+    double m_cx, m_cy, m_k, m_scale;      // m_scale: k times the center's size, for rounding
+    std::vector<Candidate> m_candidates;  // by value at the center
   };
 
   /// \f$\mu(x) = \min_s (k\, d(x, s) + \mathrm{size}(s))\f$.
@@ -195,19 +248,23 @@ class Boundary_lipschitz_sizing_2 {
   /// \f$|y - c| \le r\f$ (\f$c\f$ = `center`, \f$r\f$ = `radius`), and costs a few segment
   /// distances instead of a walk of the tree. Since \f$\mu\f$ is \f$k\f$-Lipschitz, a segment
   /// \f$s\f$ with \f$k\,d(c, s) + \mathrm{size}(s) > \mu(c) + 2kr\f$ is beaten at every such
-  /// \f$y\f$ by the segment that gives \f$\mu(c)\f$; the others are kept (one walk of the tree).
-  /// The Lloyd optimizer restricts the field to the disk around each generator that holds its
-  /// cell, so the many quadrature points of a cell cost about one query.
+  /// \f$y\f$ by the segment \f$b\f$ that gives \f$\mu(c)\f$ (one walk of the tree finds the
+  /// others). Of those, it keeps the ones that can beat \f$b\f$ by their slopes at \f$c\f$ too:
+  /// the distance to a segment is convex and curves by at most \f$1/d\f$, so along a finely cut
+  /// curve, where many segments nearly tie, only those whose nearest points lie near that of
+  /// \f$b\f$ remain. The Lloyd optimizer restricts the field to a disk around each generator
+  /// that holds its cell, so the many quadrature points of a cell cost about one query, and
+  /// keeps the restriction while the cell stays in the disk.
   /// \pre `center` and `radius` are finite, `radius` \f$\ge 0\f$. The result refers to this
   /// field's data, which must outlive it.
   Restriction restrict_to_disk(const Point_2& center, const FT& radius) const {
     Collect collect(*m_data, center, 2 * CGAL::to_double(m_data->k * radius));
     m_data->tree.traversal_with_priority(center, collect);
     Restriction r(*m_data, center);
+    r.m_candidates.reserve(collect.candidates.size());
     for (const auto& [value, i] : collect.candidates)
-      if (value <= collect.best_double + collect.slack)
-        r.m_candidates.emplace_back(value + collect.margin, i);
-    std::sort(r.m_candidates.begin(), r.m_candidates.end());
+      if (value <= collect.best_double + collect.slack) r.add(value + collect.margin, i);
+    r.keep_competitors(CGAL::to_double(radius), collect.slack);
     return r;
   }
 
@@ -224,19 +281,57 @@ class Boundary_lipschitz_sizing_2 {
   using Primitive = CGAL::AABB_segment_primitive<K, Segment_3_iterator>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
 
+  // A segment as its value is computed: its ends a and b, b - a, |b - a|^2, its size.
+  struct Flat_segment {
+    double ax, ay, bx, by, ux, uy, length2, size;
+  };
+
   // Never moved once built: the tree's primitives point into `lifted`.
   struct Data {
     FT k;
     std::vector<Segment_2> segments;
     std::vector<FT> sizes;
-    std::vector<Segment_3> lifted;  // segment i at the height sizes[i]
+    std::vector<Flat_segment> flat;  // with double coordinates only
+    std::vector<Segment_3> lifted;   // segment i at the height sizes[i]
     Tree tree;
   };
 
+  static constexpr bool is_double = std::is_same<FT, double>::value;
+
   // The value of segment i at x: all evaluations go through here, so a restriction gives the
-  // same bits as the whole tree.
+  // same bits as the whole tree. With double coordinates, CGAL's squared distance (the end
+  // nearer x when the projection falls outside, else the cross product over the length) on
+  // the segment's numbers laid out flat, which the many evaluations of a cell stream through.
   static FT value(const Data& data, const Point_2& x, std::size_t i) {
-    return data.k * CGAL::sqrt(CGAL::squared_distance(x, data.segments[i])) + data.sizes[i];
+    if constexpr (is_double) {
+      const Flat_segment& s = data.flat[i];
+      const double dx = x.x() - s.ax, dy = x.y() - s.ay, along = dx * s.ux + dy * s.uy;
+      double d2;
+      if (along <= 0) {
+        d2 = dx * dx + dy * dy;
+      } else if (along > s.length2) {
+        const double ex = x.x() - s.bx, ey = x.y() - s.by;
+        d2 = ex * ex + ey * ey;
+      } else {
+        const double cross = s.ux * dy - s.uy * dx;
+        d2 = cross * cross / s.length2;
+      }
+      return data.k * std::sqrt(d2) + s.size;
+    } else {
+      return data.k * CGAL::sqrt(CGAL::squared_distance(x, data.segments[i])) + data.sizes[i];
+    }
+  }
+
+  // The point of segment i nearest (x, y), in doubles, and the size of the numbers involved.
+  static std::array<double, 3> nearest_point(const Data& data, double x, double y, std::size_t i) {
+    const Segment_2& s = data.segments[i];
+    const double ax = CGAL::to_double(s.source().x()), ay = CGAL::to_double(s.source().y());
+    const double ux = CGAL::to_double(s.target().x()) - ax;
+    const double uy = CGAL::to_double(s.target().y()) - ay;
+    const double length2 = ux * ux + uy * uy;
+    const double along = length2 > 0 ? ((x - ax) * ux + (y - ay) * uy) / length2 : 0;
+    const double t = std::clamp(along, 0.0, 1.0);
+    return {ax + t * ux, ay + t * uy, std::abs(ax) + std::abs(ay) + std::abs(ux) + std::abs(uy)};
   }
 
   // The branch and bound walk of the tree, nearer boxes first (CGAL's priority traversal,
@@ -352,6 +447,13 @@ class Boundary_lipschitz_sizing_2 {
       data->lifted.emplace_back(typename K::Point_3(s.source().x(), s.source().y(), si),
                                 typename K::Point_3(s.target().x(), s.target().y(), si));
     }
+    if constexpr (is_double)
+      for (std::size_t i = 0; i < segments.size(); ++i) {
+        const Segment_2& s = segments[i];
+        const double ux = s.target().x() - s.source().x(), uy = s.target().y() - s.source().y();
+        data->flat.push_back({s.source().x(), s.source().y(), s.target().x(), s.target().y(), ux,
+                              uy, ux * ux + uy * uy, data->sizes[i]});
+      }
     data->segments = std::move(segments);
     data->tree.insert(data->lifted.begin(), data->lifted.end());
     // The tree builds itself at its first query unless built now; built, it is read-only, so

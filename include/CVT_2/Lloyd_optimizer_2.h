@@ -19,6 +19,7 @@
 #include <CVT_2/internal/move_generators.h>
 #include <CVT_2/internal/to_string.h>
 
+#include <CGAL/Unique_hash_map.h>
 #include <boost/container/small_vector.hpp>
 #include <boost/range/irange.hpp>
 
@@ -28,6 +29,7 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -147,7 +149,10 @@ class Lbfgs_optimizer_2;
 ///
 /// \tparam CDT as for `Bounded_voronoi_diagram_2`, with its domain marked.
 /// \tparam Density a model of `DensityFunction_2`; one with the optional batch member is
-///         evaluated once a chunk of cells (the same bits).
+///         evaluated once a chunk of cells (the same bits). One that restricts itself to disks
+///         (`restrict_to_disk()`, as the automatic sizing field) is restricted once a cell, and
+///         the restriction is kept for the next evaluations while the cell stays in its disk:
+///         the same bits, at a few hundred bytes a generator.
 /// \tparam Quadrature a model of `CellQuadrature_2`; by default exact formulas for a uniform
 ///         density, `Gauss_quadrature_2` otherwise.
 /// \tparam Traits a model of `BvdTraits_2` for the diagram; by default `Bvd_traits_2`.
@@ -289,8 +294,9 @@ class Lloyd_optimizer_2 {
     }
   };
   void reduce_chunks();
-  Cell_moments_2<Kernel> moments(const Point_2& x, const Cell_points& points,
+  Cell_moments_2<Kernel> moments(Vertex_handle v, const Cell_points& points,
                                  std::size_t resolution) const;
+  void number_generators();
   static std::string bad_moments_message(const Point_2& generator, const Cell_points& points,
                                          double mass, double energy, double first2);
   static double squared_diameter(const Cell_points& points);
@@ -309,6 +315,31 @@ class Lloyd_optimizer_2 {
   std::vector<Free_generator> m_moves;
   internal::Move_buffers<CDT> m_buffers;
   internal::Buffer_pool<Batch_buffers> m_batch_buffers;  // one in use per thread at most
+
+  // With a density that restricts itself to disks (and is not evaluated in batches): the last
+  // restriction of each generator's cell, to a disk a quarter wider than the cell needed, kept
+  // between evaluations. A cell that is still within that disk reuses it: a restriction equals
+  // the density on its disk, whichever cell it was made for, so the values are the same bits,
+  // and the search for its candidates (a third of a cell's time along a finely cut boundary) is
+  // done once every few iterations once the moves are small. The slots are numbered by
+  // generator in a hash map (not in the vertices' ids, which are the user's).
+  static constexpr bool keeps_restrictions =
+      has_restrict_to_disk_v<Density, Kernel> && !has_batch_evaluation_v<Density, Kernel>;
+  struct Kept_restriction;
+  struct Kept_restrictions {
+    CGAL::Unique_hash_map<Vertex_handle, std::size_t> slot_of{std::size_t(-1)};
+    std::vector<Kept_restriction> slots;  // each written by the one thread of its cell
+  };
+  mutable std::conditional_t<keeps_restrictions, Kept_restrictions, std::nullptr_t>
+      m_restrictions{};
+};
+
+template <class CDT, class Density, class Quadrature, class Traits>
+struct Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::Kept_restriction {
+  using Restriction = decltype(std::declval<const Density&>().restrict_to_disk(
+      std::declval<const Point_2&>(), std::declval<const FT&>()));
+  double x = 0, y = 0, radius = -1;  // the disk
+  std::optional<Restriction> restriction;
 };
 
 template <class CDT, class Density, class Quadrature, class Traits>
@@ -317,6 +348,7 @@ auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::evaluate(std::size_t r
   ++m_number_of_evaluations;
   m_chunks.update(m_cdt);
   m_diagram.update(m_chunks, m_number_of_threads);
+  if constexpr (keeps_restrictions) number_generators();
   // Cells in chunks, on several threads; each chunk sums its own cells in order, then the
   // chunks are summed in order: the same bits whatever the threads.
   m_chunk_sums.assign(m_chunks.size(), Chunk());
@@ -347,7 +379,7 @@ auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::cell_figures(Vertex_ha
     -> Cell_figures {
   Cell_points points;
   const bool is_free = cell_points(cell, points);
-  return cell_figures(v, points, is_free, moments(v->point(), points, resolution));
+  return cell_figures(v, points, is_free, moments(v, points, resolution));
 }
 
 // The points of `cell` into `points`; whether its generator is free (not one of them).
@@ -463,23 +495,49 @@ void Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::reduce_chunks() {
   if (!m_moves.empty()) m_evaluation.mean_move_ratio = sum_ratio / double(m_moves.size());
 }
 
-// The moments of the cell `points` of x, under the density restricted to the disk around x
-// that holds the cell if the density offers that (the same values, from fewer candidates).
+// A slot for the kept restriction of each generator that has none (the only writes to the
+// map: the cells then read it from several threads).
+template <class CDT, class Density, class Quadrature, class Traits>
+void Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::number_generators() {
+  Kept_restrictions& k = m_restrictions;
+  for (auto v = m_cdt.finite_vertices_begin(); v != m_cdt.finite_vertices_end(); ++v)
+    if (!k.slot_of.is_defined(v)) k.slot_of[v] = k.slots.size(), k.slots.emplace_back();
+}
+
+// The moments of the cell `points` of v, under the density restricted to a disk around v that
+// holds the cell if the density offers that (the same values, from fewer candidates).
 template <class CDT, class Density, class Quadrature, class Traits>
 Cell_moments_2<typename CDT::Geom_traits>
-Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::moments(const Point_2& x,
+Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::moments(Vertex_handle v,
                                                              const Cell_points& points,
                                                              std::size_t resolution) const {
+  const Point_2& x = v->point();
   if constexpr (has_restrict_to_disk_v<Density, Kernel>) {
     double r2 = 0;
     for (const Point_2& p : points)
       r2 = std::max(r2, CGAL::to_double(CGAL::squared_distance(x, p)));
+    const double xd = CGAL::to_double(x.x()), yd = CGAL::to_double(x.y());
     // quadrature points are convex combinations of x and the cell's vertices, up to rounding
-    const double r = std::sqrt(r2) * (1 + 1e-9) +
-                     1e-12 * (std::abs(CGAL::to_double(x.x())) + std::abs(CGAL::to_double(x.y())));
-    const auto local = m_density.restrict_to_disk(x, FT(r));
-    const internal::Checked_density<decltype(local), Point_2> rho{local};
-    return m_quadrature(x, points, rho, resolution);
+    const double r = std::sqrt(r2) * (1 + 1e-9) + 1e-12 * (std::abs(xd) + std::abs(yd));
+    if constexpr (keeps_restrictions) {
+      const Kept_restrictions& all = m_restrictions;
+      Kept_restriction& kept = m_restrictions.slots[all.slot_of[v]];
+      const double dx = xd - kept.x, dy = yd - kept.y;
+      if (std::sqrt(dx * dx + dy * dy) + r > kept.radius * (1 - 1e-12)) {
+        kept.restriction.reset();  // one restriction a generator at a time
+        kept.x = xd;
+        kept.y = yd;
+        kept.radius = 1.25 * r;
+        kept.restriction.emplace(m_density.restrict_to_disk(x, FT(kept.radius)));
+      }
+      const internal::Checked_density<typename Kept_restriction::Restriction, Point_2> rho{
+          *kept.restriction};
+      return m_quadrature(x, points, rho, resolution);
+    } else {
+      const auto local = m_density.restrict_to_disk(x, FT(r));
+      const internal::Checked_density<decltype(local), Point_2> rho{local};
+      return m_quadrature(x, points, rho, resolution);
+    }
   } else {
     const internal::Checked_density<Density, Point_2> rho{m_density};
     return m_quadrature(x, points, rho, resolution);
