@@ -244,6 +244,31 @@ TEST_CASE("the boundary sizing restricted to a disk equals it bit for bit in the
   CHECK(kept < disks * mu.segments().size() / 4);  // it does restrict
 }
 
+TEST_CASE("the restricted sizing equals it bit for bit next to a segment far longer than the disk",
+          "[density][sizing]") {
+  // A segment 10^4 long and a short one on nearly the same line, with one size: near the short
+  // one both tie to within the rounding of the long one's distance, which is relative to its
+  // length, not to the distance. The restriction's margins must cover it.
+  const std::vector<Segment> segments{Segment(Point(-1e4, -7e3), Point(3e3, 2.1e3)),
+                                      Segment(Point(-1, -0.7), Point(1, 0.7))};
+  const Sizing mu(segments, 0.1, 0.01);
+  std::mt19937_64 rng(3);
+  std::size_t wrong = 0;
+  for (int disk = 0; disk < 10000; ++disk) {  // the old margins: about 15 points wrong
+    const double cx = uniform(rng, -1e-2, 1e-2), cy = 0.7 * cx + uniform(rng, 2e-3, 1e-2);
+    const double r = 1e-3;
+    const auto local = mu.restrict_to_disk(Point(cx, cy), r);
+    for (int j = 0; j < 100; ++j) {
+      const Point y(cx + uniform(rng, -r, r) / 1.5, cy + uniform(rng, -r, r) / 1.5);
+      if (local(y) != mu(y) && ++wrong <= 3) {
+        CAPTURE(cx, cy, y, local(y) - mu(y));
+        CHECK(local(y) == mu(y));
+      }
+    }
+  }
+  CHECK(wrong == 0);
+}
+
 TEST_CASE("the boundary sizing is k-Lipschitz", "[density][sizing]") {
   const std::string file =
       GENERATE(as<std::string>{}, "us_massachusetts_counties.poly", "world_land_110m.poly");

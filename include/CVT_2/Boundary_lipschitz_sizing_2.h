@@ -148,7 +148,8 @@ class Boundary_lipschitz_sizing_2 {
     /// \f$\min_s (k\, d(x, s) + \mathrm{size}(s))\f$ over the kept segments. They are
     /// visited by their value at the disk's center: a segment's value at x is at least that
     /// minus \f$k |x - c|\f$, so once that bound exceeds the least value found, with a margin
-    /// for rounding, no later segment can give less and the walk stops (the same bits).
+    /// for rounding, no later segment can give less and the walk stops; a segment whose bound
+    /// by its slope (below) exceeds it is skipped (the same bits).
     FT operator()(const Point_2& x) const {
       const double dx = CGAL::to_double(x.x()) - m_cx, dy = CGAL::to_double(x.y()) - m_cy;
       const double reach = m_k * std::sqrt(dx * dx + dy * dy);
@@ -161,7 +162,7 @@ class Boundary_lipschitz_sizing_2 {
         if (!best || v < *best) {
           best = v;
           const double b = CGAL::to_double(v);
-          bound = b + 1e-12 * (std::abs(b) + c.at_center + reach + m_scale);
+          bound = b + 1e-12 * (std::abs(b) + c.at_center + reach + m_scale) + m_data->rounding;
         }
       }
       return best ? *best : FT(std::numeric_limits<double>::quiet_NaN());
@@ -292,15 +293,20 @@ class Boundary_lipschitz_sizing_2 {
     std::vector<Segment_2> segments;
     std::vector<FT> sizes;
     std::vector<Flat_segment> flat;  // with double coordinates only
-    std::vector<Segment_3> lifted;   // segment i at the height sizes[i]
+    // A value rounds by a few ulps of k times the coordinates of x and of its segment: the
+    // margin, 1e-12 k max(|a_x| + |a_y| + |b_x - a_x| + |b_y - a_y|), that every comparison of
+    // values and bounds adds, so that long segments far from x do not tip a near tie.
+    double rounding = 0;
+    std::vector<Segment_3> lifted;  // segment i at the height sizes[i]
     Tree tree;
   };
 
   static constexpr bool is_double = std::is_same<FT, double>::value;
 
   // The value of segment i at x: all evaluations go through here, so a restriction gives the
-  // same bits as the whole tree. With double coordinates, CGAL's squared distance (the end
-  // nearer x when the projection falls outside, else the cross product over the length) on
+  // same bits as the whole tree. With double coordinates, the squared distance to the end
+  // nearer x when its projection falls outside, else the cross product squared over the squared
+  // length (CGAL divides by the supporting line's coefficients instead: other rounding), from
   // the segment's numbers laid out flat, which the many evaluations of a cell stream through.
   static FT value(const Data& data, const Point_2& x, std::size_t i) {
     if constexpr (is_double) {
@@ -372,12 +378,12 @@ class Boundary_lipschitz_sizing_2 {
     }
     template <class Node>
     bool do_intersect(const Point_2&, const Node& node) const {
-      return lower_bound(node.bbox()) <= best_double * tolerance;
+      return lower_bound(node.bbox()) <= best_double * tolerance + data.rounding;
     }
     template <class Node>
     std::pair<bool, Priority> do_intersect_with_priority(const Point_2&, const Node& node) const {
       const double b = lower_bound(node.bbox());
-      return {b <= best_double * tolerance, -b};
+      return {b <= best_double * tolerance + data.rounding, -b};
     }
   };
 
@@ -391,7 +397,8 @@ class Boundary_lipschitz_sizing_2 {
         : Search(d, p),
           margin(m),
           // rounding of the values and bounds, and of quadrature points near the disk's edge
-          slack(m * 1e-6 + 1e-12 * (std::abs(this->xd) + std::abs(this->yd) + m)) {}
+          slack(m * 1e-6 + 1e-12 * (std::abs(this->xd) + std::abs(this->yd) + m) + 2 * d.rounding) {
+    }
 
     void intersection(const Point_2& p, const Primitive& primitive) {
       const std::size_t i = static_cast<std::size_t>(primitive.id() - this->data.lifted.begin());
@@ -454,6 +461,14 @@ class Boundary_lipschitz_sizing_2 {
         data->flat.push_back({s.source().x(), s.source().y(), s.target().x(), s.target().y(), ux,
                               uy, ux * ux + uy * uy, data->sizes[i]});
       }
+    double extent = 0;
+    for (const Segment_2& s : segments) {
+      const double ax = CGAL::to_double(s.source().x()), ay = CGAL::to_double(s.source().y());
+      extent = std::max(extent, std::abs(ax) + std::abs(ay) +
+                                    std::abs(CGAL::to_double(s.target().x()) - ax) +
+                                    std::abs(CGAL::to_double(s.target().y()) - ay));
+    }
+    data->rounding = 1e-12 * CGAL::to_double(k) * extent;
     data->segments = std::move(segments);
     data->tree.insert(data->lifted.begin(), data->lifted.end());
     // The tree builds itself at its first query unless built now; built, it is read-only, so

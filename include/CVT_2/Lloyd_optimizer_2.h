@@ -46,6 +46,19 @@ Domain_error bad_density_error(const FT& r, const Point_2& p) {
                       to_string(p) + ": it must be positive and finite");
 }
 
+// What a density's restrict_to_disk() returns; std::nullptr_t if it has none.
+template <class Density, class Point_2, class FT, class = void>
+struct Restriction_type {
+  using type = std::nullptr_t;
+};
+template <class Density, class Point_2, class FT>
+struct Restriction_type<Density, Point_2, FT,
+                        std::void_t<decltype(std::declval<const Density&>().restrict_to_disk(
+                            std::declval<const Point_2&>(), std::declval<const FT&>()))>> {
+  using type = decltype(std::declval<const Density&>().restrict_to_disk(
+      std::declval<const Point_2&>(), std::declval<const FT&>()));
+};
+
 // Checks each value of a user density: a value that is not positive and finite names the point.
 template <class Density, class Point_2>
 struct Checked_density {
@@ -150,9 +163,9 @@ class Lbfgs_optimizer_2;
 /// \tparam CDT as for `Bounded_voronoi_diagram_2`, with its domain marked.
 /// \tparam Density a model of `DensityFunction_2`; one with the optional batch member is
 ///         evaluated once a chunk of cells (the same bits). One that restricts itself to disks
-///         (`restrict_to_disk()`, as the automatic sizing field) is restricted once a cell, and
-///         the restriction is kept for the next evaluations while the cell stays in its disk:
-///         the same bits, at a few hundred bytes a generator.
+///         (`restrict_to_disk()`, as the automatic sizing field) is restricted to a disk around
+///         each cell, and the restriction is kept for the next evaluations while the cell stays
+///         in its disk: the same bits, at a few hundred bytes a generator.
 /// \tparam Quadrature a model of `CellQuadrature_2`; by default exact formulas for a uniform
 ///         density, `Gauss_quadrature_2` otherwise.
 /// \tparam Traits a model of `BvdTraits_2` for the diagram; by default `Bvd_traits_2`.
@@ -336,8 +349,7 @@ class Lloyd_optimizer_2 {
 
 template <class CDT, class Density, class Quadrature, class Traits>
 struct Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::Kept_restriction {
-  using Restriction = decltype(std::declval<const Density&>().restrict_to_disk(
-      std::declval<const Point_2&>(), std::declval<const FT&>()));
+  using Restriction = typename internal::Restriction_type<Density, Point_2, FT>::type;
   double x = 0, y = 0, radius = -1;  // the disk
   std::optional<Restriction> restriction;
 };
@@ -499,9 +511,11 @@ void Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::reduce_chunks() {
 // map: the cells then read it from several threads).
 template <class CDT, class Density, class Quadrature, class Traits>
 void Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::number_generators() {
-  Kept_restrictions& k = m_restrictions;
-  for (auto v = m_cdt.finite_vertices_begin(); v != m_cdt.finite_vertices_end(); ++v)
-    if (!k.slot_of.is_defined(v)) k.slot_of[v] = k.slots.size(), k.slots.emplace_back();
+  if constexpr (keeps_restrictions) {
+    Kept_restrictions& k = m_restrictions;
+    for (auto v = m_cdt.finite_vertices_begin(); v != m_cdt.finite_vertices_end(); ++v)
+      if (!k.slot_of.is_defined(v)) k.slot_of[v] = k.slots.size(), k.slots.emplace_back();
+  }
 }
 
 // The moments of the cell `points` of v, under the density restricted to a disk around v that
@@ -521,14 +535,18 @@ Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::moments(Vertex_handle v,
     const double r = std::sqrt(r2) * (1 + 1e-9) + 1e-12 * (std::abs(xd) + std::abs(yd));
     if constexpr (keeps_restrictions) {
       const Kept_restrictions& all = m_restrictions;
+      CGAL_assertion(all.slot_of.is_defined(v));
       Kept_restriction& kept = m_restrictions.slots[all.slot_of[v]];
       const double dx = xd - kept.x, dy = yd - kept.y;
-      if (std::sqrt(dx * dx + dy * dy) + r > kept.radius * (1 - 1e-12)) {
+      // a new one when the cell leaves the disk, or fills less than half of it (a disk from
+      // the early, larger moves would keep more segments than the cell needs)
+      if (std::sqrt(dx * dx + dy * dy) + r > kept.radius * (1 - 1e-12) || 2.5 * r < kept.radius) {
         kept.restriction.reset();  // one restriction a generator at a time
+        kept.radius = -1;          // none, if making it throws
+        kept.restriction.emplace(m_density.restrict_to_disk(x, FT(1.25 * r)));
         kept.x = xd;
         kept.y = yd;
         kept.radius = 1.25 * r;
-        kept.restriction.emplace(m_density.restrict_to_disk(x, FT(kept.radius)));
       }
       const internal::Checked_density<typename Kept_restriction::Restriction, Point_2> rho{
           *kept.restriction};
