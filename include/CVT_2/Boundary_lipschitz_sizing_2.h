@@ -294,8 +294,8 @@ class Boundary_lipschitz_sizing_2 {
     std::vector<FT> sizes;
     std::vector<Flat_segment> flat;  // with double coordinates only
     // A value rounds by a few ulps of k times the coordinates of x and of its segment: the
-    // margin, 1e-12 k max(|a_x| + |a_y| + |b_x - a_x| + |b_y - a_y|), that every comparison of
-    // values and bounds adds, so that long segments far from x do not tip a near tie.
+    // margin, 1e-12 k times the largest extent(), that every comparison of values and bounds
+    // adds, so that long segments far from x do not tip a near tie.
     double rounding = 0;
     std::vector<Segment_3> lifted;  // segment i at the height sizes[i]
     Tree tree;
@@ -328,7 +328,15 @@ class Boundary_lipschitz_sizing_2 {
     }
   }
 
-  // The point of segment i nearest (x, y), in doubles, and the size of the numbers involved.
+  // The size of the numbers a value of s is computed from, |a_x| + |a_y| + |b_x - a_x| +
+  // |b_y - a_y| in doubles: its rounding is relative to that.
+  static double extent(const Segment_2& s) {
+    const double ax = CGAL::to_double(s.source().x()), ay = CGAL::to_double(s.source().y());
+    return std::abs(ax) + std::abs(ay) + std::abs(CGAL::to_double(s.target().x()) - ax) +
+           std::abs(CGAL::to_double(s.target().y()) - ay);
+  }
+
+  // The point of segment i nearest (x, y), in doubles, and the segment's extent.
   static std::array<double, 3> nearest_point(const Data& data, double x, double y, std::size_t i) {
     const Segment_2& s = data.segments[i];
     const double ax = CGAL::to_double(s.source().x()), ay = CGAL::to_double(s.source().y());
@@ -337,7 +345,7 @@ class Boundary_lipschitz_sizing_2 {
     const double length2 = ux * ux + uy * uy;
     const double along = length2 > 0 ? ((x - ax) * ux + (y - ay) * uy) / length2 : 0;
     const double t = std::clamp(along, 0.0, 1.0);
-    return {ax + t * ux, ay + t * uy, std::abs(ax) + std::abs(ay) + std::abs(ux) + std::abs(uy)};
+    return {ax + t * ux, ay + t * uy, extent(s)};
   }
 
   // The branch and bound walk of the tree, nearer boxes first (CGAL's priority traversal,
@@ -453,22 +461,14 @@ class Boundary_lipschitz_sizing_2 {
       data->sizes.push_back(si);
       data->lifted.emplace_back(typename K::Point_3(s.source().x(), s.source().y(), si),
                                 typename K::Point_3(s.target().x(), s.target().y(), si));
-    }
-    if constexpr (is_double)
-      for (std::size_t i = 0; i < segments.size(); ++i) {
-        const Segment_2& s = segments[i];
+      if constexpr (is_double) {
         const double ux = s.target().x() - s.source().x(), uy = s.target().y() - s.source().y();
         data->flat.push_back({s.source().x(), s.source().y(), s.target().x(), s.target().y(), ux,
-                              uy, ux * ux + uy * uy, data->sizes[i]});
+                              uy, ux * ux + uy * uy, si});
       }
-    double extent = 0;
-    for (const Segment_2& s : segments) {
-      const double ax = CGAL::to_double(s.source().x()), ay = CGAL::to_double(s.source().y());
-      extent = std::max(extent, std::abs(ax) + std::abs(ay) +
-                                    std::abs(CGAL::to_double(s.target().x()) - ax) +
-                                    std::abs(CGAL::to_double(s.target().y()) - ay));
+      data->rounding = std::max(data->rounding, extent(s));
     }
-    data->rounding = 1e-12 * CGAL::to_double(k) * extent;
+    data->rounding *= 1e-12 * CGAL::to_double(k);
     data->segments = std::move(segments);
     data->tree.insert(data->lifted.begin(), data->lifted.end());
     // The tree builds itself at its first query unless built now; built, it is read-only, so
