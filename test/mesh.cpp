@@ -184,6 +184,32 @@ TEST_CASE("the mesh's cells tile the domain, meet edge to edge, and satisfy Eule
   CHECK(points.size() == mesh.number_of_vertices());
 }
 
+TEST_CASE("cocircular generators: a grid, some on constraints, one vertex a point", "[mesh]") {
+  // Every four neighbours of the grid are cocircular: faces of one circumcenter around most
+  // generators, circumcenters on the constraints, clip points at circumcenters.
+  Cdt_ids cdt;
+  CVT_2::IO::read_domain(data_path("square_inner_constraints.poly"), cdt);
+  std::vector<Point> grid;
+  for (int i = 1; i < 40; ++i)
+    for (int j = 1; j < 40; ++j) grid.emplace_back(i * 0.25, j * 0.25);
+  CVT_2::insert_generators_2(cdt, grid);
+  const Bvd_ids bvd(cdt);
+  for (const unsigned threads : {1u, 2u}) {
+    CAPTURE(threads);
+    const Mesh mesh(bvd, threads);
+    check_mesh(mesh, cdt);
+    const std::set<Point> points(mesh.points().begin(), mesh.points().end());
+    CHECK(points.size() == mesh.number_of_vertices());
+    std::size_t no_length = 0;
+    for (std::size_t k = 0; k < mesh.number_of_cells(); ++k) {
+      const auto c = mesh.cell(k);
+      for (std::size_t j = 0; j < c.size(); ++j)
+        no_length += mesh.point(c[j]) == mesh.point(c[(j + 1) % c.size()]);
+    }
+    CHECK(no_length == 0);
+  }
+}
+
 TEST_CASE("the mesh of random domains: holes, touching polylines, points on constraints",
           "[mesh]") {
   for (unsigned seed = 1; seed <= random_cases(60); ++seed) {

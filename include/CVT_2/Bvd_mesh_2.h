@@ -14,14 +14,16 @@
 
 #include <CGAL/number_utils.h>
 
+#include <boost/container_hash/hash.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <map>
 #include <numeric>
 #include <stdexcept>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -165,7 +167,14 @@ class Bvd_mesh_2 {
   struct Key {
     int kind;
     std::array<Index, 4> cells;
-    bool operator<(const Key& k) const { return std::tie(kind, cells) < std::tie(k.kind, k.cells); }
+    bool operator==(const Key& k) const { return kind == k.kind && cells == k.cells; }
+  };
+  struct Key_hash {
+    std::size_t operator()(const Key& k) const {
+      std::size_t h = boost::hash_value(k.kind);
+      boost::hash_range(h, k.cells.begin(), k.cells.end());
+      return h;
+    }
   };
   // A cell vertex as the cells pass records it, and the edge that leaves it, in 8 bytes: with
   // the top bit clear a circumcenter's number and a neighbor's cell, with it set the position
@@ -188,13 +197,20 @@ class Bvd_mesh_2 {
                                       const internal::Face_chunks<Triangulation>& chunks,
                                       unsigned threads);
   bool add_free_cell(const Triangulation& cdt, Vertex_handle v, Chunk_cells& out) const;
+  bool has_repeated_point(const Entry* first, std::size_t n) const;
+  void add_chain(const Diagram& bvd, Vertex_handle v, std::vector<Cell_vertex>& raw,
+                 Chunk_cells& out) const;
   template <class Raw>
   void add_cell(Vertex_handle v, const Raw& raw, Chunk_cells& out) const;
+  void add_cells(const Diagram& bvd, const Vertex_handle* generators, std::size_t n,
+                 Chunk_cells& out) const;
   Index out_edge(Vertex_handle v, const Cell_vertex& a, const Cell_vertex& b,
                  Chunk_cells& out) const;
   Index vertex(Vertex_handle v, const Cell_vertex& c, Chunk_cells& out) const;
   Constraint constraint_cells(const Tri_edge& e) const;
   void assemble(std::vector<Chunk_cells>& chunks, unsigned threads);
+  bool merge_listed(const std::vector<std::pair<Index, Index>>& same,
+                    std::vector<Chunk_cells>& chunks);
   void merge_vertices(const std::vector<std::pair<Index, Index>>& same);
   void conform_constraints();
   void pair_constraint_sides();
@@ -248,7 +264,14 @@ void Bvd_mesh_2<Diagram>::number_cells_and_circumcenters(
   chunks.for_each(
       [&](std::size_t c, auto first, auto last) {
         std::size_t cells = 0;
+        centers[c].reserve(internal::Face_chunks<Triangulation>::chunk_size);
+        auto ahead = first;  // its vertices fetched
+        for (int i = 0; i < 8 && ahead != last; ++i) ++ahead;
         for (auto f = first; f != last; ++f) {
+          if (ahead != last) {
+            for (int i = 0; i < 3; ++i) internal::prefetch(&*ahead->vertex(i));
+            ++ahead;
+          }
           if (!cdt.is_infinite(f) && f->is_inside_domain() && !f->is_blinded()) {
             m_circumcenter_of.set(f, (c << center_bits) | centers[c].size());
             centers[c].push_back(
@@ -271,6 +294,9 @@ void Bvd_mesh_2<Diagram>::number_cells_and_circumcenters(
   if (m_cell_offsets.back() >= none || m_center_offsets.back() >= none)
     throw std::length_error("Bvd_mesh_2: more than 2^32 - 1 cells or vertices");
   m_number_of_circumcenters = m_center_offsets.back();
+  // Room for the other vertices too (clip points, constrained generators: fewer than a
+  // vertex a cell but in strange domains), so that adding them copies nothing.
+  m_points.reserve(m_number_of_circumcenters + m_cell_offsets.back() / 2);
   m_points.resize(m_number_of_circumcenters);
   m_generators.resize(m_cell_offsets.back());
   internal::run_chunks(chunks.size(), threads, [&](std::size_t c) {
@@ -331,7 +357,8 @@ auto Bvd_mesh_2<Diagram>::out_edge(Vertex_handle v, const Cell_vertex& a, const 
 // Most cells are Voronoi cells: v is on no constraint and all its faces see their
 // circumcenters. Algorithm 2 then gives the cycle of their circumcenters, each edge on the
 // bisector of v and the vertex the next face shares: read from the topology alone. False (and
-// nothing added) for any other cell, or one with two faces at one circumcenter (cocircular).
+// nothing added) for any other cell. Two faces at one circumcenter (cocircular points) are
+// found later, by has_repeated_point(), when the points fetched here have arrived.
 template <class Diagram>
 bool Bvd_mesh_2<Diagram>::add_free_cell(const Triangulation& cdt, Vertex_handle v,
                                         Chunk_cells& out) const {
@@ -345,17 +372,79 @@ bool Bvd_mesh_2<Diagram>::add_free_cell(const Triangulation& cdt, Vertex_handle 
       out.entries.resize(first);
       return false;
     }
-    out.entries.push_back({center_number(f), cell_number(f->vertex(Triangulation::cw(i)))});
+    const Index center = center_number(f);
+    internal::prefetch(&m_points[center]);
+    out.entries.push_back({center, cell_number(f->vertex(Triangulation::cw(i)))});
   } while (++f != done);
-  const std::size_t n = out.entries.size() - first;
-  for (std::size_t j = 0; j < n; ++j)
-    if (m_points[out.entries[first + j].vertex] ==
-        m_points[out.entries[first + (j + 1) % n].vertex]) {
-      out.entries.resize(first);
-      return false;
-    }
-  out.sizes.push_back(Index(n));
+  out.sizes.push_back(Index(out.entries.size() - first));
   return true;
+}
+
+// Whether the cycle of circumcenters [first, first + n) visits one point twice in a row.
+template <class Diagram>
+bool Bvd_mesh_2<Diagram>::has_repeated_point(const Entry* first, std::size_t n) const {
+  for (std::size_t j = 0; j < n; ++j)
+    if (m_points[first[j].vertex] == m_points[first[(j + 1) % n].vertex]) return true;
+  return false;
+}
+
+// The cell of v by Algorithm 2, its vertices in `raw`.
+template <class Diagram>
+void Bvd_mesh_2<Diagram>::add_chain(const Diagram& bvd, Vertex_handle v,
+                                    std::vector<Cell_vertex>& raw, Chunk_cells& out) const {
+  raw.clear();
+  internal::fan_cell_chain<Cell_vertex>(Fan(bvd.triangulation(), bvd.geom_traits(), v, *this),
+                                        [&raw](const Cell_vertex& x) { raw.push_back(x); });
+  add_cell(v, raw, out);
+}
+
+// The cells of generators[0, n) into `out`, in order. A free cell's circumcenters are fetched
+// as its walk names them and compared some cells later, when they have arrived: the walks wait
+// for no point. A free cell that meets a point twice is done again by Algorithm 2, which
+// merges the two (rare: cocircular points).
+template <class Diagram>
+void Bvd_mesh_2<Diagram>::add_cells(const Diagram& bvd, const Vertex_handle* generators,
+                                    std::size_t n, Chunk_cells& out) const {
+  const Triangulation& cdt = bvd.triangulation();
+  std::vector<Cell_vertex> raw;
+  std::vector<std::size_t> start(n);  // of each cell's entries
+  std::vector<unsigned char> is_free(n, 0), redo(n, 0);
+  bool any = false;
+  const auto check = [&](std::size_t k) {
+    redo[k] = is_free[k] && has_repeated_point(out.entries.data() + start[k], out.sizes[k]);
+    any = any || redo[k];
+  };
+  constexpr std::size_t lag = 8;
+  out.sizes.reserve(n);
+  out.entries.reserve(7 * n);
+  internal::for_each_star_prefetched(
+      n, [generators](std::size_t k) { return generators[k]; },
+      [&](std::size_t k) {
+        start[k] = out.entries.size();
+        if (add_free_cell(cdt, generators[k], out))
+          is_free[k] = 1;
+        else
+          add_chain(bvd, generators[k], raw, out);
+        if (k >= lag) check(k - lag);
+      });
+  for (std::size_t k = n > lag ? n - lag : 0; k < n; ++k) check(k);
+  if (!any) return;
+  // From the first cell to redo on, the cells again: the others copied.
+  const std::size_t k = std::size_t(std::find(redo.begin(), redo.end(), 1) - redo.begin());
+  const std::vector<Index> sizes(out.sizes.begin() + std::ptrdiff_t(k), out.sizes.end());
+  const std::vector<Entry> entries(out.entries.begin() + std::ptrdiff_t(start[k]),
+                                   out.entries.end());
+  out.sizes.resize(k);
+  out.entries.resize(start[k]);
+  for (std::size_t i = 0, from = 0; i < sizes.size(); from += sizes[i++]) {
+    if (redo[k + i]) {
+      add_chain(bvd, generators[k + i], raw, out);
+    } else {
+      out.entries.insert(out.entries.end(), entries.data() + from,
+                         entries.data() + from + sizes[i]);
+      out.sizes.push_back(sizes[i]);
+    }
+  }
 }
 
 // The chain of v's cell into `out`: runs of equal points become one vertex (the others of the
@@ -390,22 +479,8 @@ Bvd_mesh_2<Diagram>::Bvd_mesh_2(const Diagram& bvd, unsigned threads) {
   std::vector<Chunk_cells> found(chunks.size());
   chunks.for_each(
       [&](std::size_t c, auto, auto) {
-        std::vector<Cell_vertex> raw;
-        const Vertex_handle* generators = m_generators.data() + m_cell_offsets[c];
-        found[c].sizes.reserve(m_cell_offsets[c + 1] - m_cell_offsets[c]);
-        found[c].entries.reserve(7 * (m_cell_offsets[c + 1] - m_cell_offsets[c]));
-        internal::for_each_star_prefetched(
-            m_cell_offsets[c + 1] - m_cell_offsets[c],
-            [generators](std::size_t k) { return generators[k]; },
-            [&](std::size_t k) {
-              const Vertex_handle v = generators[k];
-              if (add_free_cell(cdt, v, found[c])) return;
-              raw.clear();
-              internal::fan_cell_chain<Cell_vertex>(
-                  Fan(cdt, bvd.geom_traits(), v, *this),
-                  [&raw](const Cell_vertex& x) { raw.push_back(x); });
-              add_cell(v, raw, found[c]);
-            });
+        add_cells(bvd, m_generators.data() + m_cell_offsets[c],
+                  m_cell_offsets[c + 1] - m_cell_offsets[c], found[c]);
       },
       threads);
   assemble(found, threads);
@@ -418,11 +493,16 @@ Bvd_mesh_2<Diagram>::Bvd_mesh_2(const Diagram& bvd, unsigned threads) {
 // the cells copied chunk by chunk, and vertices found at one point merged.
 template <class Diagram>
 void Bvd_mesh_2<Diagram>::assemble(std::vector<Chunk_cells>& chunks, unsigned threads) {
-  m_types.assign(m_number_of_circumcenters, Cell_vertex::CIRCUMCENTER);
-  std::map<Key, Index> numbers;
-  std::map<Constraint, Index> constraint_numbers;
+  std::unordered_map<Key, Index, Key_hash> numbers;
+  std::unordered_map<Constraint, Index, boost::hash<Constraint>> constraint_numbers;
   std::vector<std::pair<Index, Index>> same;
   std::vector<std::size_t> entries{0};  // before each chunk
+  std::size_t keys = 0;
+  for (const Chunk_cells& c : chunks) keys += c.keys.size();
+  m_points.reserve(m_points.size() + keys);  // a copy of all circumcenters, if room is short
+  m_types.reserve(m_points.capacity());
+  m_types.assign(m_number_of_circumcenters, Cell_vertex::CIRCUMCENTER);
+  numbers.reserve(keys);
   for (Chunk_cells& c : chunks) {
     for (auto& [k, p] : c.keys) {  // the key's number replaces it, in cells[0]
       const auto [it, is_new] = numbers.emplace(k, Index(m_points.size()));
@@ -443,6 +523,12 @@ void Bvd_mesh_2<Diagram>::assemble(std::vector<Chunk_cells>& chunks, unsigned th
     for (const auto& [a, b] : c.merges) same.emplace_back(number(a), number(b));
     entries.push_back(entries.back() + c.entries.size());
   }
+  if (merge_listed(same, chunks)) same.clear();
+  // Room for the vertices conform_constraints() adds along constraints, about one a side there.
+  std::size_t on_constraint_sides = 0;
+  for (const Chunk_cells& c : chunks) on_constraint_sides += c.constraints.size();
+  m_cell_vertices.reserve(entries.back() + 2 * on_constraint_sides);
+  m_sides.reserve(entries.back() + 2 * on_constraint_sides);
   m_cell_vertices.resize(entries.back());
   m_sides.resize(entries.back());
   m_offsets.resize(m_generators.size() + 1);
@@ -454,9 +540,12 @@ void Bvd_mesh_2<Diagram>::assemble(std::vector<Chunk_cells>& chunks, unsigned th
     for (const Index size : c.sizes) {
       for (std::size_t j = 0; j < size; ++j, ++e) {
         const Entry& x = c.entries[e - entries[ci]];
-        const Index i = x.vertex & listed ? c.keys[x.vertex & ~listed].first.cells[0] : x.vertex;
+        Index i = x.vertex;
+        if (i & listed) {  // not a circumcenter
+          i = c.keys[i & ~listed].first.cells[0];
+          if (m_types[i] == Cell_vertex::GENERATOR) m_constrained[cell] = 1;
+        }
         m_cell_vertices[e] = i;
-        if (m_types[i] == Cell_vertex::GENERATOR) m_constrained[cell] = 1;
         if (x.out & listed) {
           m_sides[e] = Side{none, c.constraints[x.out & ~listed][0]};
           on_constraints[ci].emplace_back(Index(cell), e);
@@ -482,6 +571,47 @@ void Bvd_mesh_2<Diagram>::list_sides_on_constraints() {
   for (std::size_t k = 0; k + 1 < m_offsets.size(); ++k)
     for (std::size_t e = m_offsets[k]; e < m_offsets[k + 1]; ++e)
       if (m_sides[e].constraint != none) m_on_constraints.emplace_back(Index(k), e);
+}
+
+// Vertices found at one point in a cell's chain (a clip point at a circumcenter, say), before
+// the cells are copied: when each group of them has at most one circumcenter, the others are
+// vertices numbered after all circumcenters, and they get the number of their group's first
+// (union-find) in the chunks' keys; the numbers after them close up. Cells cannot then meet a
+// vertex twice in a row: what a chain meets twice in a row is already one. False (and nothing
+// done) when a group has two circumcenters: merge_vertices() then does it all.
+template <class Diagram>
+bool Bvd_mesh_2<Diagram>::merge_listed(const std::vector<std::pair<Index, Index>>& same,
+                                       std::vector<Chunk_cells>& chunks) {
+  if (same.empty()) return true;
+  const Index centers = Index(m_number_of_circumcenters);
+  std::unordered_map<Index, Index> parent;
+  const auto root = [&](Index i) {
+    for (auto it = parent.find(i); it != parent.end(); it = parent.find(i)) i = it->second;
+    return i;
+  };
+  for (const auto& [a, b] : same) {
+    const Index ra = root(a), rb = root(b);
+    if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+  }
+  for (const auto& [a, b] : same)
+    if ((a < centers && root(a) != a) || (b < centers && root(b) != b)) return false;
+  std::vector<Index> renumber(m_points.size() - centers);  // of the vertices after circumcenters
+  Index next = centers;
+  for (Index i = centers; i < m_points.size(); ++i) {
+    const Index r = root(i);
+    if (r == i) {
+      m_points[next] = m_points[i];
+      m_types[next] = m_types[i];
+      renumber[i - centers] = next++;
+    } else {
+      renumber[i - centers] = r < centers ? r : renumber[r - centers];
+    }
+  }
+  m_points.resize(next);
+  m_types.resize(next);
+  for (Chunk_cells& c : chunks)
+    for (auto& key : c.keys) key.first.cells[0] = renumber[key.first.cells[0] - centers];
+  return true;
 }
 
 // Vertices found equal are made one: union-find, then the numbers compacted in order.
@@ -551,100 +681,114 @@ void Bvd_mesh_2<Diagram>::conform_constraints() {
   const auto next = [&](std::size_t k, std::size_t e) {  // the position after e in cell k
     return e + 1 < m_offsets[k + 1] ? e + 1 : m_offsets[k];
   };
-  // The vertices on each constraint, in the order of their positions along it.
-  std::vector<std::vector<Index>> on(m_constraints.size());
+  // The vertices on each constraint, each once, in runs [first[c], last[c]) of `on` (a bucket
+  // per constraint: a few vertices each). `along` has each run's vertices in their order along
+  // the constraint, `position` each vertex's place there (none on a constraint with one edge on
+  // each side that has one).
+  const std::size_t constraints = m_constraints.size();
+  std::vector<std::size_t> first(constraints + 1, 0), last(constraints);
+  for (const auto& [k, e] : m_on_constraints) first[m_sides[e].constraint + 1] += 2;
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<Index> on(first.back());
+  std::copy(first.begin(), first.end() - 1, last.begin());
   for (const auto& [k, e] : m_on_constraints) {
-    on[m_sides[e].constraint].push_back(m_cell_vertices[e]);
-    on[m_sides[e].constraint].push_back(m_cell_vertices[next(k, e)]);
+    const Index c = m_sides[e].constraint;
+    on[last[c]++] = m_cell_vertices[e];
+    on[last[c]++] = m_cell_vertices[next(k, e)];
   }
-  std::vector<std::vector<std::pair<Index, Index>>> position(on.size());  // (vertex, position)
+  std::vector<Index> along(on.size()), position(on.size(), none);
   std::vector<std::pair<Index, Index>> same;
-  for (std::size_t c = 0; c < on.size(); ++c) {
-    std::vector<Index>& v = on[c];
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-    if (v.size() <= 2) continue;  // one edge, on each side that has one
+  std::vector<std::pair<std::pair<FT, Index>, std::size_t>> t;
+  for (Index c = 0; c < constraints; ++c) {
+    const auto b = on.begin() + std::ptrdiff_t(first[c]);
+    std::sort(b, on.begin() + std::ptrdiff_t(last[c]));
+    last[c] = std::size_t(std::unique(b, on.begin() + std::ptrdiff_t(last[c])) - on.begin());
+    if (last[c] - first[c] <= 2) continue;  // one edge, on each side that has one
     const Point_2& p = m_generators[m_constraints[c][0]]->point();
     const auto d = m_generators[m_constraints[c][1]]->point() - p;
-    std::vector<std::pair<FT, Index>> t;
-    for (const Index i : v) t.emplace_back((m_points[i] - p) * d, i);
+    t.clear();  // (projection, vertex), and where the vertex is in `on`
+    for (std::size_t i = first[c]; i < last[c]; ++i)
+      t.push_back({{(m_points[on[i]] - p) * d, on[i]}, i});
     std::sort(t.begin(), t.end());
     // Points of the two sides that are one point (a bisector of each side meets the constraint
     // there, as at a circumcenter on it), up to the rounding of their constructions, are one
     // vertex: merged below, and the constraints visited again.
     const FT close = CGAL::to_double(d * d) * 0x1.0p-80;  // (2^-40 of its length)^2
-    for (std::size_t i = 1; i < t.size(); ++i)
-      if (CGAL::squared_distance(m_points[t[i - 1].second], m_points[t[i].second]) <= close)
-        same.emplace_back(t[i - 1].second, t[i].second);
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      v[i] = t[i].second;
-      position[c].emplace_back(t[i].second, Index(i));
+    for (std::size_t i = 1; i < t.size(); ++i) {
+      const Index u = t[i - 1].first.second, w = t[i].first.second;
+      if (CGAL::squared_distance(m_points[u], m_points[w]) <= close) same.emplace_back(u, w);
     }
-    std::sort(position[c].begin(), position[c].end());
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      along[first[c] + i] = t[i].first.second;
+      position[t[i].second] = Index(i);
+    }
   }
   if (!same.empty()) {
     merge_vertices(same);
     list_sides_on_constraints();
     return conform_constraints();
   }
-  const auto at = [&](Index c, Index x) {
-    return std::lower_bound(position[c].begin(), position[c].end(), std::make_pair(x, Index(0)))
-        ->second;
+  const auto at = [&](Index c, Index x) {  // the place of vertex x in the run of constraint c
+    const auto b = on.begin() + std::ptrdiff_t(first[c]), e = on.begin() + std::ptrdiff_t(last[c]);
+    return position[std::size_t(std::lower_bound(b, e, x) - on.begin())];
   };
   // The edges that skip vertices of their constraint, in the order of m_sides, with the
-  // positions of their ends along it.
+  // positions of their ends along it and where the constraint's run starts.
   struct Skipping {
     std::size_t e;
     Index from, to;
+    std::size_t run;
   };
   std::vector<Skipping> skipping;
   for (const auto& [k, e] : m_on_constraints) {
     const Index c = m_sides[e].constraint;
-    if (position[c].empty()) continue;
-    const Index from = at(c, m_cell_vertices[e]), to = at(c, m_cell_vertices[next(k, e)]);
-    if (from + 1 < to || to + 1 < from) skipping.push_back({e, from, to});
+    const Index from = at(c, m_cell_vertices[e]);
+    if (from == none) continue;
+    const Index to = at(c, m_cell_vertices[next(k, e)]);
+    if (from + 1 < to || to + 1 < from) skipping.push_back({e, from, to, first[c]});
   }
   if (skipping.empty()) return;
-  // The skipped vertices go in after each such edge: the arrays copied in runs between them,
-  // the offsets and the list of sides on constraints shifted by what went in before.
-  std::vector<Index> vertices;
-  std::vector<Side> sides;
-  vertices.reserve(m_cell_vertices.size() + m_cell_vertices.size() / 64);
-  sides.reserve(vertices.capacity());
-  std::vector<std::pair<std::size_t, std::size_t>> added;  // (old position, count after it)
-  std::size_t copied = 0;
-  for (const auto& [e, from, to] : skipping) {
-    vertices.insert(vertices.end(), m_cell_vertices.begin() + std::ptrdiff_t(copied),
-                    m_cell_vertices.begin() + std::ptrdiff_t(e + 1));
-    sides.insert(sides.end(), m_sides.begin() + std::ptrdiff_t(copied),
-                 m_sides.begin() + std::ptrdiff_t(e + 1));
-    copied = e + 1;
-    const std::size_t before = vertices.size();
-    const Index c = m_sides[e].constraint;
-    for (Index i = from; i + 1 < to;) vertices.push_back(on[c][++i]), sides.push_back(m_sides[e]);
-    for (Index i = from; i > to + 1;) vertices.push_back(on[c][--i]), sides.push_back(m_sides[e]);
-    added.emplace_back(e, vertices.size() - before);
+  // The skipped vertices go in after each such edge, in place: the arrays grow, and the runs
+  // between such edges move up, from the last, by what goes in before them.
+  std::vector<std::size_t> added(skipping.size());  // after each such edge
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < skipping.size(); ++i)
+    total += added[i] = std::size_t(std::max(skipping[i].from, skipping[i].to) -
+                                    std::min(skipping[i].from, skipping[i].to) - 1);
+  const std::size_t old_size = m_cell_vertices.size();
+  m_cell_vertices.resize(old_size + total);
+  m_sides.resize(old_size + total);
+  std::size_t end = old_size, shift = total;  // the run [e + 1, end) moves up by shift
+  for (std::size_t i = skipping.size(); i-- > 0;) {
+    const auto& [e, from, to, run] = skipping[i];
+    const auto first = std::ptrdiff_t(e + 1), last = std::ptrdiff_t(end);
+    std::move_backward(m_cell_vertices.begin() + first, m_cell_vertices.begin() + last,
+                       m_cell_vertices.begin() + last + std::ptrdiff_t(shift));
+    std::move_backward(m_sides.begin() + first, m_sides.begin() + last,
+                       m_sides.begin() + last + std::ptrdiff_t(shift));
+    shift -= added[i];
+    std::size_t p = e + 1 + shift;
+    for (Index j = from; j + 1 < to;)
+      m_cell_vertices[p] = along[run + ++j], m_sides[p++] = m_sides[e];
+    for (Index j = from; j > to + 1;)
+      m_cell_vertices[p] = along[run + --j], m_sides[p++] = m_sides[e];
+    end = e + 1;
   }
-  vertices.insert(vertices.end(), m_cell_vertices.begin() + std::ptrdiff_t(copied),
-                  m_cell_vertices.end());
-  sides.insert(sides.end(), m_sides.begin() + std::ptrdiff_t(copied), m_sides.end());
-  std::size_t shift = 0, a = 0;  // inserted before the position at hand; records passed
+  // The offsets and the sides on constraints shifted by what went in before them.
+  std::size_t a = 0;
   for (std::size_t& offset : m_offsets) {
-    for (; a < added.size() && added[a].first < offset; ++a) shift += added[a].second;
+    for (; a < skipping.size() && skipping[a].e < offset; ++a) shift += added[a];
     offset += shift;
   }
   std::vector<std::pair<Index, std::size_t>> on_constraints;
-  on_constraints.reserve(m_on_constraints.size() + vertices.size() - m_cell_vertices.size());
+  on_constraints.reserve(m_on_constraints.size() + total);
   shift = a = 0;
   for (const auto& [k, e] : m_on_constraints) {
-    for (; a < added.size() && added[a].first < e; ++a) shift += added[a].second;
+    for (; a < skipping.size() && skipping[a].e < e; ++a) shift += added[a];
     on_constraints.emplace_back(k, e + shift);
-    if (a < added.size() && added[a].first == e)
-      for (std::size_t i = 1; i <= added[a].second; ++i)
-        on_constraints.emplace_back(k, e + shift + i);
+    if (a < skipping.size() && skipping[a].e == e)
+      for (std::size_t i = 1; i <= added[a]; ++i) on_constraints.emplace_back(k, e + shift + i);
   }
-  m_cell_vertices.swap(vertices);
-  m_sides.swap(sides);
   m_on_constraints.swap(on_constraints);
 }
 
@@ -657,20 +801,28 @@ void Bvd_mesh_2<Diagram>::pair_constraint_sides() {
     std::size_t at;  // its side's position in m_sides
     Index cell;
   };
-  std::vector<Occurrence> on;
+  // In a bucket per constraint (its edges lie on it), sorted there.
+  std::vector<std::size_t> first(m_constraints.size() + 1, 0);
+  for (const auto& [k, e] : m_on_constraints) ++first[m_sides[e].constraint + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<Occurrence> on(first.back());
+  std::vector<std::size_t> last(first.begin(), first.end() - 1);
   for (const auto& [k, e] : m_on_constraints) {
     const Index p = m_cell_vertices[e];
     const Index q = m_cell_vertices[e + 1 < m_offsets[k + 1] ? e + 1 : m_offsets[k]];
-    on.push_back({std::min(p, q), std::max(p, q), e, k});
+    on[last[m_sides[e].constraint]++] = {std::min(p, q), std::max(p, q), e, k};
   }
-  std::sort(on.begin(), on.end(), [](const Occurrence& x, const Occurrence& y) {
-    return std::tie(x.a, x.b, x.at) < std::tie(y.a, y.b, y.at);
-  });
-  for (std::size_t i = 0; i + 1 < on.size(); ++i) {
-    if (on[i].a != on[i + 1].a || on[i].b != on[i + 1].b) continue;
-    m_sides[on[i].at].cell = on[i + 1].cell;
-    m_sides[on[i + 1].at].cell = on[i].cell;
-    ++i;
+  for (std::size_t c = 0; c + 1 < first.size(); ++c) {
+    std::sort(on.begin() + std::ptrdiff_t(first[c]), on.begin() + std::ptrdiff_t(first[c + 1]),
+              [](const Occurrence& x, const Occurrence& y) {
+                return std::tie(x.a, x.b, x.at) < std::tie(y.a, y.b, y.at);
+              });
+    for (std::size_t i = first[c]; i + 1 < first[c + 1]; ++i) {
+      if (on[i].a != on[i + 1].a || on[i].b != on[i + 1].b) continue;
+      m_sides[on[i].at].cell = on[i + 1].cell;
+      m_sides[on[i + 1].at].cell = on[i].cell;
+      ++i;
+    }
   }
 }
 
