@@ -33,9 +33,11 @@ namespace CVT_2 {
 /// The cells of a bounded Voronoi diagram as one polygon mesh: each circumcenter, clip point and
 /// constrained generator is one mesh vertex, shared by the cells it bounds, found from the
 /// triangulation's topology (never by comparing coordinates, except that points a cell visits
-/// twice in a row, a circumcenter that is also a clip point, say, are one vertex); each cell is
-/// a cycle of vertex indices, counterclockwise; each edge of a cycle knows what lies beyond it:
-/// another cell (a bisector edge), or a constraint, with the cell on its other side if the
+/// twice in a row at one point, or within 2^-40 of their distance to its generator, are one
+/// vertex: a circumcenter that is also a clip point, the circumcenters of nearly cocircular
+/// generators, which rounding could otherwise set in a zigzag, the cell no simple polygon); each
+/// cell is a cycle of vertex indices, counterclockwise; each edge of a cycle knows what lies beyond
+/// it: another cell (a bisector edge), or a constraint, with the cell on its other side if the
 /// constraint is inside the domain.
 ///
 /// Cells are numbered in the order of `Bounded_voronoi_diagram_2::for_each_cell()`, vertices
@@ -197,7 +199,8 @@ class Bvd_mesh_2 {
                                       const internal::Face_chunks<Triangulation>& chunks,
                                       unsigned threads);
   bool add_free_cell(const Triangulation& cdt, Vertex_handle v, Chunk_cells& out) const;
-  bool has_repeated_point(const Entry* first, std::size_t n) const;
+  static bool is_one_point(const Point_2& p, const Point_2& q, const Point_2& generator);
+  bool has_repeated_point(const Entry* first, std::size_t n, const Point_2& generator) const;
   void add_chain(const Diagram& bvd, Vertex_handle v, std::vector<Cell_vertex>& raw,
                  Chunk_cells& out) const;
   template <class Raw>
@@ -212,6 +215,7 @@ class Bvd_mesh_2 {
   bool merge_listed(const std::vector<std::pair<Index, Index>>& same,
                     std::vector<Chunk_cells>& chunks);
   void merge_vertices(const std::vector<std::pair<Index, Index>>& same);
+  void drop_repeats();
   void conform_constraints();
   void pair_constraint_sides();
 
@@ -380,11 +384,22 @@ bool Bvd_mesh_2<Diagram>::add_free_cell(const Triangulation& cdt, Vertex_handle 
   return true;
 }
 
+// Whether p and q, consecutive in the cell of `generator`, are one vertex: the same point, or
+// within 2^-40 of their distance to the generator (the rounding of a circumcenter is some
+// 2^-52 of it: two such points are one, in true numbers or nearly).
+template <class Diagram>
+bool Bvd_mesh_2<Diagram>::is_one_point(const Point_2& p, const Point_2& q,
+                                       const Point_2& generator) {
+  return p == q || CGAL::squared_distance(p, q) <= 0x1.0p-80 * CGAL::squared_distance(p, generator);
+}
+
 // Whether the cycle of circumcenters [first, first + n) visits one point twice in a row.
 template <class Diagram>
-bool Bvd_mesh_2<Diagram>::has_repeated_point(const Entry* first, std::size_t n) const {
+bool Bvd_mesh_2<Diagram>::has_repeated_point(const Entry* first, std::size_t n,
+                                             const Point_2& generator) const {
   for (std::size_t j = 0; j < n; ++j)
-    if (m_points[first[j].vertex] == m_points[first[(j + 1) % n].vertex]) return true;
+    if (is_one_point(m_points[first[j].vertex], m_points[first[(j + 1) % n].vertex], generator))
+      return true;
   return false;
 }
 
@@ -411,7 +426,8 @@ void Bvd_mesh_2<Diagram>::add_cells(const Diagram& bvd, const Vertex_handle* gen
   std::vector<unsigned char> is_free(n, 0), redo(n, 0);
   bool any = false;
   const auto check = [&](std::size_t k) {
-    redo[k] = is_free[k] && has_repeated_point(out.entries.data() + start[k], out.sizes[k]);
+    redo[k] = is_free[k] && has_repeated_point(out.entries.data() + start[k], out.sizes[k],
+                                               generators[k]->point());
     any = any || redo[k];
   };
   constexpr std::size_t lag = 8;
@@ -447,21 +463,24 @@ void Bvd_mesh_2<Diagram>::add_cells(const Diagram& bvd, const Vertex_handle* gen
   }
 }
 
-// The chain of v's cell into `out`: runs of equal points become one vertex (the others of the
-// run recorded as merged into it), with the edge that leaves the run.
+// The chain of v's cell into `out`: runs of points that are one (is_one_point()) become one
+// vertex (the others of the run recorded as merged into it), with the edge that leaves the run.
 template <class Diagram>
 template <class Raw>
 void Bvd_mesh_2<Diagram>::add_cell(Vertex_handle v, const Raw& raw, Chunk_cells& out) const {
   const std::size_t m = raw.size();
   std::size_t start = 0;  // a point that differs from the one before it, so no run wraps
-  while (start < m && raw[start].point == raw[(start + m - 1) % m].point) ++start;
+  const auto one = [&v](const Cell_vertex& a, const Cell_vertex& b) {
+    return is_one_point(a.point, b.point, v->point());
+  };
+  while (start < m && one(raw[start], raw[(start + m - 1) % m])) ++start;
   if (start == m) start = 0;  // a cell of one point
   const auto at = [&](std::size_t j) -> const Cell_vertex& { return raw[(start + j) % m]; };
   std::size_t count = 0;
   for (std::size_t j = 0; j < m; ++count) {
     const Index first = vertex(v, at(j), out);
     std::size_t last = j;
-    for (; last + 1 < m && at(last + 1).point == at(j).point; ++last)
+    for (; last + 1 < m && one(at(last + 1), at(last)); ++last)
       out.merges.emplace_back(first, vertex(v, at(last + 1), out));
     out.entries.push_back({first, out_edge(v, at(last), at(last + 1), out)});
     j = last + 1;
@@ -490,7 +509,8 @@ Bvd_mesh_2<Diagram>::Bvd_mesh_2(const Diagram& bvd, unsigned threads) {
 
 // The chunks' cells into the mesh's arrays: the vertices other than circumcenters numbered in
 // the order of the cells that first meet them, constraints likewise (both few, serially), then
-// the cells copied chunk by chunk, and vertices found at one point merged.
+// the cells copied chunk by chunk; vertices found at one point are merged, before the copy by
+// merge_listed() or after it by merge_vertices().
 template <class Diagram>
 void Bvd_mesh_2<Diagram>::assemble(std::vector<Chunk_cells>& chunks, unsigned threads) {
   std::unordered_map<Key, Index, Key_hash> numbers;
@@ -523,7 +543,7 @@ void Bvd_mesh_2<Diagram>::assemble(std::vector<Chunk_cells>& chunks, unsigned th
     for (const auto& [a, b] : c.merges) same.emplace_back(number(a), number(b));
     entries.push_back(entries.back() + c.entries.size());
   }
-  if (merge_listed(same, chunks)) same.clear();
+  const bool merged = !same.empty() && merge_listed(same, chunks);
   // Room for the vertices conform_constraints() adds along constraints, about one a side there.
   std::size_t on_constraint_sides = 0;
   for (const Chunk_cells& c : chunks) on_constraint_sides += c.constraints.size();
@@ -542,8 +562,9 @@ void Bvd_mesh_2<Diagram>::assemble(std::vector<Chunk_cells>& chunks, unsigned th
         const Entry& x = c.entries[e - entries[ci]];
         Index i = x.vertex;
         if (i & listed) {  // not a circumcenter
-          i = c.keys[i & ~listed].first.cells[0];
-          if (m_types[i] == Cell_vertex::GENERATOR) m_constrained[cell] = 1;
+          const Key& key = c.keys[i & ~listed].first;
+          if (key.kind == 1) m_constrained[cell] = 1;  // the generator itself
+          i = key.cells[0];
         }
         m_cell_vertices[e] = i;
         if (x.out & listed) {
@@ -559,7 +580,12 @@ void Bvd_mesh_2<Diagram>::assemble(std::vector<Chunk_cells>& chunks, unsigned th
   });
   for (const auto& o : on_constraints)
     m_on_constraints.insert(m_on_constraints.end(), o.begin(), o.end());
-  if (!same.empty()) {
+  if (merged) {
+    // A cell that computed a merged point to other bits (a clip point, from the other side of
+    // its bisector) merged nothing itself, and can now meet the vertex twice in a row.
+    drop_repeats();
+    list_sides_on_constraints();
+  } else if (!same.empty()) {
     merge_vertices(same);
     list_sides_on_constraints();
   }
@@ -576,13 +602,11 @@ void Bvd_mesh_2<Diagram>::list_sides_on_constraints() {
 // Vertices found at one point in a cell's chain (a clip point at a circumcenter, say), before
 // the cells are copied: when each group of them has at most one circumcenter, the others are
 // vertices numbered after all circumcenters, and they get the number of their group's first
-// (union-find) in the chunks' keys; the numbers after them close up. Cells cannot then meet a
-// vertex twice in a row: what a chain meets twice in a row is already one. False (and nothing
-// done) when a group has two circumcenters: merge_vertices() then does it all.
+// (union-find) in the chunks' keys; the numbers after them close up. False (and nothing done)
+// when a group has two circumcenters: merge_vertices() then does it all, after the copy.
 template <class Diagram>
 bool Bvd_mesh_2<Diagram>::merge_listed(const std::vector<std::pair<Index, Index>>& same,
                                        std::vector<Chunk_cells>& chunks) {
-  if (same.empty()) return true;
   const Index centers = Index(m_number_of_circumcenters);
   std::unordered_map<Index, Index> parent;
   const auto root = [&](Index i) {
@@ -643,8 +667,13 @@ void Bvd_mesh_2<Diagram>::merge_vertices(const std::vector<std::pair<Index, Inde
   m_points.resize(next);
   m_types.resize(next);
   for (Index& i : m_cell_vertices) i = renumber[i];
-  // A merge can leave a cell with the same vertex twice in a row: one of them goes, the cycles
-  // compacted in place (a cell's first vertex kept aside: the last one's successor).
+  drop_repeats();
+}
+
+// A merge can leave a cell with the same vertex twice in a row: one of them goes, the cycles
+// compacted in place (a cell's first vertex kept aside: the last one's successor).
+template <class Diagram>
+void Bvd_mesh_2<Diagram>::drop_repeats() {
   std::size_t kept = 0, b = 0;
   for (std::size_t k = 0; k + 1 < m_offsets.size(); ++k) {
     const std::size_t e = m_offsets[k + 1], n = e - b, start = kept;
@@ -776,6 +805,7 @@ void Bvd_mesh_2<Diagram>::conform_constraints() {
   }
   // The offsets and the sides on constraints shifted by what went in before them.
   std::size_t a = 0;
+  shift = 0;
   for (std::size_t& offset : m_offsets) {
     for (; a < skipping.size() && skipping[a].e < offset; ++a) shift += added[a];
     offset += shift;

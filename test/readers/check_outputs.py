@@ -222,6 +222,25 @@ def main():
         domain = domain_geometry(src)
         check_geojson(out + ".geojson", domain, len(json.load(open(out + ".geojson"))["features"]))
         print(f"{name}: the cells cover GEOS's reading of the rings, area {domain.area}")
+    # A square grid of generators, step 0.1 (not a binary fraction): every four of them are
+    # cocircular in true numbers, not quite in doubles, their circumcenters a rounding apart.
+    name = "square_inner_constraints.wkt"
+    src, out = os.path.join(data, name), os.path.join(work, "grid")
+    with open(out + ".txt", "w") as f:
+        for i in range(1, 100):
+            for j in range(1, 100):
+                f.write(f"{i * 0.1!r} {j * 0.1!r}\n")
+    r = subprocess.run([cvt2, src, "--points-in", out + ".txt", "--iterations", "0", "--quiet",
+                        "--geojson", out + ".geojson", "--vtu", out + ".vtu", "--disv",
+                        out + ".disv", "--points-out", out + ".pts"], capture_output=True, text=True)
+    check(r.returncode == 0, f"cvt2 {name} on a grid failed: {r.stderr}")
+    if r.returncode == 0:
+        domain = domain_geometry(src)
+        cells = sum(1 for l in open(out + ".pts") if l.strip())  # the domain's vertices too
+        geoms = check_geojson(out + ".geojson", domain, cells)
+        check_vtu(out + ".vtu", geoms, domain.area)
+        check_disv(out + ".disv", geoms, domain.area)
+        print(f"a grid of {99 * 99} generators on {name}: {cells} valid cells, read back")
     if failures:
         print(f"{len(failures)} failures")
         sys.exit(1)
