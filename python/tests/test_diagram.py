@@ -4,6 +4,7 @@
 # cells that respect constraints and visibility where it is not.
 import numpy as np
 import pytest
+import shapely.validation
 import shapely.wkt
 from shapely.geometry import LineString, MultiPolygon, Point, Polygon, box
 from shapely.ops import unary_union
@@ -62,6 +63,20 @@ def test_cells_are_valid_and_tile_the_domain(data):
         if geometry is not None:
             assert union.symmetric_difference(geometry).area < 1e-9 * area
         assert np.allclose([c.area for c in cells], vd.areas, rtol=1e-9, atol=1e-12 * area)
+
+
+def test_a_grid_of_generators_gives_valid_cells():
+    # Step 0.1 is no binary fraction: every four neighbours are cocircular in true numbers but
+    # not in doubles, and their circumcenters lie a rounding apart.
+    polygon, constraints = holed_square()
+    domain = cvt2.Domain.from_shapely(polygon, constraints)
+    xy = np.array([(i * 0.1, j * 0.1) for i in range(1, 40) for j in range(1, 30)])
+    xy = xy[[polygon.contains(Point(p)) for p in xy]]
+    cells = cvt2.bounded_voronoi(domain, xy).to_shapely()
+    invalid = [c for c in cells if not c.is_valid]
+    assert not invalid, shapely.validation.explain_validity(invalid[0])
+    assert sum(c.area for c in cells) == pytest.approx(domain.area, rel=1e-10)
+    assert unary_union(cells).area == pytest.approx(domain.area, rel=1e-9)
 
 
 def test_scipy_style_arrays_are_consistent(data):
