@@ -390,7 +390,9 @@ bool Bvd_mesh_2<Diagram>::add_free_cell(const Triangulation& cdt, Vertex_handle 
 template <class Diagram>
 bool Bvd_mesh_2<Diagram>::is_one_point(const Point_2& p, const Point_2& q,
                                        const Point_2& generator) {
-  return p == q || CGAL::squared_distance(p, q) <= 0x1.0p-80 * CGAL::squared_distance(p, generator);
+  if (p == q) return true;
+  const double far = CGAL::to_double(CGAL::squared_distance(p, generator));
+  return CGAL::to_double(CGAL::squared_distance(p, q)) <= 0x1.0p-80 * far;
 }
 
 // Whether the cycle of circumcenters [first, first + n) visits one point twice in a row.
