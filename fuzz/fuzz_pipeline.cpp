@@ -1,7 +1,8 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: the whole pipeline on a fuzzed .poly domain: insert_poly, generators (the
 // file's free vertices, else seeded random points), the bounded Voronoi diagram and one Lloyd
-// step, with oracles: the cells tile the domain, the energy is finite and does not rise.
+// step, with oracles: the cells tile the domain, so do the mesh's, the energy is finite and
+// does not rise.
 #include "fuzz_support.h"
 
 #include <CVT_2/IO/read_poly.h>
@@ -47,6 +48,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::Bvd bvd(cdt);
     bvd.update();
     fuzz::check_cells_tile_domain(bvd);
+    fuzz::check_mesh(bvd);
 
     // One Lloyd step with the default exact quadrature never raises the energy (beyond
     // rounding, on a well-conditioned triangulation).

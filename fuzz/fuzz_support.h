@@ -5,6 +5,7 @@
 #define CVT_2_FUZZ_SUPPORT_H
 
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/Bvd_mesh_2.h>
 #include <CVT_2/Cvt_triangulation_2.h>
 #include <CVT_2/exceptions.h>
 
@@ -15,7 +16,9 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <stdexcept>
+#include <utility>
 
 namespace fuzz {
 
@@ -125,6 +128,52 @@ inline void check_cells_tile_domain(const Bvd& bvd) {
     violated("cells visited != vertices with a cell", double(visited), double(with_cell));
   if (!(std::abs(cells - domain) <= tolerance))
     violated("cell areas do not sum to the domain's area", cells, domain);
+}
+
+// The mesh of the diagram: a cell for every vertex with one, the same on one and two threads;
+// no cycle stays at one vertex; a bisector edge is walked the other way by the cell beyond it;
+// and on a well-conditioned triangulation the cell areas sum to the domain's.
+inline void check_mesh(const Bvd& bvd) {
+  using Mesh = CVT_2::Bvd_mesh_2<Bvd>;
+  const Mesh mesh(bvd, 1), two(bvd, 2);
+  const CDT& cdt = bvd.triangulation();
+  std::size_t with_cell = 0;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    with_cell += bvd.has_cell(v);
+  if (mesh.number_of_cells() != with_cell)
+    violated("mesh cells != vertices with a cell", double(mesh.number_of_cells()),
+             double(with_cell));
+  if (mesh.points() != two.points() || mesh.number_of_cells() != two.number_of_cells())
+    violated("the mesh differs on two threads", double(mesh.number_of_vertices()),
+             double(two.number_of_vertices()));
+  const Area_meter area = area_meter(cdt);
+  const double domain = domain_area(cdt, area);
+  double cells = 0;
+  std::map<std::pair<Mesh::Index, Mesh::Index>, Mesh::Index> walked;  // edge -> its cell
+  for (std::size_t k = 0; k < mesh.number_of_cells(); ++k) {
+    const auto c = mesh.cell(k), d = two.cell(k);
+    if (!std::equal(c.begin(), c.end(), d.begin(), d.end()))
+      violated("a mesh cell differs on two threads", double(k), double(c.size()));
+    for (std::size_t j = 1; j + 1 < c.size(); ++j)
+      cells += area(mesh.point(c[0]), mesh.point(c[j]), mesh.point(c[j + 1]));
+    for (std::size_t j = 0; j < c.size(); ++j) {
+      const Mesh::Index a = c[j], b = c[(j + 1) % c.size()];
+      if (c.size() > 1 && a == b) violated("a mesh cycle stays at one vertex", double(k), a);
+      if (mesh.side(k, j).constraint == Mesh::none) walked[{a, b}] = Mesh::Index(k);
+    }
+  }
+  for (std::size_t k = 0; k < mesh.number_of_cells(); ++k) {
+    const auto c = mesh.cell(k);
+    for (std::size_t j = 0; j < c.size(); ++j) {
+      const Mesh::Side& s = mesh.side(k, j);
+      if (s.constraint != Mesh::none) continue;
+      const auto back = walked.find({c[(j + 1) % c.size()], c[j]});
+      if (back == walked.end() || back->second != s.cell)
+        violated("a bisector edge is not walked back by the cell beyond", double(k), double(j));
+    }
+  }
+  if (is_well_conditioned(cdt) && !(std::abs(cells - domain) <= 1e-9 * domain))
+    violated("mesh cell areas do not sum to the domain's area", cells, domain);
 }
 
 }  // namespace fuzz
