@@ -214,6 +214,8 @@ class Bvd_mesh_2 {
   void assemble(std::vector<Chunk_cells>& chunks, unsigned threads);
   bool merge_listed(const std::vector<std::pair<Index, Index>>& same,
                     std::vector<Chunk_cells>& chunks);
+  bool merge_points(const std::vector<std::pair<Index, Index>>& same, Index first,
+                    std::vector<Index>& renumber);
   void merge_vertices(const std::vector<std::pair<Index, Index>>& same);
   void drop_repeats();
   void conform_constraints();
@@ -426,11 +428,9 @@ void Bvd_mesh_2<Diagram>::add_cells(const Diagram& bvd, const Vertex_handle* gen
   std::vector<Cell_vertex> raw;
   std::vector<std::size_t> start(n);  // of each cell's entries
   std::vector<unsigned char> is_free(n, 0), redo(n, 0);
-  bool any = false;
   const auto check = [&](std::size_t k) {
     redo[k] = is_free[k] && has_repeated_point(out.entries.data() + start[k], out.sizes[k],
                                                generators[k]->point());
-    any = any || redo[k];
   };
   constexpr std::size_t lag = 8;
   out.sizes.reserve(n);
@@ -446,9 +446,9 @@ void Bvd_mesh_2<Diagram>::add_cells(const Diagram& bvd, const Vertex_handle* gen
         if (k >= lag) check(k - lag);
       });
   for (std::size_t k = n > lag ? n - lag : 0; k < n; ++k) check(k);
-  if (!any) return;
   // From the first cell to redo on, the cells again: the others copied.
   const std::size_t k = std::size_t(std::find(redo.begin(), redo.end(), 1) - redo.begin());
+  if (k == n) return;
   const std::vector<Index> sizes(out.sizes.begin() + std::ptrdiff_t(k), out.sizes.end());
   const std::vector<Entry> entries(out.entries.begin() + std::ptrdiff_t(start[k]),
                                    out.entries.end());
@@ -519,8 +519,11 @@ void Bvd_mesh_2<Diagram>::assemble(std::vector<Chunk_cells>& chunks, unsigned th
   std::unordered_map<Constraint, Index, boost::hash<Constraint>> constraint_numbers;
   std::vector<std::pair<Index, Index>> same;
   std::vector<std::size_t> entries{0};  // before each chunk
-  std::size_t keys = 0;
-  for (const Chunk_cells& c : chunks) keys += c.keys.size();
+  std::size_t keys = 0, on_constraint_sides = 0;
+  for (const Chunk_cells& c : chunks) {
+    keys += c.keys.size();
+    on_constraint_sides += c.constraints.size();
+  }
   m_points.reserve(m_points.size() + keys);  // a copy of all circumcenters, if room is short
   m_types.reserve(m_points.capacity());
   m_types.assign(m_number_of_circumcenters, Cell_vertex::CIRCUMCENTER);
@@ -547,8 +550,6 @@ void Bvd_mesh_2<Diagram>::assemble(std::vector<Chunk_cells>& chunks, unsigned th
   }
   const bool merged = !same.empty() && merge_listed(same, chunks);
   // Room for the vertices conform_constraints() adds along constraints, about one a side there.
-  std::size_t on_constraint_sides = 0;
-  for (const Chunk_cells& c : chunks) on_constraint_sides += c.constraints.size();
   m_cell_vertices.reserve(entries.back() + 2 * on_constraint_sides);
   m_sides.reserve(entries.back() + 2 * on_constraint_sides);
   m_cell_vertices.resize(entries.back());
@@ -601,73 +602,65 @@ void Bvd_mesh_2<Diagram>::list_sides_on_constraints() {
       if (m_sides[e].constraint != none) m_on_constraints.emplace_back(Index(k), e);
 }
 
-// Vertices found at one point in a cell's chain (a clip point at a circumcenter, say), before
-// the cells are copied: when each group of them has at most one circumcenter, the others are
-// vertices numbered after all circumcenters, and they get the number of their group's first
-// (union-find) in the chunks' keys; the numbers after them close up. False (and nothing done)
-// when a group has two circumcenters: merge_vertices() then does it all, after the copy.
+// Vertices found at one point made one: union-find over `same`, a group's smallest number its
+// root; the vertices from `first` on closed up in order, a merged one given its root's new
+// number, in renumber[i - first]. False, and nothing changed, if a group holds two vertices
+// below `first` (which keep their numbers).
 template <class Diagram>
-bool Bvd_mesh_2<Diagram>::merge_listed(const std::vector<std::pair<Index, Index>>& same,
-                                       std::vector<Chunk_cells>& chunks) {
-  const Index centers = Index(m_number_of_circumcenters);
-  std::unordered_map<Index, Index> parent;
-  const auto root = [&](Index i) {
-    for (auto it = parent.find(i); it != parent.end(); it = parent.find(i)) i = it->second;
+bool Bvd_mesh_2<Diagram>::merge_points(const std::vector<std::pair<Index, Index>>& same,
+                                       Index first, std::vector<Index>& renumber) {
+  std::vector<Index> parent(m_points.size() - first);
+  std::iota(parent.begin(), parent.end(), first);
+  const auto root = [&](Index i) {  // halving the paths; the vertices below first are roots
+    while (i >= first && parent[i - first] != i) {
+      const Index p = parent[i - first];
+      i = parent[i - first] = p >= first ? parent[p - first] : p;
+    }
     return i;
   };
   for (const auto& [a, b] : same) {
     const Index ra = root(a), rb = root(b);
-    if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+    if (ra == rb) continue;
+    if (std::max(ra, rb) < first) return false;
+    parent[std::max(ra, rb) - first] = std::min(ra, rb);
   }
-  for (const auto& [a, b] : same)
-    if ((a < centers && root(a) != a) || (b < centers && root(b) != b)) return false;
-  std::vector<Index> renumber(m_points.size() - centers);  // of the vertices after circumcenters
-  Index next = centers;
-  for (Index i = centers; i < m_points.size(); ++i) {
+  renumber.assign(parent.size(), none);
+  Index next = first;
+  for (Index i = first; i < m_points.size(); ++i) {
     const Index r = root(i);
     if (r == i) {
       m_points[next] = m_points[i];
       m_types[next] = m_types[i];
-      renumber[i - centers] = next++;
+      renumber[i - first] = next++;
     } else {
-      renumber[i - centers] = r < centers ? r : renumber[r - centers];
+      renumber[i - first] = r < first ? r : renumber[r - first];
     }
   }
   m_points.resize(next);
   m_types.resize(next);
+  return true;
+}
+
+// Vertices found at one point in a cell's chain (a clip point at a circumcenter, say), before
+// the cells are copied: when no group of them holds two circumcenters, the others are numbered
+// after all circumcenters, and merge_points() renumbers only them, in the chunks' keys. False
+// (and nothing done) otherwise: merge_vertices() then does it all, after the copy.
+template <class Diagram>
+bool Bvd_mesh_2<Diagram>::merge_listed(const std::vector<std::pair<Index, Index>>& same,
+                                       std::vector<Chunk_cells>& chunks) {
+  const Index centers = Index(m_number_of_circumcenters);
+  std::vector<Index> renumber;
+  if (!merge_points(same, centers, renumber)) return false;
   for (Chunk_cells& c : chunks)
     for (auto& key : c.keys) key.first.cells[0] = renumber[key.first.cells[0] - centers];
   return true;
 }
 
-// Vertices found equal are made one: union-find, then the numbers compacted in order.
+// Vertices found equal are made one, in the cells' cycles too.
 template <class Diagram>
 void Bvd_mesh_2<Diagram>::merge_vertices(const std::vector<std::pair<Index, Index>>& same) {
-  std::vector<Index> parent(m_points.size());
-  std::iota(parent.begin(), parent.end(), Index(0));
-  const auto root = [&](Index i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  for (const auto& [a, b] : same) {
-    const Index ra = root(a), rb = root(b);
-    if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
-  }
-  std::vector<Index> renumber(m_points.size(), none);
-  Index next = 0;
-  for (Index i = 0; i < parent.size(); ++i) {
-    const Index r = root(i);
-    if (r == i) {
-      renumber[i] = next;
-      m_points[next] = m_points[i];
-      m_types[next] = m_types[i];
-      ++next;
-    } else {
-      renumber[i] = renumber[r];
-    }
-  }
-  m_points.resize(next);
-  m_types.resize(next);
+  std::vector<Index> renumber;
+  merge_points(same, 0, renumber);  // no vertex is below 0: never false
   for (Index& i : m_cell_vertices) i = renumber[i];
   drop_repeats();
 }
