@@ -6,6 +6,7 @@
 #include "support/support.h"
 
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
+#include <CVT_2/internal/Chunked_list.h>
 #include <CVT_2/internal/Face_chunks.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
@@ -38,6 +39,34 @@ std::vector<Segment> constraint_segments(const Cdt& cdt) {
 }
 
 }  // namespace
+
+TEST_CASE("a chunked list reads as its chunks joined, empty chunks and all", "[lloyd]") {
+  CVT_2::internal::Chunked_list<int> list;
+  CHECK(list.empty());
+  CHECK(list.begin() == list.end());
+  const std::vector<std::size_t> sizes{0, 3, 0, 0, 2500, 1, 0, 1023, 1024, 0, 5000, 0};
+  for (int round = 0; round < 2; ++round) {  // again after a reset, with other values
+    list.reset(sizes.size());
+    std::vector<int> joined;
+    for (std::size_t c = 0; c < sizes.size(); ++c)
+      for (std::size_t k = 0; k < sizes[c]; ++k) {
+        const int v = int(joined.size()) * (round + 2) + 7;
+        list.chunk(c).push_back(v);
+        joined.push_back(v);
+      }
+    list.seal();
+    REQUIRE(list.size() == joined.size());
+    const std::vector<int> read(list.begin(), list.end());
+    CHECK(read == joined);
+    for (std::size_t i = 0; i < joined.size(); ++i)
+      if (list[i] != joined[i]) FAIL("index " << i << ": " << list[i] << " != " << joined[i]);
+    for (std::size_t c = 0; c < sizes.size(); ++c) CHECK(list.previous_size(c) == sizes[c]);
+  }
+  list.clear();
+  CHECK(list.empty());
+  CHECK(list.begin() == list.end());
+  CHECK(list.previous_size(4) == 2500);  // kept as a guess for the next lists
+}
 
 TEST_CASE("energy never rises under Lloyd iteration with exact quadrature", "[lloyd]") {
   const char* file = GENERATE(from_range(std::begin(descent_domains), std::end(descent_domains)));

@@ -10,7 +10,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -100,7 +103,7 @@ class Lbfgs_optimizer_2 {
     } else if (m_has_current && !same_positions(m_trial, m_current)) {
       m_history.clear();
     }
-    std::swap(m_current, m_trial);
+    take_trial();
     m_has_current = true;
     return m_current.evaluation;
   }
@@ -114,8 +117,7 @@ class Lbfgs_optimizer_2 {
     CGAL_precondition(m_has_current);
     ++m_steps;
     if (m_vertices.empty()) return evaluate(resolution);
-    const bool descent =
-        m_history.size() > 0 && m_history.direction(m_current.g, m_current.h, m_direction);
+    const bool descent = m_history.size() > 0 && quasi_newton_direction();
     if (!descent) {
       if (m_history.size() > 0) ++m_restarts;
       m_history.clear();
@@ -155,12 +157,13 @@ class Lbfgs_optimizer_2 {
   static constexpr double armijo = 1e-4;          // sufficient decrease: a fraction of g.s
 
   // A point of the iteration, generators in their fixed order: positions (kept apart from x
-  // only if the number type is not double), centroids, the coordinates x, the gradient g (both
-  // 2 per generator) and the preconditioner 1/(2 m).
+  // only if the number type is not double), the coordinates x and the gradient g (both 2 per
+  // generator). The current point also has m_centroids and m_h; a trial point has them in the
+  // evaluator's list until it is taken or dropped.
   static constexpr bool positions_in_x = std::is_same_v<FT, double>;
   struct Iterate {
-    std::vector<Point_2> points, centroids;
-    std::vector<double> x, g, h;
+    std::vector<Point_2> points;
+    std::vector<double> x, g;
     Evaluation evaluation;
   };
   static Point_2 position(const Iterate& it, std::size_t i) {
@@ -175,22 +178,48 @@ class Lbfgs_optimizer_2 {
     else
       return a.points == b.points;
   }
-  // The free generators by their handles' addresses, for the lookups gather() needs.
-  static bool by_address(const std::pair<Vertex_handle, std::size_t>& a,
-                         const std::pair<Vertex_handle, std::size_t>& b) {
-    return &*a.first < &*b.first;
-  }
+  static bool by_address(Vertex_handle a, Vertex_handle b) { return &*a < &*b; }
 
+  // Numbers the free generators in the order of the last evaluation, and sorts them by their
+  // handles' addresses for the lookups gather() needs.
   void number_generators() {
     m_vertices.clear();
-    m_index.clear();
     m_order.clear();
-    for (const auto& f : m_lloyd.free_generators()) {
-      m_index.emplace_back(f.vertex, m_vertices.size());
-      m_vertices.push_back(f.vertex);
-    }
-    std::sort(m_index.begin(), m_index.end(), by_address);
+    const std::size_t n = m_lloyd.free_generators().size();
+    if (n > std::numeric_limits<std::uint32_t>::max())
+      throw std::length_error("L-BFGS numbers its generators in 32 bits: " + std::to_string(n) +
+                              " generators are too many");
+    m_vertices.reserve(n);
+    for (const auto& f : m_lloyd.free_generators()) m_vertices.push_back(f.vertex);
+    m_numbers_by_address.resize(n);
+    for (std::size_t i = 0; i < n; ++i) m_numbers_by_address[i] = std::uint32_t(i);
+    std::sort(m_numbers_by_address.begin(), m_numbers_by_address.end(),
+              [this](std::uint32_t i, std::uint32_t j) {
+                return by_address(m_vertices[i], m_vertices[j]);
+              });
+    m_by_address.resize(n);
+    for (std::size_t k = 0; k < n; ++k) m_by_address[k] = m_vertices[m_numbers_by_address[k]];
     m_history.clear();
+  }
+
+  // The quasi-Newton direction into m_direction, as floats times 2^m_direction_exponent (a
+  // direction to search along needs no more: the line search measures what the moves did);
+  // whether it goes downhill.
+  bool quasi_newton_direction() {
+    std::vector<double> d;
+    if (!m_history.direction(m_current.g, m_h, d)) return false;
+    double largest = 0;
+    for (const double v : d) largest = std::max(largest, std::abs(v));
+    std::frexp(largest, &m_direction_exponent);  // finite: the direction goes downhill
+    const double scale = std::ldexp(1.0, -m_direction_exponent);
+    m_direction.resize(d.size());
+    for (std::size_t j = 0; j < d.size(); ++j) m_direction[j] = float(d[j] * scale);
+    return true;
+  }
+
+  // A mass that underflowed to 0 would make the preconditioner infinite.
+  static double mass(const typename Lloyd_optimizer::Free_generator& f) {
+    return std::max(CGAL::to_double(f.mass), std::numeric_limits<double>::min());
   }
 
   // The last evaluation into `it`, by number; false if the free generators are not those numbered.
@@ -200,44 +229,61 @@ class Lbfgs_optimizer_2 {
     const std::size_t n = m_vertices.size();
     if (generators.size() != n) return false;
     if constexpr (!positions_in_x) it.points.resize(n);
-    it.centroids.resize(n);
     it.x.resize(2 * n);
     it.g.resize(2 * n);
-    it.h.resize(n);
     // The visit order changes little from one evaluation to the next: each generator is first
     // looked for after the previous one in the last order, and by its handle if not there.
     m_previous_order.swap(m_order);
     m_position.resize(n);
-    for (std::size_t k = 0; k < m_previous_order.size(); ++k) m_position[m_previous_order[k]] = k;
+    for (std::size_t k = 0; k < m_previous_order.size(); ++k)
+      m_position[m_previous_order[k]] = std::uint32_t(k);
     m_order.clear();
+    m_order.reserve(n);
     std::size_t next = 0;
     for (const auto& f : generators) {
       std::size_t i;
       if (next < m_previous_order.size() && m_vertices[m_previous_order[next]] == f.vertex) {
         i = m_previous_order[next];
       } else {
-        const auto found = std::lower_bound(m_index.begin(), m_index.end(),
-                                            std::make_pair(f.vertex, std::size_t(0)), by_address);
-        if (found == m_index.end() || found->first != f.vertex) return false;
-        i = found->second;
+        const auto found =
+            std::lower_bound(m_by_address.begin(), m_by_address.end(), f.vertex, by_address);
+        if (found == m_by_address.end() || *found != f.vertex) return false;
+        i = m_numbers_by_address[std::size_t(found - m_by_address.begin())];
         if (m_previous_order.size() == n) next = m_position[i];
       }
       ++next;
-      m_order.push_back(i);
+      m_order.push_back(std::uint32_t(i));
       const Point_2& p = f.vertex->point();
-      // A mass that underflowed to 0 would make the preconditioner infinite.
-      const double m = std::max(CGAL::to_double(f.mass), std::numeric_limits<double>::min());
+      const double m = mass(f);
       if constexpr (!positions_in_x) it.points[i] = p;
-      it.centroids[i] = f.centroid;
       it.x[2 * i] = CGAL::to_double(p.x());
       it.x[2 * i + 1] = CGAL::to_double(p.y());
       it.g[2 * i] = 2 * m * CGAL::to_double(p.x() - f.centroid.x());
       it.g[2 * i + 1] = 2 * m * CGAL::to_double(p.y() - f.centroid.y());
-      it.h[i] = 1 / (2 * m);
     }
     it.evaluation = m_lloyd.last_evaluation();
     return true;
   }
+
+  // The trial point, just gathered, becomes the current one, with its centroids and
+  // preconditioner 1/(2 m) from the evaluator's list; the list and the old point are dropped.
+  void take_trial() {
+    std::swap(m_current, m_trial);
+    drop_trial();
+    const std::size_t n = m_vertices.size();
+    m_centroids.resize(n);
+    m_h.resize(n);
+    std::size_t k = 0;
+    for (const auto& f : m_lloyd.free_generators()) {
+      const std::size_t i = m_order[k++];
+      m_centroids[i] = f.centroid;
+      m_h[i] = 1 / (2 * mass(f));
+    }
+    m_lloyd.m_moves.clear();
+  }
+  // Frees the trial point (at most one point and the evaluator's list are held besides the
+  // current point: a million generators take 32 MB each).
+  void drop_trial() { m_trial = Iterate(); }
 
   void evaluate_trial(std::size_t resolution) {
     m_lloyd.evaluate(resolution);
@@ -250,31 +296,35 @@ class Lbfgs_optimizer_2 {
   // curvature is positive.
   void accept() {
     m_history.add(m_current.x, m_trial.x, m_current.g, m_trial.g);
-    std::swap(m_current, m_trial);
+    take_trial();
   }
 
   // Back to the start of a failed step, by the same moves with more passes (few generators are
   // still on their way after the first ones); if one cannot get there to the bit, the Lloyd step
   // that follows starts from an evaluation of where they are.
   void go_back(std::size_t resolution) {
-    m_targets.resize(m_vertices.size());
-    for (std::size_t i = 0; i < m_vertices.size(); ++i) m_targets[i] = position(m_current, i);
-    if (move_to_targets(4 * max_passes) > 0) evaluate(resolution);
+    if (move_to_targets([this](std::size_t i) { return position(m_current, i); }, 4 * max_passes) >
+        0)
+      evaluate(resolution);
   }
 
   // Every free generator to its centroid (as far as the passes go), evaluated and accepted.
   void lloyd_step(std::size_t resolution) {
-    m_targets = m_current.centroids;
-    move_to_targets(max_passes);
+    move_to_targets([this](std::size_t i) -> const Point_2& { return m_centroids[i]; }, max_passes);
     evaluate_trial(resolution);
     accept();
   }
 
-  // Moves the generators toward m_targets, in the last visit order; returns how many did not
-  // get there in `passes` passes.
-  std::size_t move_to_targets(std::size_t passes) {
-    return internal::move_free_vertices(m_cdt, m_lloyd.face_chunks(), m_lloyd.number_of_threads(),
-                                        m_vertices, m_targets, m_order, passes, m_buffers);
+  // Moves each generator i toward target(i), in the last visit order; returns how many did not
+  // get there in `passes` passes. The targets are computed when asked for, not stored; the
+  // trial point and the evaluator's list are no longer needed.
+  template <class Target>
+  std::size_t move_to_targets(const Target& target, std::size_t passes) {
+    drop_trial();
+    m_lloyd.m_moves.clear();
+    return internal::move_free_vertices(
+        m_cdt, m_lloyd.face_chunks(), m_lloyd.number_of_threads(), m_order,
+        [this](std::size_t i) { return m_vertices[i]; }, target, passes, m_buffers);
   }
 
   // Backtracking from the full quasi-Newton step; true if a trial point was accepted.
@@ -283,11 +333,14 @@ class Lbfgs_optimizer_2 {
     const std::size_t n = m_vertices.size();
     double step = 1;
     for (std::size_t attempt = 0; attempt <= max_halvings; ++attempt, step /= 2) {
-      m_targets.resize(n);
-      for (std::size_t i = 0; i < n; ++i)
-        m_targets[i] = Point_2(FT(m_current.x[2 * i] + step * m_direction[2 * i]),
-                               FT(m_current.x[2 * i + 1] + step * m_direction[2 * i + 1]));
-      move_to_targets(max_passes);
+      const double scaled_step = std::ldexp(step, m_direction_exponent);
+      move_to_targets(
+          [&](std::size_t i) {
+            return Point_2(
+                FT(m_current.x[2 * i] + scaled_step * double(m_direction[2 * i])),
+                FT(m_current.x[2 * i + 1] + scaled_step * double(m_direction[2 * i + 1])));
+          },
+          max_passes);
       evaluate_trial(resolution);
       double slope = 0;  // g . s, with the displacement done
       for (std::size_t j = 0; j < 2 * n; ++j)
@@ -303,14 +356,18 @@ class Lbfgs_optimizer_2 {
   CDT& m_cdt;
   Lloyd_optimizer m_lloyd;
   internal::Lbfgs_history<float> m_history;
-  std::vector<Vertex_handle> m_vertices;                       // the free generators, by number
-  std::vector<std::pair<Vertex_handle, std::size_t>> m_index;  // and their numbers, by_address
+  std::vector<Vertex_handle> m_vertices;            // the free generators, by number
+  std::vector<Vertex_handle> m_by_address;          // the same, by_address
+  std::vector<std::uint32_t> m_numbers_by_address;  // and their numbers
   Iterate m_current, m_trial;
+  std::vector<Point_2> m_centroids;  // of the current point's cells, by number
+  std::vector<double> m_h;           // and the preconditioner 1/(2 m)
   bool m_has_current = false;
-  std::vector<double> m_direction;
-  std::vector<Point_2> m_targets;
-  std::vector<std::size_t> m_order;  // the numbers in the last evaluation's visit order
-  std::vector<std::size_t> m_previous_order, m_position;  // the one before, and its inverse
+  std::vector<float> m_direction;  // times 2^m_direction_exponent
+  int m_direction_exponent = 0;
+  // The numbers in the last evaluation's visit order, the order before, and its inverse (32
+  // bits: four billion generators would take 600 GB).
+  std::vector<std::uint32_t> m_order, m_previous_order, m_position;
   internal::Move_buffers<CDT> m_buffers;
   std::size_t m_steps = 0, m_fallbacks = 0, m_restarts = 0;
 };

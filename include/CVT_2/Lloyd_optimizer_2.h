@@ -15,6 +15,7 @@
 #include <CVT_2/Optimization_result.h>
 #include <CVT_2/Uniform_density_2.h>
 #include <CVT_2/exceptions.h>
+#include <CVT_2/internal/Chunked_list.h>
 #include <CVT_2/internal/Face_chunks.h>
 #include <CVT_2/internal/move_generators.h>
 #include <CVT_2/internal/to_string.h>
@@ -206,6 +207,9 @@ class Lloyd_optimizer_2 {
     Point_2 centroid;      ///< \f$x^*\f$, the centroid of its cell
     FT mass;               ///< \f$m = \int_V \rho\f$
   };
+  /// The free generators of an evaluation: a range of `Free_generator` with `size()`, `empty()`,
+  /// `operator[]` and forward iterators, kept in the pieces the cells were computed in.
+  using Free_generators = internal::Chunked_list<Free_generator>;
 
   /// Prepares the iteration on `cdt` (nothing is computed yet).
   explicit Lloyd_optimizer_2(CDT& cdt, const Density& rho = Density(),
@@ -245,7 +249,7 @@ class Lloyd_optimizer_2 {
   std::size_t number_of_evaluations() const { return m_number_of_evaluations; }
   /// The free generators of the last evaluation, in the order the cells were visited (a
   /// `move()` empties it).
-  const std::vector<Free_generator>& free_generators() const { return m_moves; }
+  const Free_generators& free_generators() const { return m_moves; }
   const Diagram& diagram() const { return m_diagram; }  ///< the diagram, as last evaluated
   const CDT& triangulation() const { return m_cdt; }    ///< the triangulation
 
@@ -263,17 +267,21 @@ class Lloyd_optimizer_2 {
     Free_generator generator;
   };
 
-  // What a chunk of cells adds up to, in the order of its cells.
+  // What a chunk of cells adds up to, in the order of its cells; its free generators go to its
+  // list in m_moves.
   struct Chunk {
     double mass = 0, energy = 0, max_move_ratio = 0, sum_move_ratio = 0;
-    std::vector<Free_generator> moves;
+    std::vector<Free_generator>* moves = nullptr;
     void add(const Cell_figures& c) {
       mass += c.mass;
       energy += c.energy;
       if (!c.is_free) return;
       max_move_ratio = std::max(max_move_ratio, c.move_ratio);
       sum_move_ratio += c.move_ratio;
-      moves.push_back(c.generator);
+      // beyond the guess, an eighth more at a time: doubling would leave half a list unused
+      if (moves->size() == moves->capacity())
+        moves->reserve(moves->capacity() + moves->capacity() / 8 + 16);
+      moves->push_back(c.generator);
     }
   };
 
@@ -325,7 +333,7 @@ class Lloyd_optimizer_2 {
   unsigned m_number_of_threads = 0;
   std::size_t m_number_of_evaluations = 0;
   std::vector<Chunk> m_chunk_sums;
-  std::vector<Free_generator> m_moves;
+  Free_generators m_moves;  // a list for each chunk, not joined by a copy
   internal::Move_buffers<CDT> m_buffers;
   internal::Buffer_pool<Batch_buffers> m_batch_buffers;  // one in use per thread at most
 
@@ -364,6 +372,14 @@ auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::evaluate(std::size_t r
   // Cells in chunks, on several threads; each chunk sums its own cells in order, then the
   // chunks are summed in order: the same bits whatever the threads.
   m_chunk_sums.assign(m_chunks.size(), Chunk());
+  m_moves.reset(m_chunks.size());
+  for (std::size_t c = 0; c < m_chunks.size(); ++c) {
+    // as many as last time, or as the chunk has vertices on average, and a little more
+    std::size_t guess = m_moves.previous_size(c);
+    if (guess == 0) guess = m_cdt.number_of_vertices() / m_chunks.size();
+    m_moves.chunk(c).reserve(guess + guess / 16);
+    m_chunk_sums[c].moves = &m_moves.chunk(c);
+  }
   m_chunks.for_each(
       [&](std::size_t c, auto first, auto last) {
         if constexpr (has_batch_evaluation_v<Density, Kernel>) {
@@ -484,18 +500,16 @@ auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::cell_figures(
   return f;
 }
 
-// The chunks' sums, in the order of the chunks, into the evaluation and the moves.
+// The chunks' sums, in the order of the chunks, into the evaluation; their moves joined.
 template <class CDT, class Density, class Quadrature, class Traits>
 void Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::reduce_chunks() {
-  m_moves.clear();
+  m_moves.seal();
   double sum_ratio = 0, mass = 0;
-  for (Chunk& c : m_chunk_sums) {
+  for (const Chunk& c : m_chunk_sums) {
     mass += c.mass;
     m_evaluation.energy += c.energy;
     m_evaluation.max_move_ratio = std::max(m_evaluation.max_move_ratio, c.max_move_ratio);
     sum_ratio += c.sum_move_ratio;
-    m_moves.insert(m_moves.end(), c.moves.begin(), c.moves.end());
-    std::vector<Free_generator>().swap(c.moves);  // one copy of the moves at a time
   }
   // One cell may underflow (a generator 1e-320 from another: it stays put), not the domain.
   if (!(mass >= std::numeric_limits<double>::min()) || !(m_evaluation.energy > 0))

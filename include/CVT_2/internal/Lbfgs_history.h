@@ -90,11 +90,11 @@ class Lbfgs_history {
     return true;
   }
 
-  // The direction d = -H g of the two-loop recursion, with H0 = gamma diag(h) as above.
-  // Returns whether it goes downhill (g.d < 0, finite).
+  // The direction d = -H g of the two-loop recursion, with H0 = gamma diag(h) as above (h in
+  // double or float: gamma rescales it). Returns whether it goes downhill (g.d < 0, finite).
   // \pre size() > 0; g.size() == 2 h.size().
-  bool direction(const std::vector<double>& g, const std::vector<double>& h,
-                 std::vector<double>& d) {
+  template <class H>
+  bool direction(const std::vector<double>& g, const std::vector<H>& h, std::vector<double>& d) {
     d = g;
     m_alpha.resize(m_size);
     for (std::size_t t = m_size; t-- > 0;) {
@@ -107,13 +107,13 @@ class Lbfgs_history {
     double yhy = 0;
     for (std::size_t i = 0; i < h.size(); ++i) {
       const double y0 = newest.y[2 * i], y1 = newest.y[2 * i + 1];
-      yhy += h[i] * (y0 * y0 + y1 * y1);
+      yhy += double(h[i]) * (y0 * y0 + y1 * y1);
     }
     const double gamma =
         1 / (newest.inverse_sy * std::ldexp(yhy, 2 * newest.y_exponent));  // s.y / y.H0 y
     for (std::size_t i = 0; i < h.size(); ++i) {
-      d[2 * i] *= gamma * h[i];
-      d[2 * i + 1] *= gamma * h[i];
+      d[2 * i] *= gamma * double(h[i]);
+      d[2 * i + 1] *= gamma * double(h[i]);
     }
     for (std::size_t t = 0; t < m_size; ++t) {
       const Pair& p = m_pairs[slot(t)];

@@ -21,7 +21,9 @@
 namespace CVT_2 {
 namespace internal {
 
-// What the moves reuse from one call to the next.
+// What the moves work in. All is freed at the end of a call (release()): the lists of one item a
+// vertex would otherwise sit through the evaluation that follows (40 bytes a generator), and so
+// would the flips' stacks of a first move from random points (20 bytes a generator).
 template <class CDT>
 struct Move_buffers {
   std::vector<std::size_t> pending, moved, kept_back;
@@ -32,6 +34,7 @@ struct Move_buffers {
   std::vector<std::vector<typename CDT::Face_handle>> chunk_inverted;
   std::vector<std::vector<Flip_candidate<CDT>>> chunk_stack;
   std::vector<std::vector<std::size_t>> chunk_pending;
+  void release() { *this = Move_buffers(); }
 };
 
 // The i of `order` (random access) whose vertex(i) is not at target(i), in that order, into
@@ -82,7 +85,8 @@ void set_targets(const std::vector<std::size_t>& pending, const VertexAt& vertex
 
 // One pass over the domain faces after a bulk move: the faces that are not positive into
 // `b.inverted`, and the edges of the positive ones that fail their in-circle test (each edge
-// once) onto `b.stack`. Each chunk of faces has its own outputs, joined in chunk order.
+// once) onto `b.chunk_stack`. Each chunk of faces has its own outputs; the faces are joined in
+// chunk order, the stacks are not (chunk_lawson_flips() pops them as if they were).
 template <class CDT>
 void check_moved_faces(const CDT& cdt, const Face_chunks<CDT>& chunks, unsigned threads,
                        Move_buffers<CDT>& b) {
@@ -111,10 +115,18 @@ void check_moved_faces(const CDT& cdt, const Face_chunks<CDT>& chunks, unsigned 
       },
       threads);
   b.inverted.clear();
-  b.stack.clear();
-  for (std::size_t c = 0; c < chunks.size(); ++c) {
+  for (std::size_t c = 0; c < chunks.size(); ++c)
     b.inverted.insert(b.inverted.end(), b.chunk_inverted[c].begin(), b.chunk_inverted[c].end());
-    b.stack.insert(b.stack.end(), b.chunk_stack[c].begin(), b.chunk_stack[c].end());
+}
+
+// Lawson's flips from `b.stack` on top of the chunks' stacks, the last chunk's on top: the same
+// flips, in the same order, as from one stack that joined them all, without the copy.
+template <class CDT>
+void chunk_lawson_flips(CDT& cdt, Move_buffers<CDT>& b) {
+  lawson_flips(cdt, b.stack);
+  for (std::size_t c = b.chunk_stack.size(); c-- > 0;) {
+    b.stack.swap(b.chunk_stack[c]);
+    lawson_flips(cdt, b.stack);
   }
 }
 
@@ -183,11 +195,11 @@ void put_back_inverted(const CDT& cdt, const std::vector<std::size_t>& pending,
 // Lloyd iteration, only a few are put back. Both passes run in chunks on `threads` threads,
 // each chunk with its own output, put together in the order of the chunks: the same bits
 // whatever the threads. The pass over the faces also runs the in-circle test of every edge of
-// the domain once and pushes those that fail on `b.stack`: with the edges around the vertices
-// put back (push_star_edges), the stack then holds every edge that can have lost the Delaunay
-// property, ready for lawson_flips(). The faces around a moved vertex are all in the domain (it
-// is free and has a cell). An in-circle test next to a face that is not positive means nothing,
-// but that face's edges are all pushed again, with its vertices put back.
+// the domain once and pushes those that fail on the chunks' stacks: with the edges around the
+// vertices put back (push_star_edges, on `b.stack`), the stacks then hold every edge that can
+// have lost the Delaunay property, ready for chunk_lawson_flips(). The faces around a moved vertex
+// are all in the domain (it is free and has a cell). An in-circle test next to a face that is not
+// positive means nothing, but that face's edges are all pushed again, with its vertices put back.
 template <class CDT, class VertexAt, class TargetAt>
 void move_all_at_once(CDT& cdt, const Face_chunks<CDT>& chunks, unsigned threads,
                       const std::vector<std::size_t>& pending, const VertexAt& vertex,
@@ -213,7 +225,8 @@ std::size_t move_free_vertices(CDT& cdt, const Face_chunks<CDT>& chunks, unsigne
   for (std::size_t pass = 0; pass < passes && !pending.empty(); ++pass) {
     const bool at_once = pass == 0 && pending.size() * 8 > order.size();
     if (at_once) {
-      move_all_at_once(cdt, chunks, threads, pending, vertex, target, b);  // fills b.stack
+      b.stack.clear();
+      move_all_at_once(cdt, chunks, threads, pending, vertex, target, b);  // fills the stacks
       pending.swap(b.kept_back);
     } else {
       b.moved.clear();
@@ -233,7 +246,7 @@ std::size_t move_free_vertices(CDT& cdt, const Face_chunks<CDT>& chunks, unsigne
         });
     pending.resize(kept);
     if (at_once) {
-      lawson_flips(cdt, b.stack);
+      chunk_lawson_flips(cdt, b);
       continue;
     }
     if (b.moved.empty()) break;  // every remaining vertex is stuck where it is
@@ -247,7 +260,9 @@ std::size_t move_free_vertices(CDT& cdt, const Face_chunks<CDT>& chunks, unsigne
       lawson_flips(cdt, b.stack);
     }
   }
-  return pending.size();
+  const std::size_t missed = pending.size();
+  b.release();
+  return missed;
 }
 
 // The same with the vertices and targets in two vectors.
