@@ -132,7 +132,7 @@ struct Row {
   double ours_conv_s = nan, cgal_conv_s = nan;
   std::string ours_stop, cgal_stop;
   Energy ours_conv, cgal_conv;
-  double rss_cdt = nan, rss_ours = nan, rss_cgal = nan;
+  double rss_cdt = nan, rss_ours = nan, rss_cgal = nan, rss_lbfgs = nan;
 };
 std::map<std::pair<std::string, std::size_t>, Row> rows;  // for the tables printed at the end
 
@@ -380,7 +380,7 @@ double peak_rss_mb(const std::function<void()>& work) {
   return mb;
 }
 
-void measure_memory(const std::string& name, std::size_t n) {
+void measure_memory(const std::string& name, std::size_t n, bool with_cgal = true) {
   Row& r = rows[{name, n}];
   r.rss_cdt = peak_rss_mb([&] {
     const Domain& d = domain(name);
@@ -390,21 +390,31 @@ void measure_memory(const std::string& name, std::size_t n) {
   });
   r.rss_ours = peak_rss_mb([&] {
     const Domain& d = domain(name);
-    const std::vector<Point> points = support::initial_points(d, n);
+    std::vector<Point> points = support::initial_points(d, n);
     CDT cdt;
     build_ours(cdt, d, points);
+    std::vector<Point>().swap(points);  // the harness's input, not the optimizer's memory
     CVT_2::lloyd_optimize_2(cdt, CVT_2::parameters::number_of_iterations(5).move_ratio_bound(0));
   });
-  r.rss_cgal = peak_rss_mb([&] {
+  r.rss_lbfgs = peak_rss_mb([&] {  // 12 steps: the ring of 7 curvature pairs is full from step 8
     const Domain& d = domain(name);
-    const std::vector<Point> points = support::initial_points(d, n);
-    CDT2 cdt2;
-    build_cdt2(cdt2, d, points);
-    CGAL::lloyd_optimize_mesh_2(
-        cdt2, CGAL::parameters::max_iteration_number = 5, CGAL::parameters::convergence = 0,
-        CGAL::parameters::freeze_bound = 0, CGAL::parameters::seeds_begin = d.poly.holes.begin(),
-        CGAL::parameters::seeds_end = d.poly.holes.end());
+    std::vector<Point> points = support::initial_points(d, n);
+    CDT cdt;
+    build_ours(cdt, d, points);
+    std::vector<Point>().swap(points);  // the harness's input, not the optimizer's memory
+    CVT_2::lbfgs_optimize_2(cdt, CVT_2::parameters::number_of_iterations(12).move_ratio_bound(0));
   });
+  if (with_cgal)
+    r.rss_cgal = peak_rss_mb([&] {
+      const Domain& d = domain(name);
+      const std::vector<Point> points = support::initial_points(d, n);
+      CDT2 cdt2;
+      build_cdt2(cdt2, d, points);
+      CGAL::lloyd_optimize_mesh_2(
+          cdt2, CGAL::parameters::max_iteration_number = 5, CGAL::parameters::convergence = 0,
+          CGAL::parameters::freeze_bound = 0, CGAL::parameters::seeds_begin = d.poly.holes.begin(),
+          CGAL::parameters::seeds_end = d.poly.holes.end());
+    });
 }
 
 }  // namespace
@@ -412,6 +422,9 @@ void measure_memory(const std::string& name, std::size_t n) {
 int main(int argc, char* argv[]) {
   const char* large_env = std::getenv("CVT_2_BENCH_LARGE");
   const bool large = large_env && std::string(large_env) == "1";
+  // CVT_2_BENCH_MEMORY=N adds the memory of N generators on the unit square (no timing)
+  const char* memory_env = std::getenv("CVT_2_BENCH_MEMORY");
+  const std::size_t memory_n = memory_env ? std::size_t(std::strtoull(memory_env, nullptr, 10)) : 0;
   std::vector<long> sizes{2000, 10000, 100000};
   if (large) sizes.push_back(1000000);
   const std::vector<std::string> names{square, massachusetts};
@@ -425,6 +438,7 @@ int main(int argc, char* argv[]) {
   for (const auto& name : names)
     for (const long n : sizes)
       if (n >= 100000) measure_memory(name, std::size_t(n));
+  if (memory_n > 0) measure_memory(square, memory_n, false);  // CGAL's would take an hour
 
   for (const auto& name : names)
     for (const long n : sizes)
@@ -492,6 +506,22 @@ int main(int argc, char* argv[]) {
           fmt("%.0f", r.rss_cdt).c_str(), fmt("%.0f", r.rss_ours).c_str(),
           fmt("%.0f", r.rss_cgal).c_str());
     }
+  std::printf(
+      "\nPeak memory (RSS of a child process, baseline %.1f MB): a plain CGAL CDT build of the "
+      "points; ours: the build and 5 Lloyd iterations, or 12 L-BFGS steps (its 7 curvature "
+      "pairs kept from step 8); CGAL's lloyd_optimize_mesh_2, 5 iterations. Bytes a generator "
+      "and the ratio to the CDT build.\n\n"
+      "| domain | N | CDT MB | CDT B/gen | Lloyd B/gen | Lloyd / CDT | L-BFGS B/gen | "
+      "L-BFGS / CDT | CGAL / CDT |\n|---|--:|--:|--:|--:|--:|--:|--:|--:|\n",
+      baseline_mb);
+  for (const auto& [key, r] : rows) {
+    if (!(r.rss_cdt > 0)) continue;
+    const double per = 1048576.0 / double(key.second);  // MB to bytes a generator
+    std::printf("| %s | %zu | %.0f | %.0f | %.0f | %.2f | %.0f | %.2f | %.2f |\n",
+                key.first.c_str(), key.second, r.rss_cdt, r.rss_cdt * per, r.rss_ours * per,
+                r.rss_ours / r.rss_cdt, r.rss_lbfgs * per, r.rss_lbfgs / r.rss_cdt,
+                r.rss_cgal / r.rss_cdt);
+  }
   std::printf(
       "\nChecks (faces whose CGAL domain mark differs from ours after K; CGAL free "
       "points outside the domain; energy rises over the K iterations):");

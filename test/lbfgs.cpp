@@ -607,6 +607,43 @@ TEST_CASE("Lbfgs_history: L-BFGS with exact line searches minimizes a quadratic 
   CHECK(norm(subtract(x, minimum)) <= 1e-9 * norm(minimum));
 }
 
+TEST_CASE("Lbfgs_history: its passes give the same bits on any number of threads",
+          "[lbfgs][lbfgs_history]") {
+  const std::size_t n = 2 * 50000;  // a dozen blocks: three threads share them
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.5, 2.0);
+  std::vector<double> a(n), h(n / 2);  // a diagonal quadratic, and a preconditioner
+  for (double& v : a) v = u(rng);
+  for (double& v : h) v = u(rng);
+  const auto run = [&](unsigned threads) {
+    CVT_2::internal::Lbfgs_history<float> history(5);
+    history.set_number_of_threads(threads);
+    std::mt19937 r(9);
+    std::vector<double> x(n), g(n), x1(n), g1(n), d;
+    for (std::size_t j = 0; j < n; ++j) x[j] = u(r), g[j] = a[j] * x[j];
+    std::vector<std::vector<double>> directions;
+    for (int k = 0; k < 8; ++k) {  // the ring fills, then turns
+      for (std::size_t j = 0; j < n; ++j) x1[j] = x[j] - 0.3 * u(r) * g[j], g1[j] = a[j] * x1[j];
+      REQUIRE(history.add(x, x1, g, g1));
+      x.swap(x1);
+      g.swap(g1);
+      REQUIRE(history.direction(g, h, d));
+      directions.push_back(d);
+    }
+    return directions;
+  };
+  const auto one = run(1);
+  const auto first_difference = [&](const std::vector<std::vector<double>>& other) {
+    for (std::size_t k = 0; k < one.size(); ++k)
+      for (std::size_t j = 0; j < n; ++j)
+        if (other[k][j] != one[k][j])  // the same bits, not nearly
+          return "step " + std::to_string(k) + ", entry " + std::to_string(j);
+    return std::string("none");
+  };
+  CHECK(first_difference(run(3)) == "none");
+  CHECK(first_difference(run(2)) == "none");
+}
+
 TEMPLATE_TEST_CASE(
     "Lbfgs_history: a pair without positive curvature is rejected and changes nothing, "
     "whether the ring is full or not",

@@ -6,8 +6,10 @@
 #include <CVT_2/Lloyd_optimizer_2.h>
 #include <CVT_2/internal/Lbfgs_history.h>
 #include <CVT_2/internal/move_generators.h>
+#include <CVT_2/internal/run_chunks.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -133,7 +135,10 @@ class Lbfgs_optimizer_2 {
 
   /// The number of threads that evaluations build cells and integrate them on; 0 (the default)
   /// means one per core. The results are the same, bit for bit, whatever the number.
-  void set_number_of_threads(unsigned n) { m_lloyd.set_number_of_threads(n); }
+  void set_number_of_threads(unsigned n) {
+    m_lloyd.set_number_of_threads(n);
+    m_history.set_number_of_threads(n);
+  }
   unsigned number_of_threads() const { return m_lloyd.number_of_threads(); }  ///< as set
 
   /// the evaluation of the current point
@@ -222,45 +227,73 @@ class Lbfgs_optimizer_2 {
     return std::max(CGAL::to_double(f.mass), std::numeric_limits<double>::min());
   }
 
+  // Calls visit(k, list) for each piece `list` of the last evaluation's free generators, k the
+  // index of its first one, on the evaluator's threads: pieces may be visited at once.
+  template <class Visit>
+  void for_each_piece_of_free_generators(const Visit& visit) const {
+    const auto& generators = m_lloyd.free_generators();
+    internal::run_chunks(
+        generators.number_of_chunks(), m_lloyd.number_of_threads(),
+        [&](std::size_t c) { visit(generators.chunk_begin(c), generators.chunk(c)); });
+  }
+
   // The last evaluation into `it`, by number; false if the free generators are not those numbered.
   // Records the visit order, the order of the next moves.
   bool gather(Iterate& it) {
-    const auto& generators = m_lloyd.free_generators();
     const std::size_t n = m_vertices.size();
-    if (generators.size() != n) return false;
+    if (m_lloyd.free_generators().size() != n) return false;
     if constexpr (!positions_in_x) it.points.resize(n);
     it.x.resize(2 * n);
     it.g.resize(2 * n);
     // The visit order changes little from one evaluation to the next: each generator is first
-    // looked for after the previous one in the last order, and by its handle if not there.
+    // looked for where the one before it in this order was in the last order, then at its own
+    // place in the last order, and by its handle if at neither.
     m_previous_order.swap(m_order);
+    const bool has_previous = m_previous_order.size() == n;
     m_position.resize(n);
-    for (std::size_t k = 0; k < m_previous_order.size(); ++k)
-      m_position[m_previous_order[k]] = std::uint32_t(k);
-    m_order.clear();
-    m_order.reserve(n);
-    std::size_t next = 0;
-    for (const auto& f : generators) {
-      std::size_t i;
-      if (next < m_previous_order.size() && m_vertices[m_previous_order[next]] == f.vertex) {
-        i = m_previous_order[next];
-      } else {
-        const auto found =
-            std::lower_bound(m_by_address.begin(), m_by_address.end(), f.vertex, by_address);
-        if (found == m_by_address.end() || *found != f.vertex) return false;
-        i = m_numbers_by_address[std::size_t(found - m_by_address.begin())];
-        if (m_previous_order.size() == n) next = m_position[i];
+    constexpr std::size_t block = internal::vector_block;
+    if (has_previous)
+      internal::run_chunks((n + block - 1) / block, m_lloyd.number_of_threads(),
+                           [&](std::size_t c) {
+                             for (std::size_t k = c * block; k < std::min(n, (c + 1) * block); ++k)
+                               m_position[m_previous_order[k]] = std::uint32_t(k);
+                           });
+    m_order.resize(n);
+    // The number of the k-th generator v of this evaluation, n if none; `next` is one past where
+    // the one before it was in the last order.
+    const auto number = [&](std::size_t k, Vertex_handle v, std::size_t& next) -> std::size_t {
+      if (has_previous)
+        for (const std::size_t guess : {next, k})
+          if (guess < n && m_vertices[m_previous_order[guess]] == v) {
+            next = guess + 1;
+            return m_previous_order[guess];
+          }
+      const auto found = std::lower_bound(m_by_address.begin(), m_by_address.end(), v, by_address);
+      if (found == m_by_address.end() || *found != v) return n;
+      const std::size_t i = m_numbers_by_address[std::size_t(found - m_by_address.begin())];
+      if (has_previous) next = m_position[i] + std::size_t(1);
+      return i;
+    };
+    std::atomic<bool> all_numbered{true};
+    for_each_piece_of_free_generators([&](std::size_t k, const auto& list) {
+      std::size_t next = n;
+      for (const auto& f : list) {
+        const std::size_t i = number(k, f.vertex, next);
+        if (i == n) {
+          all_numbered = false;
+          return;
+        }
+        m_order[k++] = std::uint32_t(i);
+        const Point_2& p = f.vertex->point();
+        const double m = mass(f);
+        if constexpr (!positions_in_x) it.points[i] = p;
+        it.x[2 * i] = CGAL::to_double(p.x());
+        it.x[2 * i + 1] = CGAL::to_double(p.y());
+        it.g[2 * i] = 2 * m * CGAL::to_double(p.x() - f.centroid.x());
+        it.g[2 * i + 1] = 2 * m * CGAL::to_double(p.y() - f.centroid.y());
       }
-      ++next;
-      m_order.push_back(std::uint32_t(i));
-      const Point_2& p = f.vertex->point();
-      const double m = mass(f);
-      if constexpr (!positions_in_x) it.points[i] = p;
-      it.x[2 * i] = CGAL::to_double(p.x());
-      it.x[2 * i + 1] = CGAL::to_double(p.y());
-      it.g[2 * i] = 2 * m * CGAL::to_double(p.x() - f.centroid.x());
-      it.g[2 * i + 1] = 2 * m * CGAL::to_double(p.y() - f.centroid.y());
-    }
+    });
+    if (!all_numbered) return false;
     it.evaluation = m_lloyd.last_evaluation();
     return true;
   }
@@ -273,12 +306,13 @@ class Lbfgs_optimizer_2 {
     const std::size_t n = m_vertices.size();
     m_centroids.resize(n);
     m_h.resize(n);
-    std::size_t k = 0;
-    for (const auto& f : m_lloyd.free_generators()) {
-      const std::size_t i = m_order[k++];
-      m_centroids[i] = f.centroid;
-      m_h[i] = 1 / (2 * mass(f));
-    }
+    for_each_piece_of_free_generators([&](std::size_t k, const auto& list) {
+      for (const auto& f : list) {
+        const std::size_t i = m_order[k++];
+        m_centroids[i] = f.centroid;
+        m_h[i] = 1 / (2 * mass(f));
+      }
+    });
     m_lloyd.m_moves.clear();
   }
   // Frees the trial point (at most one point and the evaluator's list are held besides the

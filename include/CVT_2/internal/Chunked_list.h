@@ -35,7 +35,10 @@ class Chunked_list {
   // The size of chunk c's list when last sealed (0 if none): a guess of its next size.
   std::size_t previous_size(std::size_t c) const { return c < m_sizes.size() ? m_sizes[c] : 0; }
   std::vector<T>& chunk(std::size_t c) { return m_chunks[c]; }  // to write, before seal()
+  const std::vector<T>& chunk(std::size_t c) const { return m_chunks[c]; }
   std::size_t number_of_chunks() const { return m_chunks.size(); }
+  // the index of chunk c's first item, once sealed
+  std::size_t chunk_begin(std::size_t c) const { return m_ends[c] - m_chunks[c].size(); }
 
   // Joins the chunks' lists, in chunk order.
   void seal() {
