@@ -213,12 +213,25 @@ class Lbfgs_optimizer_2 {
   bool quasi_newton_direction() {
     std::vector<double> d;
     if (!m_history.direction(m_current.g, m_h, d)) return false;
-    double largest = 0;
-    for (const double v : d) largest = std::max(largest, std::abs(v));
-    std::frexp(largest, &m_direction_exponent);  // finite: the direction goes downhill
+    const unsigned threads = m_lloyd.number_of_threads();
+    std::vector<double> largest(internal::number_of_blocks(d.size()), 0.0);
+    internal::for_each_block(d.size(), threads,
+                             [&](std::size_t b, std::size_t first, std::size_t last) {
+                               double l = 0;
+                               for (std::size_t j = first; j < last; ++j)
+                                 l = std::max(l, std::abs(d[j]));
+                               largest[b] = l;
+                             });
+    // finite: the direction goes downhill
+    std::frexp(largest.empty() ? 0.0 : *std::max_element(largest.begin(), largest.end()),
+               &m_direction_exponent);
     const double scale = std::ldexp(1.0, -m_direction_exponent);
     m_direction.resize(d.size());
-    for (std::size_t j = 0; j < d.size(); ++j) m_direction[j] = float(d[j] * scale);
+    internal::for_each_block(d.size(), threads,
+                             [&](std::size_t, std::size_t first, std::size_t last) {
+                               for (std::size_t j = first; j < last; ++j)
+                                 m_direction[j] = float(d[j] * scale);
+                             });
     return true;
   }
 
@@ -376,9 +389,14 @@ class Lbfgs_optimizer_2 {
           },
           max_passes);
       evaluate_trial(resolution);
-      double slope = 0;  // g . s, with the displacement done
-      for (std::size_t j = 0; j < 2 * n; ++j)
-        slope += m_current.g[j] * (m_trial.x[j] - m_current.x[j]);
+      // g . s, with the displacement done
+      const double slope = internal::sum_of_blocks(
+          2 * n, m_lloyd.number_of_threads(), m_partial, [&](std::size_t first, std::size_t last) {
+            double acc = 0;
+            for (std::size_t j = first; j < last; ++j)
+              acc += m_current.g[j] * (m_trial.x[j] - m_current.x[j]);
+            return acc;
+          });
       if (m_trial.evaluation.energy <= e0 + armijo * std::min(slope, 0.0)) {
         accept();
         return true;
@@ -398,6 +416,7 @@ class Lbfgs_optimizer_2 {
   std::vector<double> m_h;           // and the preconditioner 1/(2 m)
   bool m_has_current = false;
   std::vector<float> m_direction;  // times 2^m_direction_exponent
+  std::vector<double> m_partial;   // the blocks' sums of a dot product
   int m_direction_exponent = 0;
   // The numbers in the last evaluation's visit order, the order before, and its inverse (32
   // bits: four billion generators would take 600 GB).

@@ -75,10 +75,12 @@ class Lbfgs_history {
     // The largest |s| and |y| (NaN loses to a number in max; the sums below catch it).
     std::vector<double> s_max(blocks, 0.0), y_max(blocks, 0.0);
     for_each_block(n, m_threads, [&](std::size_t b, std::size_t first, std::size_t last) {
+      double s = 0, y = 0;  // in registers: the blocks' maxima share cache lines
       for (std::size_t j = first; j < last; ++j) {
-        s_max[b] = std::max(s_max[b], std::abs(x1[j] - x0[j]));
-        y_max[b] = std::max(y_max[b], std::abs(g1[j] - g0[j]));
+        s = std::max(s, std::abs(x1[j] - x0[j]));
+        y = std::max(y, std::abs(g1[j] - g0[j]));
       }
+      s_max[b] = s, y_max[b] = y;
     });
     const double s_largest = blocks ? *std::max_element(s_max.begin(), s_max.end()) : 0;
     const double y_largest = blocks ? *std::max_element(y_max.begin(), y_max.end()) : 0;
