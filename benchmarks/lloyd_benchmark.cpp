@@ -517,10 +517,10 @@ int main(int argc, char* argv[]) {
   for (const auto& [key, r] : rows) {
     if (!(r.rss_cdt > 0)) continue;
     const double per = 1048576.0 / double(key.second);  // MB to bytes a generator
-    std::printf("| %s | %zu | %.0f | %.0f | %.0f | %.2f | %.0f | %.2f | %.2f |\n",
-                key.first.c_str(), key.second, r.rss_cdt, r.rss_cdt * per, r.rss_ours * per,
-                r.rss_ours / r.rss_cdt, r.rss_lbfgs * per, r.rss_lbfgs / r.rss_cdt,
-                r.rss_cgal / r.rss_cdt);
+    std::printf("| %s | %zu | %.0f | %.0f | %.0f | %.2f | %.0f | %.2f | %s |\n", key.first.c_str(),
+                key.second, r.rss_cdt, r.rss_cdt * per, r.rss_ours * per, r.rss_ours / r.rss_cdt,
+                r.rss_lbfgs * per, r.rss_lbfgs / r.rss_cdt,
+                fmt("%.2f", r.rss_cgal / r.rss_cdt).c_str());
   }
   std::printf(
       "\nChecks (faces whose CGAL domain mark differs from ours after K; CGAL free "
