@@ -417,6 +417,53 @@ void measure_memory(const std::string& name, std::size_t n, bool with_cgal = tru
     });
 }
 
+// One thread against two: K Lloyd iterations or L-BFGS steps on the unit square from the same
+// points, in pairs (1 then 2 threads), the time an evaluation; both must give the same bits.
+struct Threads_row {
+  std::size_t k = 0, evaluations = 0;
+  std::vector<double> one, two;  // seconds an evaluation, pair by pair
+  bool same_bits = true;
+};
+std::map<std::pair<std::string, std::size_t>, Threads_row> threads_rows;
+
+void bm_threads(benchmark::State& state, const std::string& algorithm) {
+  const std::size_t n = static_cast<std::size_t>(state.range(0)), k = n >= 1000000 ? 9 : 40;
+  std::vector<Point> points;
+  if (!load_points(state, square, n, points)) return;
+  const Domain& d = domain(square);
+  Threads_row& r = threads_rows[{algorithm, n}];
+  r.k = k;
+  for (auto _ : state) {
+    double seconds = 0;
+    std::vector<Point> first_points;
+    std::vector<double> first_energies;
+    for (const unsigned threads : {1u, 2u}) {
+      CDT cdt;
+      build_ours(cdt, d, points);
+      const auto np =
+          CVT_2::parameters::number_of_iterations(k).move_ratio_bound(0).number_of_threads(threads);
+      const CVT_2::Optimization_result res = algorithm == "lloyd"
+                                                 ? CVT_2::lloyd_optimize_2(cdt, np)
+                                                 : CVT_2::lbfgs_optimize_2(cdt, np);
+      seconds += res.seconds;
+      r.evaluations = res.number_of_evaluations;
+      (threads == 1 ? r.one : r.two).push_back(res.seconds / double(res.number_of_evaluations));
+      std::vector<Point> final_points;
+      for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+        final_points.push_back(v->point());
+      if (threads == 1) {
+        first_points = std::move(final_points);
+        first_energies = res.energy_history;
+      } else {
+        r.same_bits =
+            r.same_bits && final_points == first_points && res.energy_history == first_energies;
+      }
+    }
+    state.SetIterationTime(seconds);
+  }
+  state.counters["speed_up"] = median(r.one) / median(r.two);
+}
+
 }  // namespace
 
 int main(int argc, char* argv[]) {
@@ -455,6 +502,15 @@ int main(int argc, char* argv[]) {
         benchmark::RegisterBenchmark(("lloyd_converge/" + name).c_str(), bm_converge, name)
             ->Arg(n)
             ->Iterations(1)
+            ->UseManualTime()
+            ->Unit(benchmark::kMillisecond);
+  for (const char* algorithm : {"lloyd", "lbfgs"})
+    for (const long n : sizes)
+      if (n >= 100000)
+        benchmark::RegisterBenchmark((std::string("threads_") + algorithm + "/unit_square").c_str(),
+                                     bm_threads, std::string(algorithm))
+            ->Arg(n)
+            ->Iterations(n >= 1000000 ? 3 : 5)
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("lloyd_figure10/bubble_with_hole", bm_figure10)
@@ -521,6 +577,24 @@ int main(int argc, char* argv[]) {
                 key.second, r.rss_cdt, r.rss_cdt * per, r.rss_ours * per, r.rss_ours / r.rss_cdt,
                 r.rss_lbfgs * per, r.rss_lbfgs / r.rss_cdt,
                 fmt("%.2f", r.rss_cgal / r.rss_cdt).c_str());
+  }
+  if (!threads_rows.empty()) {
+    std::printf(
+        "\nOne thread against two (number_of_threads 1 and 2), unit square, K Lloyd iterations "
+        "or L-BFGS steps from the same points, in pairs: seconds an evaluation (medians), the "
+        "median of the pairs' ratios and their range; the same final points and energies?\n\n"
+        "| algorithm | N | K | evaluations | 1 thread s | 2 threads s | 1 / 2 threads | range "
+        "| same bits |\n|---|--:|--:|--:|--:|--:|--:|--:|---|\n");
+    for (const auto& [key, r] : threads_rows) {
+      std::vector<double> ratios;
+      for (std::size_t i = 0; i < std::min(r.one.size(), r.two.size()); ++i)
+        ratios.push_back(r.one[i] / r.two[i]);
+      if (ratios.empty()) continue;
+      std::printf("| %s | %zu | %zu | %zu | %.4f | %.4f | %.2f | %.2f–%.2f | %s |\n",
+                  key.first.c_str(), key.second, r.k, r.evaluations, median(r.one), median(r.two),
+                  median(ratios), *std::min_element(ratios.begin(), ratios.end()),
+                  *std::max_element(ratios.begin(), ratios.end()), r.same_bits ? "yes" : "no");
+    }
   }
   std::printf(
       "\nChecks (faces whose CGAL domain mark differs from ours after K; CGAL free "
