@@ -388,20 +388,21 @@ void measure_memory(const std::string& name, std::size_t n, bool with_cgal = tru
     CDT0 cdt0;
     build_cdt0(cdt0, d.poly, points);
   });
-  r.rss_ours = peak_rss_mb([&] {
-    const Domain& d = domain(name);
-    std::vector<Point> points = support::initial_points(d, n);
-    CDT cdt;
-    build_ours(cdt, d, points);
-    std::vector<Point>().swap(points);  // the harness's input, not the optimizer's memory
+  // our build, then optimize(cdt)
+  const auto ours = [&](const auto& optimize) {
+    return peak_rss_mb([&] {
+      const Domain& d = domain(name);
+      std::vector<Point> points = support::initial_points(d, n);
+      CDT cdt;
+      build_ours(cdt, d, points);
+      std::vector<Point>().swap(points);  // the harness's input, not the optimizer's memory
+      optimize(cdt);
+    });
+  };
+  r.rss_ours = ours([](CDT& cdt) {
     CVT_2::lloyd_optimize_2(cdt, CVT_2::parameters::number_of_iterations(5).move_ratio_bound(0));
   });
-  r.rss_lbfgs = peak_rss_mb([&] {  // 12 steps: the ring of 7 curvature pairs is full from step 8
-    const Domain& d = domain(name);
-    std::vector<Point> points = support::initial_points(d, n);
-    CDT cdt;
-    build_ours(cdt, d, points);
-    std::vector<Point>().swap(points);  // the harness's input, not the optimizer's memory
+  r.rss_lbfgs = ours([](CDT& cdt) {  // 12 steps: the ring of 7 curvature pairs is full from step 8
     CVT_2::lbfgs_optimize_2(cdt, CVT_2::parameters::number_of_iterations(12).move_ratio_bound(0));
   });
   if (with_cgal)

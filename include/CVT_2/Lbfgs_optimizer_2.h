@@ -214,17 +214,14 @@ class Lbfgs_optimizer_2 {
     std::vector<double> d;
     if (!m_history.direction(m_current.g, m_h, d)) return false;
     const unsigned threads = m_lloyd.number_of_threads();
-    std::vector<double> largest(internal::number_of_blocks(d.size()), 0.0);
-    internal::for_each_block(d.size(), threads,
-                             [&](std::size_t b, std::size_t first, std::size_t last) {
-                               double l = 0;
-                               for (std::size_t j = first; j < last; ++j)
-                                 l = std::max(l, std::abs(d[j]));
-                               largest[b] = l;
-                             });
-    // finite: the direction goes downhill
-    std::frexp(largest.empty() ? 0.0 : *std::max_element(largest.begin(), largest.end()),
-               &m_direction_exponent);
+    const double largest = internal::max_of_blocks(d.size(), threads, m_partial,
+                                                   [&](std::size_t first, std::size_t last) {
+                                                     double l = 0;
+                                                     for (std::size_t j = first; j < last; ++j)
+                                                       l = std::max(l, std::abs(d[j]));
+                                                     return l;
+                                                   });
+    std::frexp(largest, &m_direction_exponent);  // finite: the direction goes downhill
     const double scale = std::ldexp(1.0, -m_direction_exponent);
     m_direction.resize(d.size());
     internal::for_each_block(d.size(), threads,
@@ -264,13 +261,12 @@ class Lbfgs_optimizer_2 {
     m_previous_order.swap(m_order);
     const bool has_previous = m_previous_order.size() == n;
     m_position.resize(n);
-    constexpr std::size_t block = internal::vector_block;
     if (has_previous)
-      internal::run_chunks((n + block - 1) / block, m_lloyd.number_of_threads(),
-                           [&](std::size_t c) {
-                             for (std::size_t k = c * block; k < std::min(n, (c + 1) * block); ++k)
-                               m_position[m_previous_order[k]] = std::uint32_t(k);
-                           });
+      internal::for_each_block(n, m_lloyd.number_of_threads(),
+                               [&](std::size_t, std::size_t first, std::size_t last) {
+                                 for (std::size_t k = first; k < last; ++k)
+                                   m_position[m_previous_order[k]] = std::uint32_t(k);
+                               });
     m_order.resize(n);
     // The number of the k-th generator v of this evaluation, n if none; `next` is one past where
     // the one before it was in the last order.

@@ -30,17 +30,35 @@ void for_each_block(std::size_t n, unsigned threads, const Part& part) {
   });
 }
 
-// The sum of part(first, last) over the blocks of [0, n), in block order.
+// partial[b] = part(first, last) for each block b = [first, last) of [0, n).
 template <class Part>
-double sum_of_blocks(std::size_t n, unsigned threads, std::vector<double>& partial,
+void parts_of_blocks(std::size_t n, unsigned threads, std::vector<double>& partial,
                      const Part& part) {
   partial.assign(number_of_blocks(n), 0.0);
   for_each_block(n, threads, [&](std::size_t b, std::size_t first, std::size_t last) {
     partial[b] = part(first, last);
   });
+}
+
+// The sum of part(first, last) over the blocks of [0, n), in block order.
+template <class Part>
+double sum_of_blocks(std::size_t n, unsigned threads, std::vector<double>& partial,
+                     const Part& part) {
+  parts_of_blocks(n, threads, partial, part);
   double s = 0;
   for (const double v : partial) s += v;
   return s;
+}
+
+// The largest part(first, last) over the blocks of [0, n), 0 if none (a NaN part loses to a
+// number).
+template <class Part>
+double max_of_blocks(std::size_t n, unsigned threads, std::vector<double>& partial,
+                     const Part& part) {
+  parts_of_blocks(n, threads, partial, part);
+  double m = 0;
+  for (const double v : partial) m = std::max(m, v);
+  return m;
 }
 
 // The last `capacity` pairs s = x' - x, y = g' - g of an L-BFGS iteration in a ring, and the
