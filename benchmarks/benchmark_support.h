@@ -4,6 +4,7 @@
 #ifndef CVT_2_BENCHMARKS_BENCHMARK_SUPPORT_H
 #define CVT_2_BENCHMARKS_BENCHMARK_SUPPORT_H
 
+#include <CVT_2/Boundary_lipschitz_sizing_2.h>
 #include <CVT_2/Cvt_triangulation_2.h>
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/Lloyd_optimizer_2.h>
@@ -85,6 +86,25 @@ template <class NP = CVT_2::No_named_parameters>
 std::vector<Point> initial_points(const Domain& d, std::size_t n,
                                   const NP& np = CVT_2::parameters::default_values()) {
   return CVT_2::random_points_in_domain_2(d.cdt, n, np.random_seed(1));
+}
+
+using Sizing = CVT_2::Boundary_lipschitz_sizing_2<K>;
+const double lipschitz_k = 0.1;  // as lloyd_adaptive and the Fig. 10 case
+
+// μ(x) = min over boundary edges s of k d(x, s) + length(s), built from the domain alone.
+inline const Sizing& sizing(const std::string& name) {
+  static std::map<std::string, Sizing> cache;
+  auto it = cache.find(name);
+  if (it == cache.end()) it = cache.emplace(name, Sizing(domain(name).cdt, lipschitz_k)).first;
+  return it->second;
+}
+
+// Random points (seed 1) with density 1/μ², about the final spacing of a CVT of density 1/μ⁴
+// (as lloyd_adaptive starts).
+inline std::vector<Point> adaptive_initial_points(const std::string& name, std::size_t n) {
+  const Sizing mu = sizing(name);
+  const auto start_density = [mu](const Point& p) { return 1 / (mu(p) * mu(p)); };
+  return initial_points(domain(name), n, CVT_2::parameters::density(start_density));
 }
 
 // Our CDT of the domain with `points` as generators.

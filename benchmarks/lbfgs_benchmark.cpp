@@ -37,12 +37,14 @@ using support::domain;
 using support::fmt;
 using support::hexagon;
 using support::K;
+using support::lipschitz_k;
 using support::load_average;
 using support::massachusetts;
 using support::Point;
 using support::since;
+using support::Sizing;
+using support::sizing;
 using support::square;
-using Sizing = CVT_2::Boundary_lipschitz_sizing_2<K>;
 using Shipped_move = CGAL::Mesh_2::Lloyd_move_2<CDT2, CGAL::Mesh_2::Mesh_sizing_field<CDT2>>;
 using Uniform_move = CGAL::Mesh_2::Lloyd_move_2<CDT2, CGAL::Mesh_2::Uniform_sizing_field_2<CDT2>>;
 
@@ -52,7 +54,6 @@ using support::nan;  // hides ::nan of <cmath>
 
 const std::size_t lloyd_iterations[] = {20, 50, 100, 200};  // K
 constexpr int number_of_ks = 4;
-const double lipschitz_k = 0.1;           // as lloyd_adaptive and the Fig. 10 case
 const std::size_t convergence_n = 10000;  // the convergence plot's cases
 
 // A domain with a uniform density, or with the automatic k-Lipschitz sizing of its boundary.
@@ -61,14 +62,6 @@ struct Case {
   bool adaptive = false;
   std::string label() const { return adaptive ? domain + "_adaptive" : domain; }
 };
-
-// μ(x) = min over boundary edges s of k d(x, s) + length(s), built from the domain alone.
-const Sizing& sizing(const std::string& name) {
-  static std::map<std::string, Sizing> cache;
-  auto it = cache.find(name);
-  if (it == cache.end()) it = cache.emplace(name, Sizing(domain(name).cdt, lipschitz_k)).first;
-  return it->second;
-}
 
 // f(np) with the case's density as named parameters: none (uniform) or sizing_field(mu).
 template <class F>
@@ -103,11 +96,8 @@ double squared_root_mass(const Case& c) {
 // The case's random points (seed 1): uniform, or with density 1/μ² in the adaptive cases,
 // about the final spacing of a CVT of density 1/μ⁴ (as lloyd_adaptive starts).
 std::vector<Point> initial_points(const Case& c, std::size_t n) {
-  const Domain& d = domain(c.domain);
-  if (!c.adaptive) return support::initial_points(d, n);
-  const Sizing mu = sizing(c.domain);
-  const auto start_density = [mu](const Point& p) { return 1 / (mu(p) * mu(p)); };
-  return support::initial_points(d, n, CVT_2::parameters::density(start_density));
+  if (!c.adaptive) return support::initial_points(domain(c.domain), n);
+  return support::adaptive_initial_points(c.domain, n);
 }
 
 // One point of an energy history: after `evaluation` evaluations (CGAL: iterations), `seconds`

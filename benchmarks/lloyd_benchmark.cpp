@@ -5,6 +5,8 @@
 #include "benchmark_support.h"
 
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
+#include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/Sizing_field_density_2.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 
@@ -18,6 +20,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -314,7 +317,7 @@ void bm_figure10(benchmark::State& state) {
   std::vector<Point> points;
   if (!load_points(state, name, 2000, points)) return;
   const Domain& d = domain(name);
-  const CVT_2::Boundary_lipschitz_sizing_2<K> mu(d.cdt, 0.1);
+  const support::Sizing& mu = support::sizing(name);
   Figure10& f = figure10;
   for (auto _ : state) {
     double seconds = 0;
@@ -349,6 +352,147 @@ void bm_figure10(benchmark::State& state) {
   state.counters["lloyd_uniform_s"] = f.lloyd_uniform;
   state.counters["lloyd_adaptive_s"] = f.lloyd_adaptive;
   state.counters["cgal_s"] = f.cgal;
+}
+
+// An adaptive Lloyd iteration against a uniform one on the same domain and points, at equal
+// accuracy: the adaptive run goes to the 1% stop, then each free cell's move ratio is computed
+// again with an accurate quadrature of the same density.
+struct Adaptive_row {
+  std::string name;
+  std::size_t n = 0, uniform_evaluations = 0, adaptive_iterations = 0, cells = 0, over = 0;
+  double uniform_s = nan, adaptive_s = nan;  // per evaluation
+  double max_ratio = nan, accurate_max_ratio = nan, max_error = nan;
+  std::string stop;
+};
+std::vector<Adaptive_row> adaptive_rows;
+
+// The moments of triangle t (coordinates relative to x) under rho: Radon's degree-5 rule on
+// t and on its four halves, recursively where the two differ by more than the tolerances
+// (shared out by area), to depth 10.
+struct Fan_moments {
+  double mass = 0, mx = 0, my = 0;
+  void operator+=(const Fan_moments& o) { mass += o.mass, mx += o.mx, my += o.my; }
+};
+template <class Rho>
+Fan_moments radon(const std::array<double, 6>& t, const Point& x, const Rho& rho) {
+  const double area = ((t[2] - t[0]) * (t[5] - t[1]) - (t[3] - t[1]) * (t[4] - t[0])) / 2;
+  const double r1 = 0.10128650732345633880, r2 = 0.47014206410511508977;
+  const double w[3] = {0.225, 0.12593918054482715260, 0.13239415278850618074};
+  Fan_moments m;
+  const auto add = [&](double weight, double u, double v) {
+    const double wr = weight * area * rho(Point(x.x() + u, x.y() + v));
+    m.mass += wr, m.mx += wr * u, m.my += wr * v;
+  };
+  add(w[0], (t[0] + t[2] + t[4]) / 3, (t[1] + t[3] + t[5]) / 3);
+  for (int o = 0; o < 2; ++o) {
+    const double r = o == 0 ? r1 : r2, s = 1 - 2 * r;
+    for (int i = 0; i < 3; ++i) {
+      const int a = 2 * i, b = 2 * ((i + 1) % 3), c = 2 * ((i + 2) % 3);
+      add(w[1 + o], s * t[a] + r * (t[b] + t[c]), s * t[a + 1] + r * (t[b + 1] + t[c + 1]));
+    }
+  }
+  return m;
+}
+template <class Rho>
+Fan_moments accurate(const std::array<double, 6>& t, const Point& x, const Rho& rho,
+                     const Fan_moments& whole, double mass_tol, double moment_tol, int depth) {
+  const auto mid = [&](int i, int j) {
+    return std::array<double, 2>{(t[i] + t[j]) / 2, (t[i + 1] + t[j + 1]) / 2};
+  };
+  const auto ab = mid(0, 2), bc = mid(2, 4), ca = mid(4, 0);
+  const std::array<std::array<double, 6>, 4> parts{{{t[0], t[1], ab[0], ab[1], ca[0], ca[1]},
+                                                    {ab[0], ab[1], t[2], t[3], bc[0], bc[1]},
+                                                    {ca[0], ca[1], bc[0], bc[1], t[4], t[5]},
+                                                    {ab[0], ab[1], bc[0], bc[1], ca[0], ca[1]}}};
+  std::array<Fan_moments, 4> m;
+  Fan_moments sum;
+  for (int i = 0; i < 4; ++i) sum += m[i] = radon(parts[i], x, rho);
+  if (depth == 10 ||
+      (std::abs(sum.mass - whole.mass) <= mass_tol && std::abs(sum.mx - whole.mx) <= moment_tol &&
+       std::abs(sum.my - whole.my) <= moment_tol))
+    return sum;
+  Fan_moments out;
+  for (int i = 0; i < 4; ++i)
+    out += accurate(parts[i], x, rho, m[i], mass_tol / 4, moment_tol / 4, depth + 1);
+  return out;
+}
+
+// Adaptive against uniform Lloyd, both to the 1% stop from the same points (uniform ones for
+// the Fig. 10 case, density 1/μ² on earcut_dude), then the accuracy check.
+void bm_adaptive(benchmark::State& state, const std::string& name) {
+  const std::size_t n = static_cast<std::size_t>(state.range(0));
+  const bool fig10 = name == "bubble_with_hole";
+  std::vector<Point> points;
+  try {
+    points = fig10 ? support::initial_points(domain(name), n)
+                   : support::adaptive_initial_points(name, n);
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  const Domain& d = domain(name);
+  const support::Sizing& mu = support::sizing(name);
+  Adaptive_row row;
+  row.name = name;
+  row.n = n;
+  for (auto _ : state) {
+    CDT uniform, adaptive;
+    build_ours(uniform, d, points);
+    build_ours(adaptive, d, points);
+    const auto u = CVT_2::lloyd_optimize_2(uniform, CVT_2::parameters::default_values());
+    const auto a = CVT_2::lloyd_optimize_2(adaptive, CVT_2::parameters::sizing_field(mu));
+    state.SetIterationTime(u.seconds + a.seconds);
+    row.uniform_evaluations = u.number_of_evaluations;
+    row.uniform_s = u.seconds / double(u.number_of_evaluations);
+    row.adaptive_iterations = a.number_of_iterations;
+    row.adaptive_s = a.seconds / double(a.number_of_evaluations);
+    row.stop = CVT_2::to_string(a.stop_reason);
+    row.max_ratio = a.max_move_ratio;
+    // each free cell again, with Radon's rule refined until the mass and first moment change
+    // by less than 1e-8 of the cell's (the same density, restricted to the cell's disk)
+    row.accurate_max_ratio = row.max_error = 0;
+    const CVT_2::Bounded_voronoi_diagram_2<CDT> bvd(adaptive);
+    const auto density = CVT_2::make_sizing_field_density_2<K>(mu);
+    bvd.for_each_cell([&](CDT::Vertex_handle v, const auto& cell) {
+      std::vector<Point> q;
+      for (const auto& c : cell) {
+        if (c.type == std::decay_t<decltype(c)>::GENERATOR) return;  // not free
+        q.push_back(c.point);
+      }
+      const Point& x = v->point();
+      double r2 = 0, diameter2 = 0;
+      for (const Point& p : q) {
+        r2 = std::max(r2, CGAL::squared_distance(x, p));
+        for (const Point& o : q) diameter2 = std::max(diameter2, CGAL::squared_distance(p, o));
+      }
+      const auto rho = density.restrict_to_disk(x, std::sqrt(r2) * (1 + 1e-9));
+      std::vector<std::array<double, 6>> fan;
+      Fan_moments coarse, fine;
+      for (std::size_t i = 0; i < q.size(); ++i) {
+        const Point &p = q[i], &o = q[(i + 1) % q.size()];
+        fan.push_back({0, 0, p.x() - x.x(), p.y() - x.y(), o.x() - x.x(), o.y() - x.y()});
+        coarse += radon(fan.back(), x, rho);
+      }
+      double area = 0;
+      for (const auto& t : fan) area += std::abs(t[2] * t[5] - t[3] * t[4]) / 2;
+      for (const auto& t : fan) {
+        const double share = 1e-8 * std::abs(t[2] * t[5] - t[3] * t[4]) / 2 / area;
+        fine += accurate(t, x, rho, radon(t, x, rho), share * coarse.mass,
+                         share * coarse.mass * std::sqrt(r2), 0);
+      }
+      const double diameter = std::sqrt(diameter2);
+      const double ratio = std::hypot(fine.mx, fine.my) / fine.mass / diameter;
+      const double error = std::hypot(fine.mx / fine.mass - coarse.mx / coarse.mass,
+                                      fine.my / fine.mass - coarse.my / coarse.mass) /
+                           diameter;
+      row.accurate_max_ratio = std::max(row.accurate_max_ratio, ratio);
+      row.max_error = std::max(row.max_error, error);
+      row.over += ratio >= 0.01;
+      ++row.cells;
+    });
+  }
+  state.counters["adaptive_over_uniform"] = row.adaptive_s / row.uniform_s;
+  adaptive_rows.push_back(row);
 }
 
 // Peak resident memory of `work`, run in a child forked while this process is still small
@@ -514,6 +658,13 @@ int main(int argc, char* argv[]) {
             ->Iterations(n >= 1000000 ? 3 : 5)
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
+  for (const auto& [name, n] : std::vector<std::pair<std::string, long>>{
+           {"bubble_with_hole", 2000}, {"earcut_dude", 10000}, {"earcut_dude", 100000}})
+    benchmark::RegisterBenchmark(("lloyd_adaptive/" + name).c_str(), bm_adaptive, name)
+        ->Arg(n)
+        ->UseManualTime()
+        ->Iterations(1)
+        ->Unit(benchmark::kSecond);
   benchmark::RegisterBenchmark("lloyd_figure10/bubble_with_hole", bm_figure10)
       ->Iterations(1)
       ->UseManualTime()
@@ -612,6 +763,22 @@ int main(int argc, char* argv[]) {
                   100 * r.cgal_max_rise);
   }
   std::printf("\n");
+  if (!adaptive_rows.empty()) {
+    std::printf(
+        "\nAdaptive (k = 0.1, default quadrature) against uniform Lloyd, each to mr < 0.01 from "
+        "the same points; the adaptive result's move ratios again by Radon's rule refined to "
+        "1e-8\n\n"
+        "| domain | N | uniform s/evaluation | adaptive s/evaluation | adaptive / uniform | "
+        "adaptive iterations, stop | max mr: ours / accurate | cells at mr >= 1%% "
+        "(accurate) | largest centroid error / diameter |\n"
+        "|---|--:|--:|--:|--:|--:|--:|--:|--:|\n");
+    for (const Adaptive_row& r : adaptive_rows)
+      std::printf(
+          "| %s | %zu | %.5f | %.5f | **%.2f** | %zu, %s | %.5f / %.5f | %zu of %zu | %.1e |\n",
+          r.name.c_str(), r.n, r.uniform_s, r.adaptive_s, r.adaptive_s / r.uniform_s,
+          r.adaptive_iterations, r.stop.c_str(), r.max_ratio, r.accurate_max_ratio, r.over, r.cells,
+          r.max_error);
+  }
   const Figure10& f = figure10;
   if (f.it_uniform > 0) {
     std::printf(

@@ -216,9 +216,17 @@ TEST_CASE("the boundary sizing restricted to a disk equals it bit for bit in the
   STATIC_REQUIRE(CVT_2::has_restrict_to_disk_v<Sizing, K>);
   STATIC_REQUIRE(CVT_2::has_restrict_to_disk_v<decltype(rho), K>);
   STATIC_REQUIRE(!CVT_2::has_restrict_to_disk_v<Uniform, K>);
+  // restrictions evaluate in batches (a cell's quadrature points); the whole field does not,
+  // or the optimizers would evaluate it by chunks instead of restricting it
+  STATIC_REQUIRE(CVT_2::has_batch_evaluation_v<decltype(mu.restrict_to_disk(Point(), 1.0)), K>);
+  STATIC_REQUIRE(CVT_2::has_batch_evaluation_v<decltype(rho.restrict_to_disk(Point(), 1.0)), K>);
+  STATIC_REQUIRE(!CVT_2::has_batch_evaluation_v<Sizing, K>);
+  STATIC_REQUIRE(!CVT_2::has_batch_evaluation_v<decltype(rho), K>);
   std::mt19937_64 rng(5);
   const double diag = diagonal(d.cdt);
-  std::size_t wrong = 0, kept = 0, disks = 0;
+  std::size_t wrong = 0, kept = 0, disks = 0, batch_wrong = 0;
+  std::vector<Point> ys;
+  std::vector<double> values, rho_values;
   for (const Point& c : sample_points(d.cdt, 200, 23)) {
     // radii from far below to far above the local size, and 0
     for (const double r : {0.0, 1e-4 * diag, 1e-2 * diag, 0.2 * diag}) {
@@ -226,10 +234,12 @@ TEST_CASE("the boundary sizing restricted to a disk equals it bit for bit in the
       const auto local_rho = rho.restrict_to_disk(c, r);
       kept += local.number_of_segments();
       ++disks;
-      for (int j = 0; j < 20; ++j) {  // on the circle (the worst case) and inside
+      ys.clear();
+      for (std::size_t j = 0; j < 20 + disks % 2; ++j) {  // on the circle (worst) and inside
         const double a = uniform(rng, 0, 2 * CGAL_PI),
                      t = j < 5 ? 1.0 : std::sqrt(uniform(rng, 0, 1));
         const Point y(c.x() + t * r * std::cos(a), c.y() + t * r * std::sin(a));
+        ys.push_back(y);
         if (local(y) != mu(y) || local_rho(y) != rho(y)) {
           if (++wrong <= 3) {
             CAPTURE(file, k, c, r, y, local.number_of_segments());
@@ -237,10 +247,18 @@ TEST_CASE("the boundary sizing restricted to a disk equals it bit for bit in the
           }
         }
       }
+      // the batch, an odd or even number of points, gives the same bits
+      local.evaluate(ys, values);
+      local_rho.evaluate(ys, rho_values);
+      REQUIRE(values.size() == ys.size());
+      REQUIRE(rho_values.size() == ys.size());
+      for (std::size_t j = 0; j < ys.size(); ++j)
+        if (values[j] != mu(ys[j]) || rho_values[j] != rho(ys[j])) ++batch_wrong;
     }
   }
   CAPTURE(file, k, double(kept) / double(disks), mu.segments().size());
   CHECK(wrong == 0);
+  CHECK(batch_wrong == 0);
   CHECK(kept < disks * mu.segments().size() / 4);  // it does restrict
 }
 
@@ -253,20 +271,27 @@ TEST_CASE("the restricted sizing equals it bit for bit next to a segment far lon
                                       Segment(Point(-1, -0.7), Point(1, 0.7))};
   const Sizing mu(segments, 0.1, 0.01);
   std::mt19937_64 rng(3);
-  std::size_t wrong = 0;
+  std::size_t wrong = 0, batch_wrong = 0;
+  std::vector<Point> ys;
+  std::vector<double> values;
   for (int disk = 0; disk < 10000; ++disk) {  // the old margins: about 15 points wrong
     const double cx = uniform(rng, -1e-2, 1e-2), cy = 0.7 * cx + uniform(rng, 2e-3, 1e-2);
     const double r = 1e-3;
     const auto local = mu.restrict_to_disk(Point(cx, cy), r);
+    ys.clear();
     for (int j = 0; j < 100; ++j) {
       const Point y(cx + uniform(rng, -r, r) / 1.5, cy + uniform(rng, -r, r) / 1.5);
+      ys.push_back(y);
       if (local(y) != mu(y) && ++wrong <= 3) {
         CAPTURE(cx, cy, y, local(y) - mu(y));
         CHECK(local(y) == mu(y));
       }
     }
+    local.evaluate(ys, values);
+    for (std::size_t j = 0; j < ys.size(); ++j) batch_wrong += values[j] != mu(ys[j]);
   }
   CHECK(wrong == 0);
+  CHECK(batch_wrong == 0);
 }
 
 TEST_CASE("the boundary sizing is k-Lipschitz", "[density][sizing]") {

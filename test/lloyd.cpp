@@ -337,6 +337,62 @@ TEST_CASE("a density restricted to each cell's disk gives Lloyd the same bits as
   }
 }
 
+// A density whose restrictions count their calls: one by one, and by batches with their points.
+struct Call_counts {
+  std::atomic<std::size_t> single{0}, batches{0}, points{0};
+};
+template <class Rho>
+struct Counted_density {
+  template <class R>
+  struct Restriction {
+    R r;
+    Call_counts* counts;
+    double operator()(const Point& p) const {
+      ++counts->single;
+      return r(p);
+    }
+    void evaluate(const std::vector<Point>& points, std::vector<double>& values) const {
+      ++counts->batches;
+      counts->points += points.size();
+      r.evaluate(points, values);
+    }
+  };
+  Rho rho;
+  Call_counts* counts;
+  double operator()(const Point& p) const { return rho(p); }
+  auto restrict_to_disk(const Point& c, double radius) const {
+    using R = decltype(rho.restrict_to_disk(c, radius));
+    return Restriction<R>{rho.restrict_to_disk(c, radius), counts};
+  }
+};
+
+TEST_CASE("a restriction with a batch member is evaluated once a cell, for all its points",
+          "[lloyd]") {
+  Domain d;
+  load_domain(d, "bubble_with_hole.poly");
+  insert_random_points(d, 500, 6);
+  Call_counts counts;
+  const CVT_2::Boundary_lipschitz_sizing_2<K> mu(d.cdt, 0.1);
+  const auto rho = CVT_2::make_sizing_field_density_2<K>(mu);
+  const Counted_density<decltype(rho)> counted{rho, &counts};
+  STATIC_REQUIRE(CVT_2::has_restrict_to_disk_v<decltype(counted), K>);
+  STATIC_REQUIRE(!CVT_2::has_batch_evaluation_v<decltype(counted), K>);
+  CVT_2::Lloyd_optimizer_2<Cdt, std::decay_t<decltype(counted)>> lloyd(d.cdt, counted);
+  std::size_t cells = 0;
+  const auto& e = lloyd.evaluate(10);
+  lloyd.diagram().for_each_cell([&](Cdt::Vertex_handle, const auto&) { ++cells; });
+  CHECK(counts.single == 0);
+  CHECK(counts.batches == cells);
+  CHECK(counts.points >= 7 * 3 * cells);  // Radon's 7 points on each of 3 fan triangles at least
+  // the same moments as one point at a time: the whole field, without restrictions
+  Domain same;
+  load_domain(same, "bubble_with_hole.poly");
+  insert_random_points(same, 500, 6);
+  const auto whole = [&rho](const Point& p) { return rho(p); };
+  CVT_2::Lloyd_optimizer_2<Cdt, decltype(whole)> reference(same.cdt, whole);
+  CHECK(reference.evaluate(10).energy == e.energy);
+}
+
 TEST_CASE("Lloyd gives the same bits whatever the number of threads and from run to run",
           "[lloyd]") {
   // Enough generators for many chunks of cells, a domain with holes and inner constraints, and

@@ -32,6 +32,10 @@
 #include <utility>
 #include <vector>
 
+#if (defined(__SSE2__) || defined(_M_X64)) && !defined(CVT_2_NO_SIMD)
+#include <emmintrin.h>
+#endif
+
 namespace CVT_2 {
 
 /// \ingroup PkgCvt2Policies
@@ -167,6 +171,38 @@ class Boundary_lipschitz_sizing_2 {
       }
       return best ? *best : FT(std::numeric_limits<double>::quiet_NaN());
     }
+    /// The field at each of `points` into `values` (replaced), bit for bit what the call
+    /// operator gives there: each kept segment at all the points in turn, without the bounds
+    /// and their branches, which mispredict as the nearest segment changes from point to point
+    /// among a cell's quadrature points (a model of `DensityFunction_2::evaluate()`).
+    void evaluate(const std::vector<Point_2>& points, std::vector<FT>& values) const {
+      if (!is_double || m_candidates.empty()) {
+        values.clear();
+        for (const Point_2& p : points) values.push_back((*this)(p));
+        return;
+      }
+      if constexpr (is_double) {
+        // The coordinates apart, padded to pairs: the loop over the points goes two at a time.
+        const std::size_t n = points.size(), pairs = (n + 1) / 2;
+        thread_local std::vector<double> xs, ys, least;
+        xs.resize(2 * pairs);
+        ys.resize(2 * pairs);
+        for (std::size_t i = 0; i < 2 * pairs; ++i) {
+          const Point_2& p = points[std::min(i, n - 1)];
+          xs[i] = p.x(), ys[i] = p.y();
+        }
+        least.assign(2 * pairs, std::numeric_limits<double>::infinity());
+        double* l = least.data();
+        const double *x = xs.data(), *y = ys.data();
+        for (const Candidate& c : m_candidates) {
+          const Lanes s(m_data->flat[c.segment], m_data->k);
+          for (std::size_t i = 0; i < 2 * pairs; i += 2)
+            Pair::store(l + i, Pair::min(Pair::load(l + i),
+                                         flat_values(s, Pair::load(x + i), Pair::load(y + i))));
+        }
+        values.assign(least.begin(), least.begin() + n);
+      }
+    }
     /// the number of segments kept
     std::size_t number_of_segments() const { return m_candidates.size(); }
 
@@ -282,9 +318,10 @@ class Boundary_lipschitz_sizing_2 {
   using Primitive = CGAL::AABB_segment_primitive<K, Segment_3_iterator>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
 
-  // A segment as its value is computed: its ends a and b, b - a, |b - a|^2, its size.
+  // A segment as its value is computed: its ends a and b, the unit vector w along b - a (0 for
+  // a point), |b - a|, its size.
   struct Flat_segment {
-    double ax, ay, bx, by, ux, uy, length2, size;
+    double ax, ay, bx, by, wx, wy, length, size;
   };
 
   // Never moved once built: the tree's primitives point into `lifted`.
@@ -303,29 +340,108 @@ class Boundary_lipschitz_sizing_2 {
 
   static constexpr bool is_double = std::is_same<FT, double>::value;
 
-  // The value of segment i at x: all evaluations go through here, so a restriction gives the
-  // same bits as the whole tree. With double coordinates, the squared distance to the end
-  // nearer x when its projection falls outside, else the cross product squared over the squared
-  // length (CGAL divides by the supporting line's coefficients instead: other rounding), from
-  // the segment's numbers laid out flat, which the many evaluations of a cell stream through.
+  // The value of segment i at x: all evaluations of one point go through here, so a
+  // restriction gives the same bits as the whole tree; with double coordinates by
+  // flat_values(), from the segment's numbers laid out flat.
   static FT value(const Data& data, const Point_2& x, std::size_t i) {
     if constexpr (is_double) {
-      const Flat_segment& s = data.flat[i];
-      const double dx = x.x() - s.ax, dy = x.y() - s.ay, along = dx * s.ux + dy * s.uy;
-      double d2;
-      if (along <= 0) {
-        d2 = dx * dx + dy * dy;
-      } else if (along > s.length2) {
-        const double ex = x.x() - s.bx, ey = x.y() - s.by;
-        d2 = ex * ex + ey * ey;
-      } else {
-        const double cross = s.ux * dy - s.uy * dx;
-        d2 = cross * cross / s.length2;
-      }
-      return data.k * std::sqrt(d2) + s.size;
+      return flat_value(data.flat[i], data.k, x.x(), x.y());
     } else {
       return data.k * CGAL::sqrt(CGAL::squared_distance(x, data.segments[i])) + data.sizes[i];
     }
+  }
+
+  // Two doubles at once: SSE2 where there is (every x86-64), else two scalars (also with
+  // CVT_2_NO_SIMD defined, to compare them); the same operations in the same order either way.
+#if (defined(__SSE2__) || defined(_M_X64)) && !defined(CVT_2_NO_SIMD)
+  struct Pair {
+    using type = __m128d;
+    static type all(double a) { return _mm_set1_pd(a); }
+    static type load(const double* p) { return _mm_loadu_pd(p); }
+    static void store(double* p, type a) { _mm_storeu_pd(p, a); }
+    static double first(type a) { return _mm_cvtsd_f64(a); }
+    static type add(type a, type b) { return _mm_add_pd(a, b); }
+    static type sub(type a, type b) { return _mm_sub_pd(a, b); }
+    static type mul(type a, type b) { return _mm_mul_pd(a, b); }
+    static type sqrt(type a) { return _mm_sqrt_pd(a); }
+    static type min(type a, type b) { return _mm_min_pd(a, b); }
+    // c <= 0 ? a : (c > l ? b : m)
+    static type select(type c, type l, type a, type b, type m) {
+      const type before = _mm_cmple_pd(c, _mm_setzero_pd()), after = _mm_cmpgt_pd(c, l);
+      const type rest = _mm_or_pd(_mm_and_pd(after, b), _mm_andnot_pd(after, m));
+      return _mm_or_pd(_mm_and_pd(before, a), _mm_andnot_pd(before, rest));
+    }
+  };
+#else
+  struct Pair {
+    struct type {
+      double v[2];
+    };
+    template <class F>
+    static type map(F f, type a, type b) {
+      return {{f(a.v[0], b.v[0]), f(a.v[1], b.v[1])}};
+    }
+    static type all(double a) { return {{a, a}}; }
+    static type load(const double* p) { return {{p[0], p[1]}}; }
+    static void store(double* p, type a) { p[0] = a.v[0], p[1] = a.v[1]; }
+    static double first(type a) { return a.v[0]; }
+    static type add(type a, type b) {
+      return map([](double x, double y) { return x + y; }, a, b);
+    }
+    static type sub(type a, type b) {
+      return map([](double x, double y) { return x - y; }, a, b);
+    }
+    static type mul(type a, type b) {
+      return map([](double x, double y) { return x * y; }, a, b);
+    }
+    static type sqrt(type a) { return {{std::sqrt(a.v[0]), std::sqrt(a.v[1])}}; }
+    static type min(type a, type b) {
+      return map([](double x, double y) { return y < x ? y : x; }, a, b);
+    }
+    static type select(type c, type l, type a, type b, type m) {
+      type r;
+      for (int i = 0; i < 2; ++i)
+        r.v[i] = c.v[i] <= 0 ? a.v[i] : (c.v[i] > l.v[i] ? b.v[i] : m.v[i]);
+      return r;
+    }
+  };
+#endif
+
+  // A flat segment in both lanes of pairs, with k.
+  struct Lanes {
+    typename Pair::type ax, ay, bx, by, wx, wy, length, size, k;
+    Lanes(const Flat_segment& s, double k_)
+        : ax(Pair::all(s.ax)),
+          ay(Pair::all(s.ay)),
+          bx(Pair::all(s.bx)),
+          by(Pair::all(s.by)),
+          wx(Pair::all(s.wx)),
+          wy(Pair::all(s.wy)),
+          length(Pair::all(s.length)),
+          size(Pair::all(s.size)),
+          k(Pair::all(k_)) {}
+  };
+
+  // The values of s at two points (x, y) with double coordinates. Every value of the field goes
+  // through here, one point in both lanes or two, so all have the same bits: the squared
+  // distance to the end nearer x when its projection falls outside, else the cross product with
+  // the unit direction, squared (CGAL divides by the supporting line's coefficients instead:
+  // other rounding); each case computed and the right one selected, without branches or
+  // divisions, which share the divider with the square root.
+  static typename Pair::type flat_values(const Lanes& s, typename Pair::type x,
+                                         typename Pair::type y) {
+    using P = Pair;
+    const auto dx = P::sub(x, s.ax), dy = P::sub(y, s.ay);
+    const auto along = P::add(P::mul(dx, s.wx), P::mul(dy, s.wy));
+    const auto ex = P::sub(x, s.bx), ey = P::sub(y, s.by);
+    const auto cross = P::sub(P::mul(s.wx, dy), P::mul(s.wy, dx));
+    const auto to_a = P::add(P::mul(dx, dx), P::mul(dy, dy));
+    const auto to_b = P::add(P::mul(ex, ex), P::mul(ey, ey));
+    const auto d2 = P::select(along, s.length, to_a, to_b, P::mul(cross, cross));
+    return P::add(P::mul(s.k, P::sqrt(d2)), s.size);
+  }
+  static double flat_value(const Flat_segment& s, double k, double x, double y) {
+    return Pair::first(flat_values(Lanes(s, k), Pair::all(x), Pair::all(y)));
   }
 
   // The size of the numbers a value of s is computed from, |a_x| + |a_y| + |b_x - a_x| +
@@ -463,8 +579,10 @@ class Boundary_lipschitz_sizing_2 {
                                 typename K::Point_3(s.target().x(), s.target().y(), si));
       if constexpr (is_double) {
         const double ux = s.target().x() - s.source().x(), uy = s.target().y() - s.source().y();
-        data->flat.push_back({s.source().x(), s.source().y(), s.target().x(), s.target().y(), ux,
-                              uy, ux * ux + uy * uy, si});
+        const double length = std::sqrt(ux * ux + uy * uy);
+        const double wx = length > 0 ? ux / length : 0, wy = length > 0 ? uy / length : 0;
+        data->flat.push_back(
+            {s.source().x(), s.source().y(), s.target().x(), s.target().y(), wx, wy, length, si});
       }
       data->rounding = std::max(data->rounding, extent(s));
     }

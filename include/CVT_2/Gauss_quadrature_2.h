@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstddef>
+#include <iterator>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -80,8 +81,13 @@ class Gauss_quadrature_2 {
   std::size_t nodes(const Point_2& x, const PointRange& cell, std::size_t /*resolution*/,
                     std::vector<Point_2>& points, std::vector<FT>& nodes) const {
     const std::size_t before = points.size();
+    const std::size_t most = 7 * m_subdivisions * m_subdivisions * std::size(cell);
+    points.reserve(before + most);
+    nodes.reserve(nodes.size() + 3 * most);
     for_each_node(x, cell, [&](const FT& w, const FT& u, const FT& v) {
-      nodes.insert(nodes.end(), {w, u, v});
+      nodes.push_back(w);
+      nodes.push_back(u);
+      nodes.push_back(v);
       points.emplace_back(x.x() + u, x.y() + v);
     });
     return points.size() - before;

@@ -166,7 +166,8 @@ class Lbfgs_optimizer_2;
 ///         evaluated once a chunk of cells (the same bits). One that restricts itself to disks
 ///         (`restrict_to_disk()`, as the automatic sizing field) is restricted to a disk around
 ///         each cell, and the restriction is kept for the next evaluations while the cell stays
-///         in its disk: the same bits, at a few hundred bytes a generator.
+///         in its disk: the same bits, at a few hundred bytes a generator. A restriction with
+///         the batch member (the automatic sizing field's) is evaluated once a cell.
 /// \tparam Quadrature a model of `CellQuadrature_2`; by default exact formulas for a uniform
 ///         density, `Gauss_quadrature_2` otherwise.
 /// \tparam Traits a model of `BvdTraits_2` for the diagram; by default `Bvd_traits_2`.
@@ -317,6 +318,9 @@ class Lloyd_optimizer_2 {
   void reduce_chunks();
   Cell_moments_2<Kernel> moments(Vertex_handle v, const Cell_points& points,
                                  std::size_t resolution) const;
+  template <class Restriction>
+  Cell_moments_2<Kernel> moments_under(const Restriction& rho, const Point_2& x,
+                                       const Cell_points& points, std::size_t resolution) const;
   void number_generators();
   static std::string bad_moments_message(const Point_2& generator, const Cell_points& points,
                                          double mass, double energy, double first2);
@@ -562,17 +566,39 @@ Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::moments(Vertex_handle v,
         kept.y = yd;
         kept.radius = 1.25 * r;
       }
-      const internal::Checked_density<typename Kept_restriction::Restriction, Point_2> rho{
-          *kept.restriction};
-      return m_quadrature(x, points, rho, resolution);
+      return moments_under(*kept.restriction, x, points, resolution);
     } else {
-      const auto local = m_density.restrict_to_disk(x, FT(r));
-      const internal::Checked_density<decltype(local), Point_2> rho{local};
-      return m_quadrature(x, points, rho, resolution);
+      return moments_under(m_density.restrict_to_disk(x, FT(r)), x, points, resolution);
     }
   } else {
     const internal::Checked_density<Density, Point_2> rho{m_density};
     return m_quadrature(x, points, rho, resolution);
+  }
+}
+
+// The moments of the cell `points` of x under rho, a restriction of the density: the
+// restriction's values at all the cell's quadrature points at once if it can (the same bits,
+// in a loop without the branches of one point at a time), else point by point.
+template <class CDT, class Density, class Quadrature, class Traits>
+template <class Restriction>
+Cell_moments_2<typename CDT::Geom_traits>
+Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::moments_under(const Restriction& rho,
+                                                                   const Point_2& x,
+                                                                   const Cell_points& points,
+                                                                   std::size_t resolution) const {
+  if constexpr (has_batch_evaluation_v<Restriction, Kernel> &&
+                has_quadrature_nodes_v<Quadrature, Kernel>) {
+    // one cell at a time on each thread: its buffers kept from cell to cell
+    thread_local std::vector<Point_2> asked;
+    thread_local std::vector<FT> nodes, values;
+    asked.clear();
+    nodes.clear();
+    const std::size_t n = m_quadrature.nodes(x, points, resolution, asked, nodes);
+    internal::evaluate_in_batch(rho, asked, values);
+    return m_quadrature.moments(nodes.data(), values.data(), n);
+  } else {
+    return m_quadrature(x, points, internal::Checked_density<Restriction, Point_2>{rho},
+                        resolution);
   }
 }
 

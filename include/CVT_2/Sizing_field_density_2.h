@@ -15,6 +15,7 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace CVT_2 {
 
@@ -49,16 +50,19 @@ class Sizing_field_density_2 {
   /// \f$\rho(p) = 1/\mu(p)^4\f$.
   /// \throws Domain_error if \f$\mu(p)\f$ is not positive and finite, or so large or small that
   ///         \f$1/\mu^4\f$ leaves the range of `double`; the message gives `p` and \f$\mu(p)\f$.
-  FT operator()(const Point_2& p) const {
-    const FT mu = m_sizing(p);
-    if (!(mu > 0) || !std::isfinite(CGAL::to_double(mu)))
-      throw error(p, mu, "it must be positive and finite");
-    const FT mu2 = mu * mu;
-    const FT rho = FT(1) / (mu2 * mu2);
-    // 1/mu^4 under- or overflows for mu beyond about 1e77 or below 1e-77.
-    const double r = CGAL::to_double(rho);
-    if (!(r > 0) || !std::isfinite(r)) throw error(p, mu, "1/size^4 leaves the range of double");
-    return rho;
+  FT operator()(const Point_2& p) const { return density(p, m_sizing(p)); }
+
+  /// \f$1/\mu^4\f$ at each of `points` into `values` (replaced), from the sizing field's own
+  /// batch evaluation, bit for bit what the call operator gives; only if `Sizing` has one (a
+  /// restriction of `Boundary_lipschitz_sizing_2` does). The same checks.
+  template <class S = Sizing, std::enable_if_t<has_batch_evaluation_v<S, K>, int> = 0>
+  void evaluate(const std::vector<Point_2>& points, std::vector<FT>& values) const {
+    m_sizing.evaluate(points, values);
+    if (values.size() != points.size())
+      throw Domain_error("the sizing field's batch evaluation gave " +
+                         std::to_string(values.size()) + " values for " +
+                         std::to_string(points.size()) + " points");
+    for (std::size_t i = 0; i < points.size(); ++i) values[i] = density(points[i], values[i]);
   }
 
   /// The density of the sizing field's restriction to the disk (see
@@ -72,6 +76,18 @@ class Sizing_field_density_2 {
   const Sizing& sizing() const { return m_sizing; }  ///< the sizing field \f$\mu\f$
 
  private:
+  // 1/mu^4, mu the field at p, checked
+  static FT density(const Point_2& p, const FT& mu) {
+    if (!(mu > 0) || !std::isfinite(CGAL::to_double(mu)))
+      throw error(p, mu, "it must be positive and finite");
+    const FT mu2 = mu * mu;
+    const FT rho = FT(1) / (mu2 * mu2);
+    // 1/mu^4 under- or overflows for mu beyond about 1e77 or below 1e-77.
+    const double r = CGAL::to_double(rho);
+    if (!(r > 0) || !std::isfinite(r)) throw error(p, mu, "1/size^4 leaves the range of double");
+    return rho;
+  }
+
   static Domain_error error(const Point_2& p, const FT& mu, const char* why) {
     return Domain_error("the sizing field is " + internal::number_to_string(mu) + " at " +
                         internal::to_string(p) + ": " + why);

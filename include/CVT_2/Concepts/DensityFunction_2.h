@@ -37,7 +37,9 @@ class DensityFunction_2 {
   /// `CVT_2::has_restrict_to_disk` says it exists; the quadrature then evaluates the
   /// restriction. `CVT_2::Boundary_lipschitz_sizing_2` (through
   /// `CVT_2::Sizing_field_density_2`) provides one: near a point only a few boundary segments
-  /// can be the nearest.
+  /// can be the nearest. If the restriction has the batch member `evaluate()` and the
+  /// quadrature has `nodes()`, the optimizer asks it for all the cell's quadrature points in
+  /// one call (the same bits).
   Restriction restrict_to_disk(const Point_2& center, const FT& radius) const;
 
   /// Optional: the densities at many points at once, `values[i]` = \f$\rho\f$(`points[i]`), for

@@ -32,6 +32,12 @@ class SizingField_2 {
   /// `radius` of `center`, and cheaper there; `CVT_2::Sizing_field_density_2` then offers the
   /// same for its density (see `DensityFunction_2::restrict_to_disk()`).
   Restriction restrict_to_disk(const Point_2& center, const FT& radius) const;
+
+  /// Optional: the sizes at many points at once, `values[i]` = \f$\mu\f$(`points[i]`), bit for
+  /// bit; `CVT_2::Sizing_field_density_2` then offers the same for its density (see
+  /// `DensityFunction_2::evaluate()`). The restrictions of `CVT_2::Boundary_lipschitz_sizing_2`
+  /// have it: the optimizers call it once a cell, for all its quadrature points.
+  void evaluate(const std::vector<Point_2>& points, std::vector<FT>& values) const;
 };
 #endif  // DOXYGEN_RUNNING
 
