@@ -439,8 +439,14 @@ void bm_adaptive(benchmark::State& state, const std::string& name) {
     CDT uniform, adaptive;
     build_ours(uniform, d, points);
     build_ours(adaptive, d, points);
-    const auto u = CVT_2::lloyd_optimize_2(uniform, CVT_2::parameters::default_values());
-    const auto a = CVT_2::lloyd_optimize_2(adaptive, CVT_2::parameters::sizing_field(mu));
+    CVT_2::Optimization_result u, a;
+    try {
+      u = CVT_2::lloyd_optimize_2(uniform, CVT_2::parameters::default_values());
+      a = CVT_2::lloyd_optimize_2(adaptive, CVT_2::parameters::sizing_field(mu));
+    } catch (const std::exception& e) {
+      state.SkipWithError(e.what());
+      return;
+    }
     state.SetIterationTime(u.seconds + a.seconds);
     row.uniform_evaluations = u.number_of_evaluations;
     row.uniform_s = u.seconds / double(u.number_of_evaluations);

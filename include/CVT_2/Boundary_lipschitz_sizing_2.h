@@ -172,17 +172,17 @@ class Boundary_lipschitz_sizing_2 {
       return best ? *best : FT(std::numeric_limits<double>::quiet_NaN());
     }
     /// The field at each of `points` into `values` (replaced), bit for bit what the call
-    /// operator gives there: each kept segment at all the points in turn, without the bounds
-    /// and their branches, which mispredict as the nearest segment changes from point to point
-    /// among a cell's quadrature points (a model of `DensityFunction_2::evaluate()`).
+    /// operator gives at finite points: each kept segment at all the points in turn, without
+    /// the bounds and their branches, which mispredict as the nearest segment changes from
+    /// point to point among a cell's quadrature points (see `SizingField_2::evaluate()`).
     void evaluate(const std::vector<Point_2>& points, std::vector<FT>& values) const {
-      if (!is_double || m_candidates.empty()) {
+      if constexpr (!is_double) {
         values.clear();
         for (const Point_2& p : points) values.push_back((*this)(p));
-        return;
-      }
-      if constexpr (is_double) {
-        // The coordinates apart, padded to pairs: the loop over the points goes two at a time.
+      } else if (m_candidates.empty()) {
+        values.assign(points.size(), std::numeric_limits<double>::quiet_NaN());
+      } else {
+        // two points at a time: the coordinates apart, the last repeated to an even count
         const std::size_t n = points.size(), pairs = (n + 1) / 2;
         thread_local std::vector<double> xs, ys, least;
         xs.resize(2 * pairs);
@@ -352,7 +352,8 @@ class Boundary_lipschitz_sizing_2 {
   }
 
   // Two doubles at once: SSE2 where there is (every x86-64), else two scalars (also with
-  // CVT_2_NO_SIMD defined, to compare them); the same operations in the same order either way.
+  // CVT_2_NO_SIMD defined in every translation unit, to compare them); the same operations in
+  // the same order either way, so the same bits for finite values.
 #if (defined(__SSE2__) || defined(_M_X64)) && !defined(CVT_2_NO_SIMD)
   struct Pair {
     using type = __m128d;
@@ -364,7 +365,7 @@ class Boundary_lipschitz_sizing_2 {
     static type sub(type a, type b) { return _mm_sub_pd(a, b); }
     static type mul(type a, type b) { return _mm_mul_pd(a, b); }
     static type sqrt(type a) { return _mm_sqrt_pd(a); }
-    static type min(type a, type b) { return _mm_min_pd(a, b); }
+    static type min(type a, type b) { return _mm_min_pd(a, b); }  // b if either is NaN
     // c <= 0 ? a : (c > l ? b : m)
     static type select(type c, type l, type a, type b, type m) {
       const type before = _mm_cmple_pd(c, _mm_setzero_pd()), after = _mm_cmpgt_pd(c, l);
@@ -395,8 +396,8 @@ class Boundary_lipschitz_sizing_2 {
       return map([](double x, double y) { return x * y; }, a, b);
     }
     static type sqrt(type a) { return {{std::sqrt(a.v[0]), std::sqrt(a.v[1])}}; }
-    static type min(type a, type b) {
-      return map([](double x, double y) { return y < x ? y : x; }, a, b);
+    static type min(type a, type b) {  // as minpd: b if either is NaN
+      return map([](double x, double y) { return x < y ? x : y; }, a, b);
     }
     static type select(type c, type l, type a, type b, type m) {
       type r;
@@ -410,7 +411,7 @@ class Boundary_lipschitz_sizing_2 {
   // A flat segment in both lanes of pairs, with k.
   struct Lanes {
     typename Pair::type ax, ay, bx, by, wx, wy, length, size, k;
-    Lanes(const Flat_segment& s, double k_)
+    Lanes(const Flat_segment& s, double lipschitz)
         : ax(Pair::all(s.ax)),
           ay(Pair::all(s.ay)),
           bx(Pair::all(s.bx)),
@@ -419,7 +420,7 @@ class Boundary_lipschitz_sizing_2 {
           wy(Pair::all(s.wy)),
           length(Pair::all(s.length)),
           size(Pair::all(s.size)),
-          k(Pair::all(k_)) {}
+          k(Pair::all(lipschitz)) {}
   };
 
   // The values of s at two points (x, y) with double coordinates. Every value of the field goes
@@ -579,7 +580,7 @@ class Boundary_lipschitz_sizing_2 {
                                 typename K::Point_3(s.target().x(), s.target().y(), si));
       if constexpr (is_double) {
         const double ux = s.target().x() - s.source().x(), uy = s.target().y() - s.source().y();
-        const double length = std::sqrt(ux * ux + uy * uy);
+        const double length = std::hypot(ux, uy);
         const double wx = length > 0 ? ux / length : 0, wy = length > 0 ? uy / length : 0;
         data->flat.push_back(
             {s.source().x(), s.source().y(), s.target().x(), s.target().y(), wx, wy, length, si});

@@ -6,6 +6,7 @@
 #include <CVT_2/Cell_moments_2.h>
 #include <CVT_2/internal/polygon_moments.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <iterator>
@@ -81,9 +82,13 @@ class Gauss_quadrature_2 {
   std::size_t nodes(const Point_2& x, const PointRange& cell, std::size_t /*resolution*/,
                     std::vector<Point_2>& points, std::vector<FT>& nodes) const {
     const std::size_t before = points.size();
-    const std::size_t most = 7 * m_subdivisions * m_subdivisions * std::size(cell);
-    points.reserve(before + most);
-    nodes.reserve(nodes.size() + 3 * most);
+    // room for this cell, growing geometrically: a chunk lists many cells in the same vectors
+    const std::size_t most = 7 * m_subdivisions * m_subdivisions *
+                             std::size_t(std::distance(std::begin(cell), std::end(cell)));
+    if (points.capacity() < before + most)
+      points.reserve(std::max(before + most, 2 * points.capacity()));
+    if (nodes.capacity() < nodes.size() + 3 * most)
+      nodes.reserve(std::max(nodes.size() + 3 * most, 2 * nodes.capacity()));
     for_each_node(x, cell, [&](const FT& w, const FT& u, const FT& v) {
       nodes.push_back(w);
       nodes.push_back(u);

@@ -588,7 +588,8 @@ Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::moments_under(const Restric
                                                                    std::size_t resolution) const {
   if constexpr (has_batch_evaluation_v<Restriction, Kernel> &&
                 has_quadrature_nodes_v<Quadrature, Kernel>) {
-    // one cell at a time on each thread: its buffers kept from cell to cell
+    // one cell at a time on each thread: its buffers kept from cell to cell (a restriction must
+    // not evaluate cells itself, as no density does)
     thread_local std::vector<Point_2> asked;
     thread_local std::vector<FT> nodes, values;
     asked.clear();

@@ -36,7 +36,9 @@ class SizingField_2 {
   /// Optional: the sizes at many points at once, `values[i]` = \f$\mu\f$(`points[i]`), bit for
   /// bit; `CVT_2::Sizing_field_density_2` then offers the same for its density (see
   /// `DensityFunction_2::evaluate()`). The restrictions of `CVT_2::Boundary_lipschitz_sizing_2`
-  /// have it: the optimizers call it once a cell, for all its quadrature points.
+  /// have it: the optimizers call it once a cell, for all its quadrature points. A sizing field
+  /// with this member makes its density a batch density, evaluated by chunks of cells, whose
+  /// `restrict_to_disk()` the optimizers then do not use.
   void evaluate(const std::vector<Point_2>& points, std::vector<FT>& values) const;
 };
 #endif  // DOXYGEN_RUNNING
