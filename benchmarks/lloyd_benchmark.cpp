@@ -6,6 +6,7 @@
 
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/Gauss_quadrature_2.h>
 #include <CVT_2/Sizing_field_density_2.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
@@ -359,40 +360,29 @@ void bm_figure10(benchmark::State& state) {
 // again with an accurate quadrature of the same density.
 struct Adaptive_row {
   std::string name;
-  std::size_t n = 0, uniform_evaluations = 0, adaptive_iterations = 0, cells = 0, over = 0;
+  std::size_t n = 0, adaptive_iterations = 0, cells = 0, over = 0;
   double uniform_s = nan, adaptive_s = nan;  // per evaluation
   double max_ratio = nan, accurate_max_ratio = nan, max_error = nan;
   std::string stop;
 };
 std::vector<Adaptive_row> adaptive_rows;
 
-// The moments of triangle t (coordinates relative to x) under rho: Radon's degree-5 rule on
-// t and on its four halves, recursively where the two differ by more than the tolerances
-// (shared out by area), to depth 10.
 struct Fan_moments {
   double mass = 0, mx = 0, my = 0;
   void operator+=(const Fan_moments& o) { mass += o.mass, mx += o.mx, my += o.my; }
 };
+// Radon's rule on triangle t (coordinates relative to x): the default rule, whose fan from a
+// corner of t is t itself, its first moment moved from that corner to x.
 template <class Rho>
 Fan_moments radon(const std::array<double, 6>& t, const Point& x, const Rho& rho) {
-  const double area = ((t[2] - t[0]) * (t[5] - t[1]) - (t[3] - t[1]) * (t[4] - t[0])) / 2;
-  const double r1 = 0.10128650732345633880, r2 = 0.47014206410511508977;
-  const double w[3] = {0.225, 0.12593918054482715260, 0.13239415278850618074};
-  Fan_moments m;
-  const auto add = [&](double weight, double u, double v) {
-    const double wr = weight * area * rho(Point(x.x() + u, x.y() + v));
-    m.mass += wr, m.mx += wr * u, m.my += wr * v;
-  };
-  add(w[0], (t[0] + t[2] + t[4]) / 3, (t[1] + t[3] + t[5]) / 3);
-  for (int o = 0; o < 2; ++o) {
-    const double r = o == 0 ? r1 : r2, s = 1 - 2 * r;
-    for (int i = 0; i < 3; ++i) {
-      const int a = 2 * i, b = 2 * ((i + 1) % 3), c = 2 * ((i + 2) % 3);
-      add(w[1 + o], s * t[a] + r * (t[b] + t[c]), s * t[a + 1] + r * (t[b + 1] + t[c + 1]));
-    }
-  }
-  return m;
+  const Point a(x.x() + t[0], x.y() + t[1]);
+  const std::array<Point, 3> corners{a, Point(x.x() + t[2], x.y() + t[3]),
+                                     Point(x.x() + t[4], x.y() + t[5])};
+  const auto m = CVT_2::Gauss_quadrature_2<K>()(a, corners, rho, 0);
+  return {m.mass, m.first_moment.x() + m.mass * t[0], m.first_moment.y() + m.mass * t[1]};
 }
+// The moments of t under rho: Radon's rule on t and on its four halves, recursively where the
+// two differ by more than the tolerances (shared out by area), to depth 10.
 template <class Rho>
 Fan_moments accurate(const std::array<double, 6>& t, const Point& x, const Rho& rho,
                      const Fan_moments& whole, double mass_tol, double moment_tol, int depth) {
@@ -448,7 +438,6 @@ void bm_adaptive(benchmark::State& state, const std::string& name) {
       return;
     }
     state.SetIterationTime(u.seconds + a.seconds);
-    row.uniform_evaluations = u.number_of_evaluations;
     row.uniform_s = u.seconds / double(u.number_of_evaluations);
     row.adaptive_iterations = a.number_of_iterations;
     row.adaptive_s = a.seconds / double(a.number_of_evaluations);
