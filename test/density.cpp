@@ -171,6 +171,42 @@ TEST_CASE("a sizing field not positive and finite throws Domain_error naming poi
   CHECK_NOTHROW(shifted(1e70)(p));
 }
 
+// A sizing field with a batch member: 1 + x, but `bad` at one point.
+struct Sizing_with_one_bad_value {
+  double bad;
+  Point where;
+  double operator()(const Point& x) const { return x == where ? bad : 1 + x.x(); }
+  void evaluate(const std::vector<Point>& points, std::vector<double>& values) const {
+    values.clear();
+    for (const Point& x : points) values.push_back((*this)(x));
+  }
+};
+
+TEST_CASE("a sizing field's batch is checked as one point is, a bad value anywhere in it",
+          "[density]") {
+  STATIC_REQUIRE(CVT_2::has_batch_evaluation_v<Sizing_with_one_bad_value, K>);
+  for (const std::size_t n : {1u, 6u, 7u}) {  // one, even, odd: the last pair half repeated
+    std::vector<Point> points;
+    for (std::size_t i = 0; i < n; ++i) points.emplace_back(0.125 * double(i), 2.0);
+    std::vector<double> values;
+    const auto good = CVT_2::make_sizing_field_density_2<K>(Sizing_with_one_bad_value{1, Point()});
+    good.evaluate(points, values);
+    REQUIRE(values.size() == n);
+    for (std::size_t i = 0; i < n; ++i) CHECK(values[i] == good(points[i]));
+    for (const double bad :
+         {0.0, -0.0, -0.75, not_a_number, infinity, -infinity, 1e-80, 1e80, 1e-310}) {
+      for (std::size_t i = 0; i < n; ++i) {
+        CAPTURE(n, bad, i);
+        const auto rho =
+            CVT_2::make_sizing_field_density_2<K>(Sizing_with_one_bad_value{bad, points[i]});
+        const std::string one = message_of([&] { rho(points[i]); });
+        REQUIRE_THAT(one, Catch::Contains("(0"));
+        CHECK(message_of([&] { rho.evaluate(points, values); }) == one);
+      }
+    }
+  }
+}
+
 TEST_CASE("the boundary sizing equals a brute-force minimum over all boundary segments",
           "[density][sizing]") {
   const std::string file = GENERATE(as<std::string>{}, "earcut_dude.poly",
@@ -252,6 +288,17 @@ TEST_CASE("the boundary sizing restricted to a disk equals it bit for bit in the
       local_rho.evaluate(ys, rho_values);
       REQUIRE(values.size() == ys.size());
       REQUIRE(rho_values.size() == ys.size());
+      for (std::size_t j = 0; j < ys.size(); ++j)
+        if (values[j] != mu(ys[j]) || rho_values[j] != rho(ys[j])) ++batch_wrong;
+      // and a cluster inside the disk, as a cell's quadrature points are, where the batch
+      // skips the segments that cannot give the least value at any of them
+      const double a = uniform(rng, 0, 2 * CGAL_PI), t = 0.8 * uniform(rng, 0, 1);
+      const Point q(c.x() + t * r * std::cos(a), c.y() + t * r * std::sin(a));
+      ys.clear();
+      for (std::size_t j = 0; j < 41 + disks % 2; ++j)
+        ys.emplace_back(q.x() + uniform(rng, -r, r) / 8, q.y() + uniform(rng, -r, r) / 8);
+      local.evaluate(ys, values);
+      local_rho.evaluate(ys, rho_values);
       for (std::size_t j = 0; j < ys.size(); ++j)
         if (values[j] != mu(ys[j]) || rho_values[j] != rho(ys[j])) ++batch_wrong;
     }

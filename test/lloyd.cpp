@@ -430,6 +430,33 @@ TEST_CASE("Lloyd gives the same bits whatever the number of threads and from run
   }
 }
 
+TEST_CASE("an adaptive Lloyd on a few thousand generators gives the same bits on 1 and 2 threads",
+          "[lloyd]") {
+  // Cells under a quadrature rule come in smaller chunks than under exact formulas: a few
+  // thousand generators already make several, run on two threads.
+  std::vector<std::vector<Point>> finals;
+  std::vector<double> energies;
+  for (const int threads : {1, 2}) {
+    Domain d;
+    load_domain(d, "bubble_with_hole.poly");
+    insert_random_points(d, 2500, 6);
+    REQUIRE(CVT_2::internal::Face_chunks<Cdt>(d.cdt).size() < 4);  // not for exact formulas
+    REQUIRE(CVT_2::internal::Face_chunks<Cdt>(d.cdt, 1024).size() >= 4);
+    const CVT_2::Boundary_lipschitz_sizing_2<K> mu(d.cdt, 0.1);
+    const auto r = CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::sizing_field(mu)
+                                                      .number_of_iterations(5)
+                                                      .move_ratio_bound(0)
+                                                      .number_of_threads(threads));
+    energies.push_back(r.energy);
+    std::vector<Point> points;
+    for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v)
+      points.push_back(v->point());
+    finals.push_back(points);
+  }
+  CHECK(energies[1] == energies[0]);
+  CHECK(finals[1] == finals[0]);
+}
+
 TEST_CASE("lloyd_optimize_2 takes number_of_threads and gives the same result with any",
           "[lloyd]") {
   std::vector<std::vector<double>> histories;
@@ -513,8 +540,8 @@ TEST_CASE("a density evaluated in batches gives the same bits as point by point"
         if (threads < 0) {
           CHECK(batches == 0);
         } else {
-          // One batch a chunk of 4096 faces an evaluation.
-          const std::size_t chunks = CVT_2::internal::Face_chunks<Cdt>(d.cdt).size();
+          // One batch a chunk of faces an evaluation: 1024 faces under a quadrature rule.
+          const std::size_t chunks = CVT_2::internal::Face_chunks<Cdt>(d.cdt, 1024).size();
           CHECK(batches == chunks * r.number_of_evaluations);
         }
         check_invariants(d.cdt, marks, 50);

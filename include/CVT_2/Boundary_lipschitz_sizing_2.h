@@ -12,6 +12,7 @@
 #include <CGAL/squared_distance_2.h>
 #include <CVT_2/Concepts/BvdFaceBase_2.h>
 #include <CVT_2/exceptions.h>
+#include <CVT_2/internal/double_pair.h>
 #include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/valid_point.h>
 #include <CVT_2/mark_domain_2.h>
@@ -31,10 +32,6 @@
 #include <type_traits>
 #include <utility>
 #include <vector>
-
-#if (defined(__SSE2__) || defined(_M_X64)) && !defined(CVT_2_NO_SIMD)
-#include <emmintrin.h>
-#endif
 
 namespace CVT_2 {
 
@@ -173,8 +170,10 @@ class Boundary_lipschitz_sizing_2 {
     }
     /// The field at each of `points` into `values` (replaced), bit for bit what the call
     /// operator gives at finite points: each kept segment at all the points in turn, without
-    /// the bounds and their branches, which mispredict as the nearest segment changes from
-    /// point to point among a cell's quadrature points (see `SizingField_2::evaluate()`).
+    /// the call operator's bounds and their branches, which mispredict as the nearest segment
+    /// changes from point to point among a cell's quadrature points (see
+    /// `SizingField_2::evaluate()`). The same bounds skip whole segments instead: one that
+    /// cannot beat the least value found at any of the points.
     void evaluate(const std::vector<Point_2>& points, std::vector<FT>& values) const {
       if constexpr (!is_double) {
         values.clear();
@@ -183,22 +182,38 @@ class Boundary_lipschitz_sizing_2 {
         values.assign(points.size(), std::numeric_limits<double>::quiet_NaN());
       } else {
         // two points at a time: the coordinates apart, the last repeated to an even count
-        const std::size_t n = points.size(), pairs = (n + 1) / 2;
+        const std::size_t n = points.size(), count = n + n % 2;
         thread_local std::vector<double> xs, ys, least;
-        xs.resize(2 * pairs);
-        ys.resize(2 * pairs);
-        for (std::size_t i = 0; i < 2 * pairs; ++i) {
+        xs.resize(count);
+        ys.resize(count);
+        double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+        for (std::size_t i = 0; i < count; ++i) {
           const Point_2& p = points[std::min(i, n - 1)];
           xs[i] = p.x(), ys[i] = p.y();
+          x0 = std::min(x0, xs[i]), x1 = std::max(x1, xs[i]);
+          y0 = std::min(y0, ys[i]), y1 = std::max(y1, ys[i]);
         }
-        least.assign(2 * pairs, std::numeric_limits<double>::infinity());
-        double* l = least.data();
-        const double *x = xs.data(), *y = ys.data();
+        // the points' box about the center, and k times the distance to its farthest corner
+        x0 -= m_cx, x1 -= m_cx, y0 -= m_cy, y1 -= m_cy;
+        const double fx = std::max(-x0, x1), fy = std::max(-y0, y1);
+        const double reach = m_k * std::sqrt(fx * fx + fy * fy);
+        least.assign(count, std::numeric_limits<double>::infinity());
+        const Points batch{xs.data(), ys.data(), least.data(), count};
+        double most = std::numeric_limits<double>::infinity();  // the largest least value
         for (const Candidate& c : m_candidates) {
-          const Lanes s(m_data->flat[c.segment], m_data->k);
-          for (std::size_t i = 0; i < 2 * pairs; i += 2)
-            Pair::store(l + i, Pair::min(Pair::load(l + i),
-                                         flat_values(s, Pair::load(x + i), Pair::load(y + i))));
+          // The call operator's bounds with what holds at all the points: the farthest
+          // reach and the largest least value (bound, with its margin for rounding).
+          const double bound =
+              most + 1e-12 * (most + c.at_center + reach + m_scale) + m_data->rounding;
+          if (c.at_center - reach > bound) break;  // and so would every later segment
+          const double low_on_box = c.at_center + std::min(c.slope_x * x0, c.slope_x * x1) +
+                                    std::min(c.slope_y * y0, c.slope_y * y1) -
+                                    c.slope_error * reach;
+          if (low_on_box > bound) continue;
+          if (most < std::numeric_limits<double>::infinity() &&
+              !beats_somewhere(c, batch, bound - most, reach))
+            continue;
+          most = lower_least(c, batch);
         }
         values.assign(least.begin(), least.begin() + n);
       }
@@ -227,6 +242,37 @@ class Boundary_lipschitz_sizing_2 {
         return at_center < o.at_center || (at_center == o.at_center && segment < o.segment);
       }
     };
+    // A batch's points and their least values so far, `count` (even) of each.
+    struct Points {
+      const double *x, *y;
+      double* least;
+      std::size_t count;
+    };
+    // Whether the slope bound of c (its value at x is at least v + k g.(x - c), less the
+    // rounding of g) falls within `margin` of the least value at one of the points at least.
+    bool beats_somewhere(const Candidate& c, const Points& p, double margin, double reach) const {
+      const auto gx = Pair::all(c.slope_x), gy = Pair::all(c.slope_y);
+      auto low = Pair::all(std::numeric_limits<double>::infinity());
+      for (std::size_t i = 0; i < p.count; i += 2) {
+        const auto slope =
+            Pair::add(Pair::mul(gx, Pair::load(p.x + i)), Pair::mul(gy, Pair::load(p.y + i)));
+        low = Pair::min(low, Pair::sub(slope, Pair::load(p.least + i)));
+      }
+      return internal::least_lane(low) <=
+             margin - c.at_center + c.slope_x * m_cx + c.slope_y * m_cy + c.slope_error * reach;
+    }
+    // The least values lowered by c's, all computed by flat_values(); returns the largest.
+    double lower_least(const Candidate& c, const Points& p) const {
+      const Lanes s(m_data->flat[c.segment], m_data->k);
+      auto top = Pair::all(-std::numeric_limits<double>::infinity());
+      for (std::size_t i = 0; i < p.count; i += 2) {
+        const auto v = Pair::min(Pair::load(p.least + i),
+                                 flat_values(s, Pair::load(p.x + i), Pair::load(p.y + i)));
+        Pair::store(p.least + i, v);
+        top = Pair::max(top, v);
+      }
+      return internal::greatest_lane(top);
+    }
     void add(double at_center, std::size_t i) {
       Candidate c{at_center, 0, 0, 1, i};
       const auto [px, py, extent] = nearest_point(*m_data, m_cx, m_cy, i);
@@ -351,62 +397,7 @@ class Boundary_lipschitz_sizing_2 {
     }
   }
 
-  // Two doubles at once: SSE2 where there is (every x86-64), else two scalars (also with
-  // CVT_2_NO_SIMD defined in every translation unit, to compare them); the same operations in
-  // the same order either way, so the same bits for finite values.
-#if (defined(__SSE2__) || defined(_M_X64)) && !defined(CVT_2_NO_SIMD)
-  struct Pair {
-    using type = __m128d;
-    static type all(double a) { return _mm_set1_pd(a); }
-    static type load(const double* p) { return _mm_loadu_pd(p); }
-    static void store(double* p, type a) { _mm_storeu_pd(p, a); }
-    static double first(type a) { return _mm_cvtsd_f64(a); }
-    static type add(type a, type b) { return _mm_add_pd(a, b); }
-    static type sub(type a, type b) { return _mm_sub_pd(a, b); }
-    static type mul(type a, type b) { return _mm_mul_pd(a, b); }
-    static type sqrt(type a) { return _mm_sqrt_pd(a); }
-    static type min(type a, type b) { return _mm_min_pd(a, b); }  // b if either is NaN
-    // c <= 0 ? a : (c > l ? b : m)
-    static type select(type c, type l, type a, type b, type m) {
-      const type before = _mm_cmple_pd(c, _mm_setzero_pd()), after = _mm_cmpgt_pd(c, l);
-      const type rest = _mm_or_pd(_mm_and_pd(after, b), _mm_andnot_pd(after, m));
-      return _mm_or_pd(_mm_and_pd(before, a), _mm_andnot_pd(before, rest));
-    }
-  };
-#else
-  struct Pair {
-    struct type {
-      double v[2];
-    };
-    template <class F>
-    static type map(F f, type a, type b) {
-      return {{f(a.v[0], b.v[0]), f(a.v[1], b.v[1])}};
-    }
-    static type all(double a) { return {{a, a}}; }
-    static type load(const double* p) { return {{p[0], p[1]}}; }
-    static void store(double* p, type a) { p[0] = a.v[0], p[1] = a.v[1]; }
-    static double first(type a) { return a.v[0]; }
-    static type add(type a, type b) {
-      return map([](double x, double y) { return x + y; }, a, b);
-    }
-    static type sub(type a, type b) {
-      return map([](double x, double y) { return x - y; }, a, b);
-    }
-    static type mul(type a, type b) {
-      return map([](double x, double y) { return x * y; }, a, b);
-    }
-    static type sqrt(type a) { return {{std::sqrt(a.v[0]), std::sqrt(a.v[1])}}; }
-    static type min(type a, type b) {  // as minpd: b if either is NaN
-      return map([](double x, double y) { return x < y ? x : y; }, a, b);
-    }
-    static type select(type c, type l, type a, type b, type m) {
-      type r;
-      for (int i = 0; i < 2; ++i)
-        r.v[i] = c.v[i] <= 0 ? a.v[i] : (c.v[i] > l.v[i] ? b.v[i] : m.v[i]);
-      return r;
-    }
-  };
-#endif
+  using Pair = internal::Double_pair;
 
   // A flat segment in both lanes of pairs, with k.
   struct Lanes {

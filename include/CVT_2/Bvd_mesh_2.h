@@ -270,7 +270,7 @@ void Bvd_mesh_2<Diagram>::number_cells_and_circumcenters(
   chunks.for_each(
       [&](std::size_t c, auto first, auto last) {
         std::size_t cells = 0;
-        centers[c].reserve(internal::Face_chunks<Triangulation>::chunk_size);
+        centers[c].reserve(chunks.chunk_size());
         auto ahead = first;  // its vertices fetched
         for (int i = 0; i < 8 && ahead != last; ++i) ++ahead;
         for (auto f = first; f != last; ++f) {

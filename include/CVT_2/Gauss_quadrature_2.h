@@ -81,20 +81,23 @@ class Gauss_quadrature_2 {
   template <class PointRange>
   std::size_t nodes(const Point_2& x, const PointRange& cell, std::size_t /*resolution*/,
                     std::vector<Point_2>& points, std::vector<FT>& nodes) const {
-    const std::size_t before = points.size();
-    // room for this cell, growing geometrically: a chunk lists many cells in the same vectors
+    const std::size_t before = points.size(), before_nodes = nodes.size();
+    // room for this cell (resize grows geometrically: a chunk lists many cells in the same
+    // vectors), trimmed to what the rule wrote
     const std::size_t most = 7 * m_subdivisions * m_subdivisions *
                              std::size_t(std::distance(std::begin(cell), std::end(cell)));
-    if (points.capacity() < before + most)
-      points.reserve(std::max(before + most, 2 * points.capacity()));
-    if (nodes.capacity() < nodes.size() + 3 * most)
-      nodes.reserve(std::max(nodes.size() + 3 * most, 2 * nodes.capacity()));
+    points.resize(before + most);
+    nodes.resize(before_nodes + 3 * most);
+    Point_2* point = points.data() + before;
+    FT* node = nodes.data() + before_nodes;
     for_each_node(x, cell, [&](const FT& w, const FT& u, const FT& v) {
-      nodes.push_back(w);
-      nodes.push_back(u);
-      nodes.push_back(v);
-      points.emplace_back(x.x() + u, x.y() + v);
+      *node++ = w;
+      *node++ = u;
+      *node++ = v;
+      *point++ = Point_2(x.x() + u, x.y() + v);
     });
+    points.resize(std::size_t(point - points.data()));
+    nodes.resize(std::size_t(node - nodes.data()));
     return points.size() - before;
   }
 

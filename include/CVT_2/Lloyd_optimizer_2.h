@@ -19,6 +19,7 @@
 #include <CVT_2/internal/Face_chunks.h>
 #include <CVT_2/internal/move_generators.h>
 #include <CVT_2/internal/to_string.h>
+#include <CVT_2/internal/valid_point.h>
 
 #include <CGAL/Unique_hash_map.h>
 #include <boost/container/small_vector.hpp>
@@ -66,7 +67,7 @@ struct Checked_density {
   const Density& rho;
   auto operator()(const Point_2& p) const {
     const auto r = rho(p);
-    if (!(r > 0) || !std::isfinite(CGAL::to_double(r))) throw bad_density_error(r, p);
+    if (!is_positive_finite(r)) throw bad_density_error(r, p);
     return r;
   }
 };
@@ -81,9 +82,9 @@ void evaluate_in_batch(const Density& rho, const std::vector<Point_2>& points,
   if (values.size() != points.size())
     throw Domain_error("the density's batch evaluation gave " + std::to_string(values.size()) +
                        " values for " + std::to_string(points.size()) + " points");
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (!(values[i] > 0) || !std::isfinite(CGAL::to_double(values[i])))
-      throw bad_density_error(values[i], points[i]);
+  if (!all_positive_finite(values))
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (!is_positive_finite(values[i])) throw bad_density_error(values[i], points[i]);
 }
 
 // The two quadrature passes over a chunk of cells with a batch density: the first records the
@@ -216,7 +217,11 @@ class Lloyd_optimizer_2 {
   explicit Lloyd_optimizer_2(CDT& cdt, const Density& rho = Density(),
                              const Quadrature& quadrature = Quadrature(),
                              const Traits& traits = Traits())
-      : m_cdt(cdt), m_density(rho), m_quadrature(quadrature), m_diagram(cdt, traits) {}
+      : m_cdt(cdt),
+        m_density(rho),
+        m_quadrature(quadrature),
+        m_diagram(cdt, traits),
+        m_chunks(faces_a_chunk) {}
 
   /// Builds the diagram of the current generators and computes the energy, the centroids and
   /// the move ratios, integrating with `resolution` sub-triangles a cell (see
@@ -332,6 +337,12 @@ class Lloyd_optimizer_2 {
   Density m_density;
   Quadrature m_quadrature;
   Diagram m_diagram;
+  // A cell under a quadrature rule costs several times one by exact formulas (tens of density
+  // values): chunks a quarter the size, so that a few thousand cells already run on two threads.
+  static constexpr std::size_t faces_a_chunk =
+      std::is_same<Quadrature, Exact_quadrature_2<Kernel>>::value
+          ? internal::Face_chunks<CDT>::default_chunk_size
+          : internal::Face_chunks<CDT>::default_chunk_size / 4;
   internal::Face_chunks<CDT> m_chunks;  // the cells and the moves run on several threads by them
   Evaluation m_evaluation;
   unsigned m_number_of_threads = 0;

@@ -311,7 +311,7 @@ def optimize(
       ``boundary_size``, by default each boundary edge's length; ``cvt2 --density lipschitz``),
       or a callable ``f(xy) -> values``: ``xy`` a float array (m, 2), the result m positive
       finite values. It is called with many points at once (every quadrature point of a chunk
-      of about 2000 cells), with the GIL held only while it runs; cells get small where it is
+      of about 500 cells), with the GIL held only while it runs; cells get small where it is
       large (cell size ~ density**-1/4);
     - ``move_ratio``: stop when every free generator's move ratio ``|x - centroid| /
       diameter(cell)`` is below it (0: never);

@@ -11,19 +11,24 @@
 namespace CVT_2 {
 namespace internal {
 
-// The faces of a triangulation (infinite ones included) in runs of `chunk_size`, in memory
+// The faces of a triangulation (infinite ones included) in runs of chunk_size(), in memory
 // order, for passes that run on several threads. A chunk has a fixed size, so that chunks, and
 // any sum made chunk by chunk and then over the chunks in order, do not depend on the number
-// of threads. Moving vertices and flipping edges create and delete no face, so the chunks stay
-// valid across them; inserting or removing vertices invalidates them.
+// of threads; smaller chunks for heavier work per face, so that small triangulations still
+// have chunks for two threads (run_chunks() gives each thread two or more). Moving vertices and
+// flipping edges create and delete no face, so the chunks stay valid across them; inserting or
+// removing vertices invalidates them.
 template <class CDT>
 class Face_chunks {
  public:
   using Face_iterator = typename CDT::All_faces_iterator;
-  static constexpr std::size_t chunk_size = 4096;
+  static constexpr std::size_t default_chunk_size = 4096;
 
-  Face_chunks() = default;
-  explicit Face_chunks(const CDT& cdt) { update(cdt); }
+  explicit Face_chunks(std::size_t chunk_size = default_chunk_size) : m_chunk_size(chunk_size) {}
+  explicit Face_chunks(const CDT& cdt, std::size_t chunk_size = default_chunk_size)
+      : m_chunk_size(chunk_size) {
+    update(cdt);
+  }
 
   // Cuts the faces of `cdt` into chunks again.
   void update(const CDT& cdt) {
@@ -32,10 +37,11 @@ class Face_chunks {
     if (cdt.dimension() < 2) return;
     std::size_t i = 0;
     for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f, ++i)
-      if (i % chunk_size == 0) m_starts.push_back(f);
+      if (i % m_chunk_size == 0) m_starts.push_back(f);
   }
 
-  std::size_t size() const { return m_starts.size(); }  // the number of chunks
+  std::size_t size() const { return m_starts.size(); }     // the number of chunks
+  std::size_t chunk_size() const { return m_chunk_size; }  // faces a chunk, but the last
 
   // Calls visit(chunk, first, last) for every chunk, with the range of its faces, on `threads`
   // threads (0: one per core; 1: in order, in this thread), as run_chunks() does: `visit` must
@@ -50,6 +56,7 @@ class Face_chunks {
   }
 
  private:
+  std::size_t m_chunk_size;
   const CDT* m_cdt = nullptr;
   std::vector<Face_iterator> m_starts;  // the first face of each chunk
 };
