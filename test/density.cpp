@@ -189,7 +189,8 @@ TEST_CASE("a sizing field's batch is checked as one point is, a bad value anywhe
     std::vector<Point> points;
     for (std::size_t i = 0; i < n; ++i) points.emplace_back(0.125 * double(i), 2.0);
     std::vector<double> values;
-    const auto good = CVT_2::make_sizing_field_density_2<K>(Sizing_with_one_bad_value{1, Point()});
+    const auto good =
+        CVT_2::make_sizing_field_density_2<K>(Sizing_with_one_bad_value{1, Point(-1, -1)});
     good.evaluate(points, values);
     REQUIRE(values.size() == n);
     for (std::size_t i = 0; i < n; ++i) CHECK(values[i] == good(points[i]));
@@ -301,6 +302,12 @@ TEST_CASE("the boundary sizing restricted to a disk equals it bit for bit in the
       local_rho.evaluate(ys, rho_values);
       for (std::size_t j = 0; j < ys.size(); ++j)
         if (values[j] != mu(ys[j]) || rho_values[j] != rho(ys[j])) ++batch_wrong;
+      // a point that is not finite among them changes no other point's value
+      const std::size_t odd = disks % ys.size();
+      ys[odd] = disks % 2 ? Point(not_a_number, q.y()) : Point(q.x(), infinity);
+      local.evaluate(ys, values);
+      for (std::size_t j = 0; j < ys.size(); ++j)
+        if (j == odd ? std::isfinite(values[j]) : values[j] != mu(ys[j])) ++batch_wrong;
     }
   }
   CAPTURE(file, k, double(kept) / double(disks), mu.segments().size());

@@ -187,12 +187,16 @@ class Boundary_lipschitz_sizing_2 {
         xs.resize(count);
         ys.resize(count);
         double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+        double times_zero = 0;  // NaN if a coordinate is not finite
         for (std::size_t i = 0; i < count; ++i) {
           const Point_2& p = points[std::min(i, n - 1)];
           xs[i] = p.x(), ys[i] = p.y();
           x0 = std::min(x0, xs[i]), x1 = std::max(x1, xs[i]);
           y0 = std::min(y0, ys[i]), y1 = std::max(y1, ys[i]);
+          times_zero += xs[i] * 0 + ys[i] * 0;
         }
+        // Skipping needs every value finite: the minimum and maximum of pairs drop NaNs.
+        const bool skips = times_zero == 0;
         // the points' box about the center, and k times the distance to its farthest corner
         x0 -= m_cx, x1 -= m_cx, y0 -= m_cy, y1 -= m_cy;
         const double fx = std::max(-x0, x1), fy = std::max(-y0, y1);
@@ -205,14 +209,16 @@ class Boundary_lipschitz_sizing_2 {
           // reach and the largest least value (bound, with its margin for rounding).
           const double bound =
               most + 1e-12 * (most + c.at_center + reach + m_scale) + m_data->rounding;
-          if (c.at_center - reach > bound) break;  // and so would every later segment
-          const double low_on_box = c.at_center + std::min(c.slope_x * x0, c.slope_x * x1) +
-                                    std::min(c.slope_y * y0, c.slope_y * y1) -
-                                    c.slope_error * reach;
-          if (low_on_box > bound) continue;
-          if (most < std::numeric_limits<double>::infinity() &&
-              !beats_somewhere(c, batch, bound - most, reach))
-            continue;
+          if (skips) {
+            if (c.at_center - reach > bound) break;  // and so would every later segment
+            const double low_on_box = c.at_center + std::min(c.slope_x * x0, c.slope_x * x1) +
+                                      std::min(c.slope_y * y0, c.slope_y * y1) -
+                                      c.slope_error * reach;
+            if (low_on_box > bound) continue;
+            if (most < std::numeric_limits<double>::infinity() &&
+                !beats_somewhere(c, batch, bound - most, reach))
+              continue;
+          }
           most = lower_least(c, batch);
         }
         values.assign(least.begin(), least.begin() + n);

@@ -256,6 +256,8 @@ template <class Diagram>
 void Bvd_mesh_2<Diagram>::number_cells_and_circumcenters(
     const Diagram& bvd, const internal::Face_chunks<Triangulation>& chunks, unsigned threads) {
   const Triangulation& cdt = bvd.triangulation();
+  if (chunks.chunk_size() > (std::size_t(1) << center_bits))
+    throw std::logic_error("Bvd_mesh_2: chunks of more faces than the ids of faces can number");
   if (chunks.size() >= (std::size_t(1) << (29 - center_bits)))
     throw std::length_error("Bvd_mesh_2: more faces than the ids of faces can number");
   m_cell_offsets.assign(chunks.size() + 1, 0);

@@ -64,16 +64,16 @@ class Sizing_field_density_2 {
                          std::to_string(values.size()) + " values for " +
                          std::to_string(points.size()) + " points");
     // the checks of density() on all the values at once, and 1/mu^4 in a loop the compiler
-    // vectorizes; on a bad value, point by point again, to say where
+    // vectorizes; on a bad value, density() on each size in turn, to say where
+    thread_local std::vector<FT> sizes;
+    sizes.assign(values.begin(), values.end());
     const bool sizes_in_range = internal::all_positive_finite(values);
     for (FT& value : values) {
       const FT mu2 = value * value;
       value = FT(1) / (mu2 * mu2);
     }
-    if (!sizes_in_range || !internal::all_positive_finite(values)) {
-      m_sizing.evaluate(points, values);
-      for (std::size_t i = 0; i < points.size(); ++i) values[i] = density(points[i], values[i]);
-    }
+    if (!sizes_in_range || !internal::all_positive_finite(values))
+      for (std::size_t i = 0; i < points.size(); ++i) values[i] = density(points[i], sizes[i]);
   }
 
   /// The density of the sizing field's restriction to the disk (see

@@ -111,7 +111,7 @@ class Chunked_list {
   };
 
  private:
-  static constexpr std::size_t block = 1024;  // indices a block; a chunk of cells has thousands
+  static constexpr std::size_t block = 1024;  // indices a block; a chunk of cells has hundreds
   std::vector<std::vector<T>> m_chunks;
   std::vector<std::size_t> m_ends;         // one past each chunk's last index
   std::vector<std::size_t> m_block_chunk;  // the chunk of each block's first index

@@ -5,6 +5,7 @@
 
 #include <CVT_2/internal/run_chunks.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -24,9 +25,10 @@ class Face_chunks {
   using Face_iterator = typename CDT::All_faces_iterator;
   static constexpr std::size_t default_chunk_size = 4096;
 
-  explicit Face_chunks(std::size_t chunk_size = default_chunk_size) : m_chunk_size(chunk_size) {}
+  explicit Face_chunks(std::size_t chunk_size = default_chunk_size)
+      : m_chunk_size(std::max<std::size_t>(chunk_size, 1)) {}
   explicit Face_chunks(const CDT& cdt, std::size_t chunk_size = default_chunk_size)
-      : m_chunk_size(chunk_size) {
+      : Face_chunks(chunk_size) {
     update(cdt);
   }
 
