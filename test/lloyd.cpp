@@ -417,11 +417,8 @@ TEST_CASE("Lloyd gives the same bits whatever the number of threads and from run
       lloyd.move();
       if (threads == 3) check_invariants(d.cdt, marks, 20, it);  // one of the four runs
     }
-    std::vector<Point> points;
-    for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v)
-      points.push_back(v->point());
     energies.push_back(e);
-    finals.push_back(points);
+    finals.push_back(vertex_points(d.cdt));
   }
   for (std::size_t i = 1; i < energies.size(); ++i) {
     CAPTURE(i);
@@ -440,18 +437,16 @@ TEST_CASE("an adaptive Lloyd on a few thousand generators gives the same bits on
     Domain d;
     load_domain(d, "bubble_with_hole.poly");
     insert_random_points(d, 2500, 6);
-    REQUIRE(CVT_2::internal::Face_chunks<Cdt>(d.cdt).size() < 4);  // not for exact formulas
-    REQUIRE(CVT_2::internal::Face_chunks<Cdt>(d.cdt, 1024).size() >= 4);
+    using Chunks = CVT_2::internal::Face_chunks<Cdt>;
+    REQUIRE(Chunks(d.cdt).size() < 4);  // not for exact formulas
+    REQUIRE(Chunks(d.cdt, Chunks::quadrature_chunk_size).size() >= 4);
     const CVT_2::Boundary_lipschitz_sizing_2<K> mu(d.cdt, 0.1);
     const auto r = CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::sizing_field(mu)
                                                       .number_of_iterations(5)
                                                       .move_ratio_bound(0)
                                                       .number_of_threads(threads));
     energies.push_back(r.energy);
-    std::vector<Point> points;
-    for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v)
-      points.push_back(v->point());
-    finals.push_back(points);
+    finals.push_back(vertex_points(d.cdt));
   }
   CHECK(energies[1] == energies[0]);
   CHECK(finals[1] == finals[0]);
@@ -540,16 +535,14 @@ TEST_CASE("a density evaluated in batches gives the same bits as point by point"
         if (threads < 0) {
           CHECK(batches == 0);
         } else {
-          // One batch a chunk of faces an evaluation: 1024 faces under a quadrature rule.
-          const std::size_t chunks = CVT_2::internal::Face_chunks<Cdt>(d.cdt, 1024).size();
+          // One batch a chunk of faces (of cells under a quadrature rule) an evaluation.
+          using Chunks = CVT_2::internal::Face_chunks<Cdt>;
+          const std::size_t chunks = Chunks(d.cdt, Chunks::quadrature_chunk_size).size();
           CHECK(batches == chunks * r.number_of_evaluations);
         }
         check_invariants(d.cdt, marks, 50);
         histories.push_back(r.energy_history);
-        std::vector<Point> final;
-        for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v)
-          final.push_back(v->point());
-        finals.push_back(final);
+        finals.push_back(vertex_points(d.cdt));
       }
       CHECK(histories[1] == histories[0]);
       CHECK(histories[2] == histories[0]);

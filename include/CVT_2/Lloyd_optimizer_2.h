@@ -337,12 +337,10 @@ class Lloyd_optimizer_2 {
   Density m_density;
   Quadrature m_quadrature;
   Diagram m_diagram;
-  // A cell under a quadrature rule costs several times one by exact formulas (tens of density
-  // values): chunks a quarter the size, so that a few thousand cells already run on two threads.
   static constexpr std::size_t faces_a_chunk =
       std::is_same<Quadrature, Exact_quadrature_2<Kernel>>::value
           ? internal::Face_chunks<CDT>::default_chunk_size
-          : internal::Face_chunks<CDT>::default_chunk_size / 4;
+          : internal::Face_chunks<CDT>::quadrature_chunk_size;
   internal::Face_chunks<CDT> m_chunks;  // the cells and the moves run on several threads by them
   Evaluation m_evaluation;
   unsigned m_number_of_threads = 0;

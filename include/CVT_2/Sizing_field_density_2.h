@@ -63,17 +63,17 @@ class Sizing_field_density_2 {
       throw Domain_error("the sizing field's batch evaluation gave " +
                          std::to_string(values.size()) + " values for " +
                          std::to_string(points.size()) + " points");
-    // the checks of density() on all the values at once, and 1/mu^4 in a loop the compiler
-    // vectorizes; on a bad value, density() on each size in turn, to say where
-    thread_local std::vector<FT> sizes;
-    sizes.assign(values.begin(), values.end());
-    const bool sizes_in_range = internal::all_positive_finite(values);
-    for (FT& value : values) {
-      const FT mu2 = value * value;
-      value = FT(1) / (mu2 * mu2);
+    // 1/mu^4 in a loop the compiler vectorizes, beside the sizes, and the checks of density()
+    // on all the values at once; on a bad value, density() on each size in turn, to say where
+    thread_local std::vector<FT> densities;
+    densities.resize(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      const FT mu2 = values[i] * values[i];
+      densities[i] = FT(1) / (mu2 * mu2);
     }
-    if (!sizes_in_range || !internal::all_positive_finite(values))
-      for (std::size_t i = 0; i < points.size(); ++i) values[i] = density(points[i], sizes[i]);
+    if (!internal::all_positive_finite(values) || !internal::all_positive_finite(densities))
+      for (std::size_t i = 0; i < points.size(); ++i) densities[i] = density(points[i], values[i]);
+    values.swap(densities);
   }
 
   /// The density of the sizing field's restriction to the disk (see

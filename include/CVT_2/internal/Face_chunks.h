@@ -24,6 +24,9 @@ class Face_chunks {
  public:
   using Face_iterator = typename CDT::All_faces_iterator;
   static constexpr std::size_t default_chunk_size = 4096;
+  // for cells under a quadrature rule, several times the work of exact formulas (tens of
+  // density values a cell): a few thousand cells already make chunks for two threads
+  static constexpr std::size_t quadrature_chunk_size = default_chunk_size / 4;
 
   explicit Face_chunks(std::size_t chunk_size = default_chunk_size)
       : m_chunk_size(std::max<std::size_t>(chunk_size, 1)) {}
