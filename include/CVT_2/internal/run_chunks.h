@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cfenv>
 #include <chrono>
 #include <condition_variable>
 #include <cstddef>
@@ -19,6 +20,9 @@
 #include <unistd.h>
 #define CVT_2_HAS_GETPID
 #endif
+#ifdef __linux__
+#include <sched.h>
+#endif
 #if defined(__SSE2__) || defined(_M_X64)
 #include <emmintrin.h>
 #endif
@@ -29,91 +33,119 @@ namespace internal {
 // The number of threads that "0" (all) stands for.
 inline unsigned hardware_threads() { return std::max(1u, std::thread::hardware_concurrency()); }
 
-// Threads kept from one parallel pass to the next, for the whole process. An iteration makes
-// several passes of a few hundred microseconds to tens of milliseconds: starting threads for
-// each costs tens of microseconds, and on a virtual machine an idle core can take longer to
-// wake. A worker that finishes a pass spins a little before it sleeps, so that the next pass,
-// after the short serial part of an iteration, finds it awake.
+// The processors this process may run on (its affinity on Linux), at least 1.
+inline unsigned usable_cores() {
+#ifdef __linux__
+  cpu_set_t set;
+  if (sched_getaffinity(0, sizeof set, &set) == 0) return unsigned(std::max(1, CPU_COUNT(&set)));
+#endif
+  return hardware_threads();
+}
+
+// Threads kept from one parallel pass to the next for as long as a Scope lives (an
+// optimization: lloyd_optimize_2() and lbfgs_optimize_2() open one). An iteration makes several
+// passes of a few hundred microseconds to tens of milliseconds: starting threads for each costs
+// tens of microseconds, and on a virtual machine an idle core can take longer to wake. A worker
+// that finishes a pass spins half a millisecond before it sleeps, so that the next pass, after
+// the short serial part of an iteration, finds it awake; workers beyond the processors sleep
+// at once.
 //
 // A pass hands out tickets: a worker takes one, runs the work, and gives it back. The caller
 // runs the work too, then withdraws the tickets not taken and waits only for the workers
-// inside, so a worker that wakes late costs nothing. A fork()'s child, which has none of the
-// parent's workers, starts its own.
+// inside, so a worker that wakes late costs nothing. Workers run under the caller's
+// floating-point environment. Nothing outlives the scope: no thread, no lock at the process's
+// exit or in a fork()'s child made outside a scope.
 class Worker_pool {
  public:
-  // Holds the pool for one pass and gives it back at its end.
-  class Lease {
-   public:
-    explicit Lease(Worker_pool* pool) : m_pool(pool) {}
-    Lease(const Lease&) = delete;
-    Lease& operator=(const Lease&) = delete;
-    ~Lease() {
-      if (!m_pool) return;
-      std::lock_guard<std::mutex> lock(the_holder().mutex);
-      m_pool->m_busy = false;
-    }
-    Worker_pool* get() const { return m_pool; }
+  // This thread's run_chunks() use the scope's pool until its end, when the workers are joined.
+  class Scope;
 
-   private:
-    Worker_pool* m_pool;
-  };
-
-  // The pool of this process, or null when it is busy with another pass (a nested or a
-  // concurrent run_chunks(), which then starts threads of its own).
-  static Worker_pool* acquire() {
-    Holder& holder = the_holder();
-    std::lock_guard<std::mutex> lock(holder.mutex);
+  // The pool of this thread's innermost scope, or null: no scope, the pool is running a pass
+  // (a pass inside a task), or this is a fork()'s child of the pool's process.
+  static Worker_pool* available() {
+    Worker_pool* pool = current();
+    if (!pool || pool->m_busy) return nullptr;
 #ifdef CVT_2_HAS_GETPID
-    if (holder.pool && holder.pool->m_process != ::getpid())
-      holder.pool.release();  // in a fork()'s child: the workers are the parent's, forget them
+    if (pool->m_process != ::getpid()) return nullptr;
 #endif
-    if (!holder.pool) holder.pool.reset(new Worker_pool);
-    if (holder.pool->m_busy) return nullptr;
-    holder.pool->m_busy = true;
-    return holder.pool.get();
+    return pool;
+  }
+
+  Worker_pool() = default;
+  Worker_pool(const Worker_pool&) = delete;
+  Worker_pool& operator=(const Worker_pool&) = delete;
+
+  ~Worker_pool() {
+#ifdef CVT_2_HAS_GETPID
+    if (m_process != ::getpid()) {  // a fork()'s child: the workers and their waits are the
+      m_shared.release();           // parent's; touching them could block
+      return;
+    }
+#endif
+    {
+      std::lock_guard<std::mutex> lock(m_shared->mutex);
+      m_shared->stop = true;
+    }
+    m_shared->wake.notify_all();
+    for (std::thread& t : m_shared->workers) t.join();
   }
 
   // Runs work() on this thread and up to `helpers` workers at once; returns when all are out
   // of it. `work` must not throw.
   template <class Work>
   void run(unsigned helpers, const Work& work) {
-    while (m_workers.size() < helpers)
-      m_workers.emplace_back([this, index = m_workers.size()] { serve(index); });
-    m_work = &work;
-    m_call = [](const void* w) { (*static_cast<const Work*>(w))(); };
-    {
-      std::lock_guard<std::mutex> lock(m_mutex);
-      m_state.store(pack(helpers, 0), std::memory_order_release);
+    Shared& sh = *m_shared;
+    m_busy = true;
+    struct Idle {
+      bool& busy;
+      ~Idle() { busy = false; }
+    } idle{m_busy};
+    try {
+      while (sh.workers.size() < helpers)
+        sh.workers.emplace_back([&sh, index = sh.workers.size()] { serve(sh, index); });
+    } catch (const std::exception&) {  // no more threads to be had: with those there are
+      helpers = unsigned(sh.workers.size());
     }
-    m_wake.notify_all();
+    sh.work = &work;
+    sh.call = [](const void* w) { (*static_cast<const Work*>(w))(); };
+    std::fegetenv(&sh.environment);
+    {
+      std::lock_guard<std::mutex> lock(sh.mutex);
+      sh.state.store(pack(helpers, 0), std::memory_order_release);
+    }
+    for (unsigned i = 0; i < helpers; ++i) sh.wake.notify_one();
     work();
-    // withdraw the tickets not taken, then wait for the workers inside
-    std::uint64_t s = m_state.load(std::memory_order_acquire);
-    while (!m_state.compare_exchange_weak(s, pack(0, inside(s)), std::memory_order_acq_rel)) {
+    // withdraw the tickets not taken, then wait for the workers inside: spin a little, then
+    // sleep (a long chunk, or more threads than processors)
+    std::uint64_t s = sh.state.load(std::memory_order_acquire);
+    while (!sh.state.compare_exchange_weak(s, pack(0, inside(s)), std::memory_order_acq_rel)) {
     }
-    while (inside(m_state.load(std::memory_order_acquire)) != 0) pause();
-  }
-
-  ~Worker_pool() {
-    {
-      std::lock_guard<std::mutex> lock(m_mutex);
-      m_stop = true;
+    for (unsigned k = 0; k < 4096; ++k) {
+      if (inside(sh.state.load(std::memory_order_acquire)) == 0) return;
+      pause();
     }
-    m_wake.notify_all();
-    for (std::thread& t : m_workers) t.join();
+    std::unique_lock<std::mutex> lock(sh.mutex);
+    sh.done.wait(lock, [&] { return inside(sh.state.load(std::memory_order_acquire)) == 0; });
   }
 
  private:
-  struct Holder {
+  // What the workers share with the caller (left to a fork()'s child untouched).
+  struct Shared {
+    std::vector<std::thread> workers;
     std::mutex mutex;
-    std::unique_ptr<Worker_pool> pool;  // joins the workers at the process's exit
+    std::condition_variable wake, done;
+    std::atomic<std::uint64_t> state{0};  // tickets in the low half, workers inside the high
+    const void* work = nullptr;
+    void (*call)(const void*) = nullptr;
+    std::fenv_t environment;
+    bool stop = false;
   };
-  static Holder& the_holder() {
-    static Holder holder;
-    return holder;
+
+  static Worker_pool*& current() {
+    static thread_local Worker_pool* pool = nullptr;
+    return pool;
   }
 
-  // tickets in the low half, workers inside the work in the high half
   static std::uint64_t pack(std::uint64_t tickets, std::uint64_t in) { return in << 32 | tickets; }
   static std::uint64_t tickets(std::uint64_t s) { return s & 0xffffffffu; }
   static std::uint64_t inside(std::uint64_t s) { return s >> 32; }
@@ -126,48 +158,60 @@ class Worker_pool {
 #endif
   }
 
-  bool take_ticket() {
-    std::uint64_t s = m_state.load(std::memory_order_acquire);
+  static bool take_ticket(Shared& sh) {
+    std::uint64_t s = sh.state.load(std::memory_order_acquire);
     while (tickets(s) > 0)
-      if (m_state.compare_exchange_weak(s, pack(tickets(s) - 1, inside(s) + 1),
-                                        std::memory_order_acq_rel))
+      if (sh.state.compare_exchange_weak(s, pack(tickets(s) - 1, inside(s) + 1),
+                                         std::memory_order_acq_rel))
         return true;
     return false;
   }
 
-  void serve(std::size_t index) {
+  static void serve(Shared& sh, std::size_t index) {
     using Clock = std::chrono::steady_clock;
-    // more threads than cores (asked for): those beyond the cores sleep at once
-    const auto spin = std::chrono::microseconds(index + 1 < hardware_threads() ? 500 : 0);
+    const auto spin = std::chrono::microseconds(index + 1 < usable_cores() ? 500 : 0);
     for (;;) {
       const Clock::time_point spin_end = Clock::now() + spin;
-      for (unsigned k = 1; tickets(m_state.load(std::memory_order_relaxed)) == 0; ++k) {
+      for (unsigned k = 1; tickets(sh.state.load(std::memory_order_relaxed)) == 0; ++k) {
         pause();
         if (k % 64 == 0 && Clock::now() > spin_end) {
-          std::unique_lock<std::mutex> lock(m_mutex);
-          m_wake.wait(
-              lock, [&] { return m_stop || tickets(m_state.load(std::memory_order_relaxed)) > 0; });
-          if (m_stop) return;
+          std::unique_lock<std::mutex> lock(sh.mutex);
+          sh.wake.wait(lock, [&] {
+            return sh.stop || tickets(sh.state.load(std::memory_order_relaxed)) > 0;
+          });
+          if (sh.stop) return;
           break;
         }
       }
-      if (!take_ticket()) continue;
-      m_call(m_work);
-      m_state.fetch_sub(pack(0, 1), std::memory_order_acq_rel);
+      if (!take_ticket(sh)) continue;
+      std::fesetenv(&sh.environment);
+      sh.call(sh.work);
+      const std::uint64_t was = sh.state.fetch_sub(pack(0, 1), std::memory_order_acq_rel);
+      if (inside(was) == 1 && tickets(was) == 0) {  // the last one out: the caller may sleep
+        { std::lock_guard<std::mutex> lock(sh.mutex); }
+        sh.done.notify_one();
+      }
     }
   }
 
-  std::vector<std::thread> m_workers;
-  std::mutex m_mutex;
-  std::condition_variable m_wake;
-  std::atomic<std::uint64_t> m_state{0};
-  const void* m_work = nullptr;
-  void (*m_call)(const void*) = nullptr;
-  bool m_stop = false;
+  std::unique_ptr<Shared> m_shared{new Shared};
   bool m_busy = false;
 #ifdef CVT_2_HAS_GETPID
   pid_t m_process = ::getpid();
 #endif
+};
+
+// A Worker_pool for this thread's run_chunks() until the end of the scope.
+class Worker_pool::Scope {
+ public:
+  Scope() : m_previous(current()) { current() = &m_pool; }
+  Scope(const Scope&) = delete;
+  Scope& operator=(const Scope&) = delete;
+  ~Scope() { current() = m_previous; }
+
+ private:
+  Worker_pool m_pool;
+  Worker_pool* m_previous;
 };
 
 // Calls task(c) for every chunk c in [0, n), on `threads` threads (0: one per core), each
@@ -200,12 +244,14 @@ void run_chunks(std::size_t n, unsigned threads, const Task& task) {
       }
     }
   };
-  const Worker_pool::Lease pool(Worker_pool::acquire());
-  if (pool.get()) {
-    pool.get()->run(threads - 1, work);
+  if (Worker_pool* pool = Worker_pool::available()) {
+    pool->run(threads - 1, work);
   } else {
     std::vector<std::thread> helpers;
-    for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(work);
+    try {
+      for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(work);
+    } catch (const std::exception&) {  // no more threads to be had: with those there are
+    }
     work();
     for (std::thread& t : helpers) t.join();
   }

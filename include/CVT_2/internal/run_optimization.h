@@ -8,6 +8,7 @@
 #include <CVT_2/Optimization_result.h>
 #include <CVT_2/Sizing_field_density_2.h>
 #include <CVT_2/Uniform_density_2.h>
+#include <CVT_2/internal/run_chunks.h>
 #include <CVT_2/parameters.h>
 
 #include <algorithm>
@@ -183,6 +184,7 @@ void record(const Evaluation& e, std::size_t evaluations, const Run_options& o, 
 template <class Optimizer>
 Optimization_result run_optimization(Optimizer&& optimizer, const Run_options& o,
                                      const char* name) {
+  const Worker_pool::Scope threads;  // the same threads for every pass of the run
   Optimization_result r;
   auto e = optimizer.evaluate(o.lo);
   while (true) {
