@@ -117,9 +117,7 @@ class Worker_pool {
     work();
     // withdraw the tickets not taken, then wait for the workers inside: spin a little, then
     // sleep (a long chunk, or more threads than processors)
-    std::uint64_t s = sh.state.load(std::memory_order_acquire);
-    while (!sh.state.compare_exchange_weak(s, pack(0, inside(s)), std::memory_order_acq_rel)) {
-    }
+    sh.state.fetch_and(~pack(0xffffffffu, 0), std::memory_order_acq_rel);
     for (unsigned k = 0; k < 4096; ++k) {
       if (inside(sh.state.load(std::memory_order_acquire)) == 0) return;
       pause();
