@@ -187,7 +187,7 @@ class Bvd_mesh_2 {
     Index out;
   };
   // What a chunk of cells found, in the order of its cells.
-  struct Chunk_cells {
+  struct alignas(internal::cache_line) Chunk_cells {
     std::vector<Index> sizes;
     std::vector<Entry> entries;
     std::vector<std::pair<Key, Point_2>> keys;
@@ -262,10 +262,10 @@ void Bvd_mesh_2<Diagram>::number_cells_and_circumcenters(
     throw std::length_error("Bvd_mesh_2: more faces than the ids of faces can number");
   m_cell_offsets.assign(chunks.size() + 1, 0);
   m_center_offsets.assign(chunks.size() + 1, 0);
-  std::vector<std::vector<Vertex_handle>> generators(chunks.size());
+  std::vector<internal::Chunk_vector<Vertex_handle>> generators(chunks.size());
   // Each circumcenter once (the cells pass would compute it in each of its three cells), while
   // the face and its vertices are at hand.
-  std::vector<std::vector<Point_2>> centers(chunks.size());
+  std::vector<internal::Chunk_vector<Point_2>> centers(chunks.size());
   const auto circumcenter = bvd.geom_traits().construct_circumcenter_2_object();
   // Hash maps are filled by one thread; the records' ids by all.
   const unsigned writers = m_cell_of.in_record && m_circumcenter_of.in_record ? threads : 1u;
@@ -558,7 +558,7 @@ void Bvd_mesh_2<Diagram>::assemble(std::vector<Chunk_cells>& chunks, unsigned th
   m_sides.resize(entries.back());
   m_offsets.resize(m_generators.size() + 1);
   m_constrained.assign(m_generators.size(), 0);
-  std::vector<std::vector<std::pair<Index, std::size_t>>> on_constraints(chunks.size());
+  std::vector<internal::Chunk_vector<std::pair<Index, std::size_t>>> on_constraints(chunks.size());
   internal::run_chunks(chunks.size(), threads, [&](std::size_t ci) {
     Chunk_cells& c = chunks[ci];
     std::size_t e = entries[ci], cell = m_cell_offsets[ci];

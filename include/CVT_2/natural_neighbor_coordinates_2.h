@@ -382,7 +382,7 @@ natural_neighbor_matrix_2(const Diagram& bvd, const PointRange& queries,
   const std::vector<Point_2> q(std::begin(queries), std::end(queries));
   constexpr std::size_t chunk = 1024;
   const std::size_t chunks = (q.size() + chunk - 1) / chunk;
-  struct Rows {
+  struct alignas(internal::cache_line) Rows {
     std::vector<std::size_t> ends, columns;  // ends: of each row, from the chunk's start
     std::vector<FT> values;
   };

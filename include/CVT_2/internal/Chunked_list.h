@@ -3,6 +3,8 @@
 #ifndef CVT_2_INTERNAL_CHUNKED_LIST_H
 #define CVT_2_INTERNAL_CHUNKED_LIST_H
 
+#include <CVT_2/internal/run_chunks.h>
+
 #include <CGAL/assertions.h>
 
 #include <algorithm>
@@ -112,7 +114,7 @@ class Chunked_list {
 
  private:
   static constexpr std::size_t block = 1024;  // indices a block; a chunk of cells has hundreds
-  std::vector<std::vector<T>> m_chunks;
+  std::vector<Chunk_vector<T>> m_chunks;
   std::vector<std::size_t> m_ends;         // one past each chunk's last index
   std::vector<std::size_t> m_block_chunk;  // the chunk of each block's first index
   std::vector<std::size_t> m_sizes;        // each chunk's size when last sealed

@@ -31,9 +31,9 @@ struct Move_buffers {
   std::vector<typename CDT::Face_handle> inverted;
   std::vector<Flip_candidate<CDT>> stack;
   // what each chunk of faces found, before they are put together in the order of the chunks
-  std::vector<std::vector<typename CDT::Face_handle>> chunk_inverted;
-  std::vector<std::vector<Flip_candidate<CDT>>> chunk_stack;
-  std::vector<std::vector<std::size_t>> chunk_pending;
+  std::vector<Chunk_vector<typename CDT::Face_handle>> chunk_inverted;
+  std::vector<Chunk_vector<Flip_candidate<CDT>>> chunk_stack;
+  std::vector<Chunk_vector<std::size_t>> chunk_pending;
   void release() { *this = Move_buffers(); }
 };
 
@@ -47,7 +47,7 @@ void list_pending(const OrderRange& order, const VertexAt& vertex, const TargetA
   const std::size_t chunks = (n + chunk_size - 1) / chunk_size;
   b.chunk_pending.resize(std::max(b.chunk_pending.size(), chunks));
   run_chunks(chunks, threads, [&](std::size_t c) {
-    std::vector<std::size_t>& out = b.chunk_pending[c];
+    Chunk_vector<std::size_t>& out = b.chunk_pending[c];
     out.clear();
     const auto first = std::begin(order);
     const std::size_t end = std::min(n, (c + 1) * chunk_size);
@@ -97,8 +97,8 @@ void check_moved_faces(const CDT& cdt, const Face_chunks<CDT>& chunks, unsigned 
   b.chunk_stack.resize(chunks.size());
   chunks.for_each(
       [&](std::size_t c, auto first, auto last) {
-        std::vector<Face_handle>& inverted = b.chunk_inverted[c];
-        std::vector<Flip_candidate<CDT>>& stack = b.chunk_stack[c];
+        Chunk_vector<Face_handle>& inverted = b.chunk_inverted[c];
+        Chunk_vector<Flip_candidate<CDT>>& stack = b.chunk_stack[c];
         inverted.clear();
         stack.clear();
         for_each_face_prefetched(first, last, [&](Face_handle f) {

@@ -42,6 +42,20 @@ inline unsigned usable_cores() {
   return hardware_threads();
 }
 
+// What the chunks of a pass write as they go (a sum a cell, a list's end an item) must not share
+// a cache line with another chunk's: two threads writing one line pass it back and forth between
+// their cores at every write ("false sharing"). Outputs kept side by side, one a chunk, are
+// therefore aligned to a line of their own: alignas(cache_line) on a struct, or Chunk_vector
+// for a list. Before, the cells' pass took 1.3 times its time on two threads.
+constexpr std::size_t cache_line = 64;
+
+// A std::vector alone on its cache line: one of the lists the chunks of a pass fill side by side.
+template <class T>
+struct alignas(cache_line) Chunk_vector : std::vector<T> {
+  using std::vector<T>::vector;
+  using std::vector<T>::operator=;
+};
+
 // Threads kept from one parallel pass to the next for as long as a Scope lives (an
 // optimization: lloyd_optimize_2() and lbfgs_optimize_2() open one). An iteration makes several
 // passes of a few hundred microseconds to tens of milliseconds: starting threads for each costs

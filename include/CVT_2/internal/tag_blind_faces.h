@@ -119,7 +119,7 @@ template <class CDT, class Traits>
 std::size_t tag_blind_faces(const CDT& cdt, const Traits& traits, const Face_chunks<CDT>& chunks,
                             unsigned threads) {
   if (chunks.size() == 0) return tag_blind_faces(cdt, traits);  // no plane: no chunks
-  std::vector<std::vector<typename CDT::Edge>> parts(chunks.size());
+  std::vector<Chunk_vector<typename CDT::Edge>> parts(chunks.size());
   chunks.for_each(
       [&](std::size_t c, auto first, auto last) {
         clear_tags_and_list_constraint_sides(cdt, first, last, parts[c]);
