@@ -37,31 +37,41 @@ struct Move_buffers {
   void release() { *this = Move_buffers(); }
 };
 
+// Lists item(k) for the k of [0, n) with keep(k), in the order of k, into `out`: a pass that
+// only reads, in chunks of 4096 on `threads` threads, each chunk listing into its own part of
+// `b.chunk_pending`. Before keep(k), the pass prefetches ahead(k + 8) (nullptr: nothing).
+template <class CDT, class Ahead, class Keep, class Item>
+void list_in_order(std::size_t n, unsigned threads, const Ahead& ahead, const Keep& keep,
+                   const Item& item, Move_buffers<CDT>& b, std::vector<std::size_t>& out) {
+  constexpr std::size_t distance = 8, chunk_size = 4096;
+  const std::size_t chunks = (n + chunk_size - 1) / chunk_size;
+  b.chunk_pending.resize(std::max(b.chunk_pending.size(), chunks));
+  run_chunks(chunks, threads, [&](std::size_t c) {
+    Chunk_vector<std::size_t>& part = b.chunk_pending[c];
+    part.clear();
+    const std::size_t end = std::min(n, (c + 1) * chunk_size);
+    for (std::size_t k = c * chunk_size; k < end; ++k) {
+      if (k + distance < end) prefetch(ahead(k + distance));
+      if (keep(k)) part.push_back(item(k));
+    }
+  });
+  out.clear();
+  for (std::size_t c = 0; c < chunks; ++c) {
+    out.insert(out.end(), b.chunk_pending[c].begin(), b.chunk_pending[c].end());
+    std::vector<std::size_t>().swap(b.chunk_pending[c]);  // one copy of the list at a time
+  }
+}
+
 // The i of `order` (random access) whose vertex(i) is not at target(i), in that order, into
 // `b.pending`: a read of every vertex, in chunks on `threads` threads.
 template <class CDT, class OrderRange, class VertexAt, class TargetAt>
 void list_pending(const OrderRange& order, const VertexAt& vertex, const TargetAt& target,
                   unsigned threads, Move_buffers<CDT>& b) {
-  constexpr std::size_t distance = 8, chunk_size = 4096;
-  const std::size_t n = std::size_t(std::end(order) - std::begin(order));
-  const std::size_t chunks = (n + chunk_size - 1) / chunk_size;
-  b.chunk_pending.resize(std::max(b.chunk_pending.size(), chunks));
-  run_chunks(chunks, threads, [&](std::size_t c) {
-    Chunk_vector<std::size_t>& out = b.chunk_pending[c];
-    out.clear();
-    const auto first = std::begin(order);
-    const std::size_t end = std::min(n, (c + 1) * chunk_size);
-    for (std::size_t k = c * chunk_size; k < end; ++k) {
-      if (k + distance < end) prefetch(&*vertex(first[std::ptrdiff_t(k + distance)]));
-      const std::size_t i = first[std::ptrdiff_t(k)];
-      if (vertex(i)->point() != target(i)) out.push_back(i);
-    }
-  });
-  b.pending.clear();
-  for (std::size_t c = 0; c < chunks; ++c) {
-    b.pending.insert(b.pending.end(), b.chunk_pending[c].begin(), b.chunk_pending[c].end());
-    std::vector<std::size_t>().swap(b.chunk_pending[c]);  // one copy of the list at a time
-  }
+  const auto first = std::begin(order);
+  const auto i = [&](std::size_t k) { return std::size_t(first[std::ptrdiff_t(k)]); };
+  list_in_order(
+      std::size_t(std::end(order) - first), threads, [&](std::size_t k) { return &*vertex(i(k)); },
+      [&](std::size_t k) { return vertex(i(k))->point() != target(i(k)); }, i, b, b.pending);
 }
 
 // Sets vertex(i) to target(i) for every i of `pending`, in chunks on `threads` threads,
@@ -133,13 +143,13 @@ void chunk_lawson_flips(CDT& cdt, Move_buffers<CDT>& b) {
 // Rounds of putting back: a face that is not positive has a vertex that moved (at their old
 // places, its vertices made a positive face), so each round puts back at least one and the
 // rounds end, at the latest with the old triangulation. A round looks its vertices up in one
-// pass over `pending`, so that everything happens in the order of `pending`, not of addresses;
-// the few vertices a round wants are sorted, and a bitmap of their hashes turns away almost
-// every other vertex of the pass in one read. The vertices put back are listed in
-// `b.kept_back`, in the order of `pending`.
+// pass over `pending` (in chunks on `threads` threads: it only reads), so that everything
+// happens in the order of `pending`, not of addresses; the few vertices a round wants are
+// sorted, and a bitmap of their hashes turns away almost every other vertex of the pass in one
+// read. The vertices put back are listed in `b.kept_back`, in the order of `pending`.
 template <class CDT, class VertexAt>
 void put_back_inverted(const CDT& cdt, const std::vector<std::size_t>& pending,
-                       const VertexAt& vertex, Move_buffers<CDT>& b) {
+                       const VertexAt& vertex, unsigned threads, Move_buffers<CDT>& b) {
   using Vertex_handle = typename CDT::Vertex_handle;
   const auto orientation = cdt.geom_traits().orientation_2_object();
   const std::size_t n = pending.size();
@@ -154,6 +164,7 @@ void put_back_inverted(const CDT& cdt, const std::vector<std::size_t>& pending,
     return std::less<const void*>()(&*u, &*v);
   };
   std::vector<Vertex_handle> wanted;
+  std::vector<std::size_t> found;  // where in `pending` the vertices of a round are
   while (!b.inverted.empty()) {
     wanted.clear();
     for (const auto f : b.inverted)
@@ -163,12 +174,17 @@ void put_back_inverted(const CDT& cdt, const std::vector<std::size_t>& pending,
     std::fill(bitmap.begin(), bitmap.end(), 0);
     for (const Vertex_handle v : wanted) bitmap[hash(v) >> 6] |= std::uint64_t(1) << (hash(v) & 63);
     b.inverted.clear();
-    for (std::size_t k = 0; k < n; ++k) {
+    list_in_order(
+        n, threads, [](std::size_t) { return nullptr; },  // it reads lists, no vertex
+        [&](std::size_t k) {
+          const Vertex_handle v = vertex(pending[k]);
+          const std::size_t h = hash(v);
+          return !put_back[k] && (bitmap[h >> 6] >> (h & 63) & 1) &&
+                 std::binary_search(wanted.begin(), wanted.end(), v, less);
+        },
+        [](std::size_t k) { return k; }, b, found);
+    for (const std::size_t k : found) {
       const Vertex_handle v = vertex(pending[k]);
-      const std::size_t h = hash(v);
-      if (put_back[k] || !(bitmap[h >> 6] >> (h & 63) & 1) ||
-          !std::binary_search(wanted.begin(), wanted.end(), v, less))
-        continue;
       put_back[k] = true;
       v->set_point(b.from[k]);
       auto fc = cdt.incident_faces(v), end = fc;
@@ -206,7 +222,7 @@ void move_all_at_once(CDT& cdt, const Face_chunks<CDT>& chunks, unsigned threads
                       const TargetAt& target, Move_buffers<CDT>& b) {
   set_targets(pending, vertex, target, threads, b);
   check_moved_faces(cdt, chunks, threads, b);
-  put_back_inverted(cdt, pending, vertex, b);
+  put_back_inverted(cdt, pending, vertex, threads, b);
 }
 
 // Moves each free vertex vertex(i) toward target(i), for i in `order` (a range of numbers in
