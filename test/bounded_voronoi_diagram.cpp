@@ -5,6 +5,8 @@
 #include "support/support.h"
 
 #include <CVT_2/Cvt_triangulation_2.h>
+#include <CVT_2/Lloyd_optimizer_2.h>
+#include <CVT_2/internal/Face_chunks.h>
 
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -13,6 +15,7 @@
 
 #include <cstdlib>
 #include <map>
+#include <set>
 
 using namespace support;
 
@@ -512,4 +515,65 @@ TEST_CASE("Cvt_triangulation_2 is the triangulation the tests spell out", "[bvd]
   CVT_2::mark_domain_2(cdt, std::vector<Point>{});
   CHECK(CVT_2::Bounded_voronoi_diagram_2<CVT_2::Cvt_triangulation_2<K>>(cdt).has_cell(
       cdt.finite_vertices_begin()));
+}
+
+TEST_CASE("Face_chunks: every face once, in memory order, in runs of slots, free slots skipped",
+          "[bvd]") {
+  Domain d;
+  load_domain(d, "square_inner_constraints.poly");
+  insert_random_points(d, 20000, 3);
+  const auto& slots = d.cdt.tds().faces();
+  // The faces the chunks visit, in the order of the chunks, against a walk of all faces; the
+  // number of faces in each chunk.
+  const auto check = [&](std::size_t size) {
+    CAPTURE(size);
+    const CVT_2::internal::Face_chunks<Cdt> chunks(d.cdt, size);
+    std::vector<Cdt::Face_handle> visited, all;
+    std::vector<std::size_t> faces(chunks.size(), 0);
+    chunks.for_each(
+        [&](std::size_t c, auto first, auto last) {
+          for (; first != last; ++first, ++faces[c]) visited.push_back(first);
+        },
+        1);  // in order, on this thread
+    for (auto f = d.cdt.all_faces_begin(); f != d.cdt.all_faces_end(); ++f) all.push_back(f);
+    CHECK(visited == all);
+    CHECK(chunks.size() <= (slots.capacity() + size - 1) / size);
+    for (const std::size_t n : faces) {
+      CHECK(n >= 1);
+      CHECK(n <= size);
+    }
+    return chunks.size();
+  };
+  for (const std::size_t size : {1u, 16u, 4096u}) check(size);
+  // Free slots in the middle: the free generators left of the median removed.
+  std::vector<Cdt::Vertex_handle> removed;
+  for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v)
+    if (!d.cdt.are_there_incident_constraints(v)) removed.push_back(v);
+  const auto middle = removed.begin() + std::ptrdiff_t(removed.size() / 2);
+  std::nth_element(removed.begin(), middle, removed.end(),
+                   [](auto u, auto v) { return u->point().x() < v->point().x(); });
+  removed.erase(middle, removed.end());
+  REQUIRE(removed.size() > 5000);
+  for (const auto v : removed) d.cdt.remove(v);
+  REQUIRE(slots.size() + 10000 < slots.capacity());
+  for (const std::size_t size : {1u, 4096u}) check(size);
+  // chunks of 16 slots all free, left out
+  CHECK(check(16) < (slots.capacity() + 15) / 16);
+  // An evaluation visits every free generator's cell once, on any number of threads.
+  CVT_2::mark_domain_2(d.cdt, d.poly.holes);
+  std::set<Cdt::Vertex_handle> free;
+  for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v)
+    if (!d.cdt.are_there_incident_constraints(v)) free.insert(v);
+  std::vector<double> energies;
+  for (const unsigned threads : {1u, 2u}) {
+    CVT_2::Lloyd_optimizer_2<Cdt> lloyd(d.cdt);
+    lloyd.set_number_of_threads(threads);
+    energies.push_back(lloyd.evaluate(10).energy);
+    std::multiset<Cdt::Vertex_handle> found;
+    for (const auto& g : lloyd.free_generators()) found.insert(g.vertex);
+    CHECK(found.size() == free.size());
+    CHECK(std::set<Cdt::Vertex_handle>(found.begin(), found.end()) == free);
+  }
+  CHECK(energies[0] == energies[1]);
+  CHECK(CVT_2::internal::Face_chunks<Cdt>(Cdt()).size() == 0);  // no plane: no chunks
 }

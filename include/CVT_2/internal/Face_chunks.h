@@ -12,13 +12,16 @@
 namespace CVT_2 {
 namespace internal {
 
-// The faces of a triangulation (infinite ones included) in runs of chunk_size(), in memory
-// order, for passes that run on several threads. A chunk has a fixed size, so that chunks, and
-// any sum made chunk by chunk and then over the chunks in order, do not depend on the number
-// of threads; smaller chunks for heavier work per face, so that small triangulations still
-// have chunks for two threads (run_chunks() gives each thread two or more). Moving vertices and
-// flipping edges create and delete no face, so the chunks stay valid across them; inserting or
-// removing vertices invalidates them.
+// The faces of a triangulation (infinite ones included) in runs, in memory order, for passes
+// that run on several threads: a chunk holds the faces of chunk_size() consecutive slots of the
+// triangulation's face container (fewer faces where slots are free; a chunk without any is
+// left out). The chunks depend on the container only, so that chunks, and any sum made chunk
+// by chunk and then over the chunks in order, do not depend on the number of threads; and
+// update() finds each chunk's first face by its slot number, without a walk over the faces
+// (a serial pass at every evaluation). Smaller chunks for heavier work per face, so that small
+// triangulations still have chunks for two threads (run_chunks() gives each thread two or
+// more). Moving vertices and flipping edges create and delete no face, so the chunks stay
+// valid across them; inserting or removing vertices invalidates them.
 template <class CDT>
 class Face_chunks {
  public:
@@ -40,13 +43,18 @@ class Face_chunks {
     m_cdt = &cdt;
     m_starts.clear();
     if (cdt.dimension() < 2) return;
-    std::size_t i = 0;
-    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f, ++i)
-      if (i % m_chunk_size == 0) m_starts.push_back(f);
+    auto& faces = cdt.tds().faces();  // CGAL's Compact_container: slots by number in O(1)
+    const std::size_t slots = faces.capacity();
+    for (std::size_t first = 0; first < slots; first += m_chunk_size) {
+      const std::size_t last = std::min(slots, first + m_chunk_size);
+      std::size_t i = first;
+      while (i < last && !faces.is_used(i)) ++i;
+      if (i < last) m_starts.push_back(faces.iterator_to(faces[i]));
+    }
   }
 
   std::size_t size() const { return m_starts.size(); }     // the number of chunks
-  std::size_t chunk_size() const { return m_chunk_size; }  // faces a chunk, but the last
+  std::size_t chunk_size() const { return m_chunk_size; }  // slots a chunk, hence most faces
 
   // Calls visit(chunk, first, last) for every chunk, with the range of its faces, on `threads`
   // threads (0: one per core; 1: in order, in this thread), as run_chunks() does: `visit` must
