@@ -307,8 +307,9 @@ class Lloyd_optimizer_2 {
     bool is_free;
     std::size_t vertices, asked, nodes;
   };
-  // What a chunk evaluated in batch keeps between its passes; reused from chunk to chunk.
-  struct Batch_buffers {
+  // What a chunk evaluated in batch keeps between its passes; reused from chunk to chunk. Each
+  // thread holds one and writes it at every cell: on cache lines of its own.
+  struct alignas(internal::cache_line) Batch_buffers {
     std::vector<Batch_cell> cells;
     std::vector<Point_2> vertices, asked;
     std::vector<FT> nodes, values;

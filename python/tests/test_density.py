@@ -42,7 +42,7 @@ def test_the_density_is_called_with_batches(data):
     result = cvt2.optimize(domain, points, algorithm="lloyd", density=rho, max_iterations=3,
                            move_ratio=0)
     assert result.evaluations == 4
-    # One call a chunk of cells an evaluation (1024 faces under a quadrature rule): tens of
+    # One call a chunk of cells an evaluation (up to 1024 faces under a quadrature rule): tens of
     # calls, each with the quadrature points of hundreds of cells (about 42 a cell: 7 a fan
     # triangle, 6 fan triangles a cell on average), the last chunk's fewer.
     calls_per_evaluation = len(rho.sizes) / result.evaluations

@@ -5,6 +5,8 @@
 
 #include <CVT_2/internal/run_chunks.h>
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <vector>
@@ -38,19 +40,26 @@ class Face_chunks {
     update(cdt);
   }
 
-  // Cuts the faces of `cdt` into chunks again.
+  // Cuts the faces of `cdt` into chunks again. The slots are numbered by the block sizes that
+  // the triangulation's own growth gives its face container (CGAL's Compact_container, a slot
+  // by number in O(1)); a container assigned or merged into by hand would break that.
   void update(const CDT& cdt) {
     m_cdt = &cdt;
-    m_starts.clear();
-    if (cdt.dimension() < 2) return;
-    auto& faces = cdt.tds().faces();  // CGAL's Compact_container: slots by number in O(1)
-    const std::size_t slots = faces.capacity();
-    for (std::size_t first = 0; first < slots; first += m_chunk_size) {
-      const std::size_t last = std::min(slots, first + m_chunk_size);
-      std::size_t i = first;
-      while (i < last && !faces.is_used(i)) ++i;
-      if (i < last) m_starts.push_back(faces.iterator_to(faces[i]));
+    std::vector<Face_iterator> starts;
+    if (cdt.dimension() == 2) {
+      auto& faces = cdt.tds().faces();
+      const std::size_t slots = faces.capacity();
+      starts.reserve((slots + m_chunk_size - 1) / m_chunk_size);
+      for (std::size_t first = 0; first < slots; first += m_chunk_size) {
+        const std::size_t last = std::min(slots, first + m_chunk_size);
+        std::size_t i = first;
+        while (i < last && !faces.is_used(i)) ++i;
+        if (i == last) continue;
+        starts.push_back(faces.iterator_to(faces[i]));
+        CGAL_assertion(faces.index(starts.back()) == i);
+      }
     }
+    m_starts.swap(starts);  // all or nothing
   }
 
   std::size_t size() const { return m_starts.size(); }     // the number of chunks
