@@ -222,9 +222,9 @@ class Bvd_mesh_2 {
   void pair_constraint_sides();
 
   // Cells and circumcenters are numbered chunk by chunk in one pass: a vertex's or face's id holds
-  // its chunk and its number in the chunk, the chunks' offsets make it global.
-  static constexpr int cell_bits = 14,
-                       center_bits = 12;  // a chunk: <= 4096 faces, 3 x 4096 vertices
+  // its chunk and its number in the chunk, the chunks' offsets make it global. A chunk has at
+  // most 4096 faces, and 3 x 4096 vertices.
+  static constexpr int cell_bits = 14, center_bits = 12;
   Index cell_number(Vertex_handle v) const {
     const std::size_t id = m_cell_of.get(v);
     return Index(m_cell_offsets[id >> cell_bits] + (id & ((1u << cell_bits) - 1)));

@@ -274,7 +274,7 @@ class Lloyd_optimizer_2 {
   };
 
   // What a chunk of cells adds up to, in the order of its cells; its free generators go to its
-  // list in m_moves. Written at every cell: on a cache line of its own.
+  // list in m_moves. Written at every cell: on cache lines of its own.
   struct alignas(internal::cache_line) Chunk {
     double mass = 0, energy = 0, max_move_ratio = 0, sum_move_ratio = 0;
     std::vector<Free_generator>* moves = nullptr;

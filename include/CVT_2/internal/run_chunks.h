@@ -46,11 +46,10 @@ inline unsigned usable_cores() {
 // a cache line with another chunk's: two threads writing one line pass it back and forth between
 // their cores at every write ("false sharing"). Outputs kept side by side, one a chunk, are
 // therefore aligned to lines of their own: alignas(cache_line) on a struct, or Chunk_vector
-// for a list. Two lines of 64 bytes, as x86 processors fetch lines in pairs. Before, the cells'
-// pass at 1e5 took 1.3 times the time on two threads.
+// for a list. Two lines of 64 bytes, as x86 processors fetch lines in pairs.
 constexpr std::size_t cache_line = 128;
 
-// A std::vector alone on its cache line: one of the lists the chunks of a pass fill side by side.
+// A std::vector alone on its cache lines: one of the lists the chunks of a pass fill side by side.
 template <class T>
 struct alignas(cache_line) Chunk_vector : std::vector<T> {
   using std::vector<T>::vector;
