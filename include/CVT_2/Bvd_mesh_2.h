@@ -605,14 +605,18 @@ void Bvd_mesh_2<Diagram>::list_sides_on_constraints() {
       if (m_sides[e].constraint != none) m_on_constraints.emplace_back(Index(k), e);
 }
 
-// Vertices found at one point made one: union-find over `same`, a group's smallest number its
-// root; the vertices from `first` on closed up in order, a merged one given its root's new
-// number, in renumber[i - first]. False, and nothing changed, if a group holds two vertices
-// below `first` (which keep their numbers).
+// Vertices found at one point made one: union-find over `same`. A group's root is its vertex
+// below `first` if it has one (which keeps its number), else its generator if it has one (an
+// input point, exact, where the others are constructions rounded near it: the cell keeps its
+// generator as a vertex), else its smallest number; the vertices from `first` on closed up in
+// order, a merged one given its root's new number, in renumber[i - first]. The same groups and
+// roots whatever the order of `same`. False, and nothing changed, if a group holds two vertices
+// below `first`.
 template <class Diagram>
 bool Bvd_mesh_2<Diagram>::merge_points(const std::vector<std::pair<Index, Index>>& same,
                                        Index first, std::vector<Index>& renumber) {
-  std::vector<Index> parent(m_points.size() - first);
+  const Index size = Index(m_points.size());
+  std::vector<Index> parent(size - first);
   std::iota(parent.begin(), parent.end(), first);
   const auto root = [&](Index i) {  // halving the paths; the vertices below first are roots
     while (i >= first && parent[i - first] != i) {
@@ -621,23 +625,29 @@ bool Bvd_mesh_2<Diagram>::merge_points(const std::vector<std::pair<Index, Index>
     }
     return i;
   };
+  const auto rank = [&](Index i) {  // the smallest rank in a group is its root
+    return std::make_tuple(i >= first, m_types[i] != Cell_vertex::GENERATOR, i);
+  };
   for (const auto& [a, b] : same) {
     const Index ra = root(a), rb = root(b);
     if (ra == rb) continue;
     if (std::max(ra, rb) < first) return false;
-    parent[std::max(ra, rb) - first] = std::min(ra, rb);
+    if (rank(ra) < rank(rb))
+      parent[rb - first] = ra;
+    else
+      parent[ra - first] = rb;
   }
   renumber.assign(parent.size(), none);
   Index next = first;
-  for (Index i = first; i < m_points.size(); ++i) {
-    const Index r = root(i);
-    if (r == i) {
+  for (Index i = first; i < size; ++i)
+    if (root(i) == i) {
       m_points[next] = m_points[i];
       m_types[next] = m_types[i];
       renumber[i - first] = next++;
-    } else {
-      renumber[i - first] = r < first ? r : renumber[r - first];
     }
+  for (Index i = first; i < size; ++i) {
+    const Index r = root(i);
+    if (r != i) renumber[i - first] = r < first ? r : renumber[r - first];
   }
   m_points.resize(next);
   m_types.resize(next);
