@@ -7,12 +7,16 @@
 #include <CVT_2/Cvt_triangulation_2.h>
 #include <CVT_2/Lloyd_optimizer_2.h>
 #include <CVT_2/internal/Face_chunks.h>
+#include <CVT_2/internal/sort_faces.h>
 
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/hilbert_sort.h>
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <map>
 #include <set>
@@ -576,4 +580,127 @@ TEST_CASE("Face_chunks: every face once, in memory order, in runs of slots, free
   }
   CHECK(energies[0] == energies[1]);
   CHECK(CVT_2::internal::Face_chunks<Cdt>(Cdt()).size() == 0);  // no plane: no chunks
+}
+
+TEST_CASE("sort_faces: the same triangulation, its faces in the Hilbert order of their centroids",
+          "[bvd]") {
+  using Vh = Cdt::Vertex_handle;
+  using Key = std::array<Vh, 3>;  // a face's vertices, in its order
+  struct Flags {
+    bool inside;
+    std::array<bool, 3> constrained;
+    std::pair<Vh, Vh> blinding;  // the blinding edge's ends, or none
+    bool operator==(const Flags& o) const {
+      return inside == o.inside && constrained == o.constrained && blinding == o.blinding;
+    }
+  };
+  const auto key = [](Cdt::Face_handle f) { return Key{f->vertex(0), f->vertex(1), f->vertex(2)}; };
+  const auto flags = [](Cdt::Face_handle f) {
+    Flags r{f->is_inside_domain(), {}, {}};
+    for (int i = 0; i < 3; ++i) r.constrained[std::size_t(i)] = f->is_constrained(i);
+    if (f->is_blinded()) {
+      const auto e = f->blinding_edge();
+      r.blinding =
+          std::minmax(e.first->vertex(Cdt::ccw(e.second)), e.first->vertex(Cdt::cw(e.second)));
+    }
+    return r;
+  };
+  const auto faces = [&](const Cdt& cdt) {
+    std::map<Key, Flags> m;
+    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) m.emplace(key(f), flags(f));
+    return m;
+  };
+  const auto cells = [](const Bvd& bvd) {  // each cell's points, sorted (its first may change)
+    std::map<Vh, std::vector<Point>> m;
+    bvd.for_each_cell([&](Vh v, const auto& cell) {
+      for (const auto& c : cell) m[v].push_back(c.point);
+      std::sort(m[v].begin(), m[v].end());
+    });
+    return m;
+  };
+  Domain d;
+  load_domain(d, "us_massachusetts_counties.poly");
+  const std::vector<Point> points = random_points_in_domain(d.cdt, 5000, 5);
+  d.cdt.insert(points.begin(), points.end());  // CGAL's insertion: the faces where it made them
+  CVT_2::mark_domain_2(d.cdt, d.poly.holes);
+  Bvd bvd(d.cdt);
+  REQUIRE(bvd.number_of_blinded_faces() > 0);
+  // The share of the neighbors of finite faces that lie within 64 faces in memory.
+  const auto near = [](const Cdt& cdt) {
+    std::map<Cdt::Face_handle, std::ptrdiff_t> rank;
+    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
+      rank.emplace(f, std::ptrdiff_t(rank.size()));
+    std::size_t near = 0, all = 0;
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+      for (int i = 0; i < 3; ++i)
+        if (!cdt.is_infinite(f->neighbor(i))) {
+          ++all;
+          near += std::abs(rank[f->neighbor(i)] - rank[f]) <= 64;
+        }
+    return double(near) / double(all);
+  };
+  const double near_before = near(d.cdt);
+  std::vector<Point> centroids_before;  // the finite faces' centroids, in memory order
+  for (auto f = d.cdt.finite_faces_begin(); f != d.cdt.finite_faces_end(); ++f)
+    centroids_before.push_back(CGAL::centroid(d.cdt.triangle(f)));
+  const auto faces_before = faces(d.cdt);
+  const auto cells_before = cells(bvd);
+  const auto slots = [](const Cdt& cdt) {
+    std::vector<Cdt::Face_handle> v;
+    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) v.push_back(f);
+    return v;
+  };
+  const auto slots_before = slots(d.cdt);
+
+  CVT_2::internal::sort_faces(d.cdt);
+  CHECK(d.cdt.is_valid());
+  std::size_t blind = 0;
+  for (auto f = d.cdt.all_faces_begin(); f != d.cdt.all_faces_end(); ++f) blind += f->is_blinded();
+  CHECK(blind == 0);  // cleared
+  // The same slots, holding the same faces (vertices in the same order, the same flags) but for
+  // the blind tags, which the diagram's update gives back.
+  CHECK(slots(d.cdt) == slots_before);
+  bvd.update();
+  CHECK(faces(d.cdt) == faces_before);
+  CHECK(cells(bvd) == cells_before);
+  // Memory order: the finite faces in the Hilbert order of their centroids, then the infinite.
+  std::vector<Point> centroids;
+  bool infinite_seen = false, finite_after_infinite = false;
+  for (auto f = d.cdt.all_faces_begin(); f != d.cdt.all_faces_end(); ++f) {
+    if (d.cdt.is_infinite(f)) {
+      infinite_seen = true;
+      continue;
+    }
+    finite_after_infinite = finite_after_infinite || infinite_seen;
+    centroids.push_back(CGAL::centroid(d.cdt.triangle(f)));
+  }
+  CHECK(!finite_after_infinite);
+  // CGAL's Hilbert sort of them (it shuffles with a fixed seed first, and leaves a set that
+  // falls in one quadrant of its box as it is: the order depends on the order given)
+  CGAL::hilbert_sort(centroids_before.begin(), centroids_before.end(), K(),
+                     CGAL::Hilbert_sort_middle_policy());
+  CHECK(centroids == centroids_before);
+  const double near_after = near(d.cdt);
+  CAPTURE(near_before, near_after);
+  CHECK(near_after > near_before + 0.3);
+
+  // insert_generators_2() lays out the faces when the new vertices are half or more, not after
+  // a few: the faces it leaves alone keep their slots (a layout would shift most of them).
+  std::map<Cdt::Face_handle, Key> slot_face;
+  for (auto f = d.cdt.all_faces_begin(); f != d.cdt.all_faces_end(); ++f) slot_face[f] = key(f);
+  const std::size_t vertices = d.cdt.number_of_vertices();
+  CVT_2::insert_generators_2(d.cdt, random_points_in_domain(d.cdt, 10, 6));
+  CHECK(d.cdt.number_of_vertices() == vertices + 10);
+  std::size_t kept = 0;
+  for (auto f = d.cdt.all_faces_begin(); f != d.cdt.all_faces_end(); ++f) {
+    const auto s = slot_face.find(f);
+    kept += s != slot_face.end() && s->second == key(f);
+  }
+  CHECK(kept + 100 > slot_face.size());
+  // From an empty domain, 5000 generators: laid out.
+  Domain e;
+  load_domain(e, "us_massachusetts_counties.poly");
+  CVT_2::insert_generators_2(e.cdt, points);
+  CHECK(e.cdt.is_valid());
+  CHECK(near(e.cdt) == Approx(near_after).margin(0.02));
 }

@@ -4,6 +4,7 @@
 #define CVT_2_INSERT_GENERATORS_2_H
 
 #include <CVT_2/exceptions.h>
+#include <CVT_2/internal/sort_faces.h>
 #include <CVT_2/internal/valid_point.h>
 #include <CVT_2/mark_domain_2.h>
 
@@ -56,6 +57,12 @@ bool is_in_domain_2(const CDT& cdt, const typename CDT::Point_2& p) {
 /// for a point on a constraint, of the face on their side. So any marking is kept, by seeds or
 /// from polygons. A point on a constraint is kept and becomes a constrained vertex, as in
 /// Triangle; a point already present is merged.
+///
+/// When the new vertices are at least half of all, the faces are then laid out in memory along
+/// a Hilbert curve, so that the optimizers' passes, which read them in memory order, find the
+/// faces around each vertex close by (at 10^6 generators, a Lloyd iteration takes about a
+/// quarter less time). Face handles held before the call are then invalid, and the faces' blind
+/// tags are cleared: as after any change of the triangulation, a diagram on it must be updated.
 /// \throws Domain_error (with `index()` the position in `points`) for a NaN or infinite
 ///         coordinate, one beyond 1e300 in magnitude, or a point outside the closed domain;
 ///         nothing is inserted then.
@@ -77,6 +84,7 @@ void insert_generators_2(CDT& cdt, const PointRange& points) {
                      CGAL::Spatial_sort_traits_adapter_2<typename CDT::Geom_traits, Map>(
                          CGAL::make_property_map(pts)));
   Face_handle hint;
+  std::size_t inserted = 0;
   for (const std::size_t i : order)
     if (!internal::locate_in_domain(cdt, pts[i], hint))
       throw Domain_error("generator " + internal::to_string(pts[i]) + " lies outside the domain",
@@ -115,7 +123,10 @@ void insert_generators_2(CDT& cdt, const PointRange& points) {
       fc->set_inside_domain(flag && !cdt.is_infinite(fc));
     } while (++fc != done);
     hint = v->face();
+    ++inserted;
   }
+  // Laid out again when most of the triangulation is new: not at each of many small calls.
+  if (inserted * 2 >= cdt.number_of_vertices()) internal::sort_faces(cdt);
 }
 
 }  // namespace CVT_2
