@@ -622,7 +622,12 @@ TEST_CASE("sort_faces: the same triangulation, its faces in the Hilbert order of
   load_domain(d, "us_massachusetts_counties.poly");
   const std::vector<Point> points = random_points_in_domain(d.cdt, 5000, 5);
   d.cdt.insert(points.begin(), points.end());  // CGAL's insertion: the faces where it made them
+  std::vector<Vh> removed;                     // a few, to free slots
+  for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v)
+    if (!d.cdt.are_there_incident_constraints(v) && removed.size() < 20) removed.push_back(v);
+  for (const Vh v : removed) d.cdt.remove(v);
   CVT_2::mark_domain_2(d.cdt, d.poly.holes);
+  REQUIRE(d.cdt.tds().faces().capacity() > d.cdt.tds().faces().size());  // free slots
   Bvd bvd(d.cdt);
   REQUIRE(bvd.number_of_blinded_faces() > 0);
   // The share of the neighbors of finite faces that lie within 64 faces in memory.
@@ -678,11 +683,17 @@ TEST_CASE("sort_faces: the same triangulation, its faces in the Hilbert order of
   // CGAL's Hilbert sort of them (it shuffles with a fixed seed first, and leaves a set that
   // falls in one quadrant of its box as it is: the order depends on the order given)
   CGAL::hilbert_sort(centroids_before.begin(), centroids_before.end(), K(),
-                     CGAL::Hilbert_sort_middle_policy());
+                     CGAL::Hilbert_sort_median_policy());
   CHECK(centroids == centroids_before);
   const double near_after = near(d.cdt);
   CAPTURE(near_before, near_after);
   CHECK(near_after > near_before + 0.3);
+  // Again: most faces stay where they are (a face is not its own neighbor, even for a while).
+  CVT_2::internal::sort_faces(d.cdt);
+  CHECK(d.cdt.is_valid());
+  bvd.update();
+  CHECK(faces(d.cdt) == faces_before);
+  CHECK(near(d.cdt) > near_before + 0.3);
 
   // insert_generators_2() lays out the faces when the new vertices are half or more, not after
   // a few: the faces it leaves alone keep their slots (a layout would shift most of them).
@@ -703,4 +714,21 @@ TEST_CASE("sort_faces: the same triangulation, its faces in the Hilbert order of
   CVT_2::insert_generators_2(e.cdt, points);
   CHECK(e.cdt.is_valid());
   CHECK(near(e.cdt) == Approx(near_after).margin(0.02));
+  // A domain of two squares far apart: each laid out (a sort that stopped at a cluster in one
+  // quadrant of its box would leave the big square's faces as they came).
+  CVT_2::IO::Poly_data<Point> two;
+  add_ring(two, {Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1)});
+  add_ring(two, {Point(10, 10), Point(10.1, 10), Point(10.1, 10.1), Point(10, 10.1)});
+  Cdt islands = triangulate(two);
+  CVT_2::insert_generators_2(islands, random_points_in_domain(islands, 5000, 7));
+  CHECK(islands.is_valid());
+  CHECK(near(islands) > 0.8);
+  // No plane, no layout.
+  Cdt line;
+  CVT_2::internal::sort_faces(line);
+  line.insert(Point(0, 0));
+  line.insert(Point(1, 0));
+  CVT_2::internal::sort_faces(line);
+  CHECK(line.dimension() == 1);
+  CHECK(line.is_valid());
 }

@@ -42,8 +42,9 @@ namespace CVT_2 {
 ///
 /// Cells are numbered in the order of `Bounded_voronoi_diagram_2::for_each_cell()`, vertices
 /// with the circumcenters first, in the order of their faces in memory, then the other vertices
-/// in the order of the cells that first meet them. The same triangulation gives the same mesh,
-/// whatever the number of threads.
+/// in the order of the cells that first meet them (points merged into one take the number of
+/// their constrained generator if they have one). The same triangulation, with its faces in the
+/// same order in memory, gives the same mesh, whatever the number of threads.
 ///
 /// How cells that are not simple polygons are represented:
 /// - *slits*: a constraint that ends inside a cell or crosses it at its generator (a vertex on

@@ -13,7 +13,9 @@
 #include <CGAL/spatial_sort.h>
 
 #include <iterator>
+#include <new>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace CVT_2 {
@@ -58,11 +60,13 @@ bool is_in_domain_2(const CDT& cdt, const typename CDT::Point_2& p) {
 /// from polygons. A point on a constraint is kept and becomes a constrained vertex, as in
 /// Triangle; a point already present is merged.
 ///
-/// When the new vertices are at least half of all, the faces are then laid out in memory along
-/// a Hilbert curve, so that the optimizers' passes, which read them in memory order, find the
-/// faces around each vertex close by (at 10^6 generators, a Lloyd iteration takes about a
-/// quarter less time). Face handles held before the call are then invalid, and the faces' blind
-/// tags are cleared: as after any change of the triangulation, a diagram on it must be updated.
+/// When the new vertices are at least half of all (the domain's own vertices count), the faces
+/// are then laid out in memory along a Hilbert curve, so that the optimizers' passes, which
+/// read them in memory order, find the faces around each vertex close by (at 10^6 generators, a
+/// Lloyd iteration takes about a quarter less time). Face handles held before the call then
+/// refer to other faces, and the faces' blind tags are cleared: as after any change of the
+/// triangulation, a diagram on it must be updated. The layout takes 40 bytes a face while it
+/// runs, and is skipped if that memory cannot be had.
 /// \throws Domain_error (with `index()` the position in `points`) for a NaN or infinite
 ///         coordinate, one beyond 1e300 in magnitude, or a point outside the closed domain;
 ///         nothing is inserted then.
@@ -70,7 +74,7 @@ template <class CDT, class PointRange>
 void insert_generators_2(CDT& cdt, const PointRange& points) {
   using Point_2 = typename CDT::Point_2;
   using Face_handle = typename CDT::Face_handle;
-  const std::vector<Point_2> pts(std::begin(points), std::end(points));
+  std::vector<Point_2> pts(std::begin(points), std::end(points));
   if (pts.empty()) return;  // make_property_map() would take the address of pts[0]
   for (std::size_t i = 0; i < pts.size(); ++i)
     if (!internal::is_valid_point(pts[i]))
@@ -82,7 +86,7 @@ void insert_generators_2(CDT& cdt, const PointRange& points) {
   using Map = typename CGAL::Pointer_property_map<Point_2>::const_type;
   CGAL::spatial_sort(order.begin(), order.end(),
                      CGAL::Spatial_sort_traits_adapter_2<typename CDT::Geom_traits, Map>(
-                         CGAL::make_property_map(pts)));
+                         CGAL::make_property_map(std::as_const(pts))));
   Face_handle hint;
   std::size_t inserted = 0;
   for (const std::size_t i : order)
@@ -125,8 +129,15 @@ void insert_generators_2(CDT& cdt, const PointRange& points) {
     hint = v->face();
     ++inserted;
   }
-  // Laid out again when most of the triangulation is new: not at each of many small calls.
-  if (inserted * 2 >= cdt.number_of_vertices()) internal::sort_faces(cdt);
+  // Laid out again when most of the triangulation is new: not at each of many small calls. The
+  // layout only speeds up what follows: without the memory for it, the faces stay as they are.
+  if (inserted * 2 < cdt.number_of_vertices()) return;
+  std::vector<std::size_t>().swap(order);
+  std::vector<Point_2>().swap(pts);
+  try {
+    internal::sort_faces(cdt);
+  } catch (const std::bad_alloc&) {
+  }
 }
 
 }  // namespace CVT_2

@@ -272,9 +272,10 @@ double physical_memory() {
 #endif
 }
 
-// Peak memory per generator, at most (triangulation, cells, moves; L-BFGS's history): what
-// memory cannot hold is refused rather than killed after minutes of work.
-double bytes_per_generator(const Options& o) { return o.lbfgs ? 750 : 280; }
+// Peak memory per generator, at most (triangulation, cells, moves, the faces' layout after the
+// insertion; L-BFGS's history): what memory cannot hold is refused rather than killed after
+// minutes of work.
+double bytes_per_generator(const Options& o) { return o.lbfgs ? 750 : 360; }
 
 void insert_random_points(std::size_t n, const Options& o, const std::optional<Sizing>& sizing,
                           CDT& cdt) {

@@ -21,13 +21,17 @@ namespace CVT_2 {
 namespace internal {
 
 // Moves the faces of `cdt` within their container (the same slots of the same container) so
-// that memory order follows CGAL's Hilbert sort of their centroids, the infinite faces last;
-// every pointer to a face (neighbors, vertices' faces) follows its face, and blind tags are
-// cleared. The passes of the optimizers read faces in memory order and, from each, the faces
-// around its vertices. CGAL's spatially sorted insertion makes faces in rounds over the whole
-// domain, and the later rounds split and flip them where they lie: half the neighbors of a
-// face then lie more than 64 faces away in memory, a tenth after this. Face handles held before
-// the call are invalid after it. Extra memory: 40 bytes a face, no second container.
+// that memory order follows CGAL's Hilbert sort of their centroids (the median policy: the
+// middle one stops at a cluster that falls in one quadrant of its box, and would leave a domain
+// with a far island in shuffled order), the infinite faces last. The faces' neighbors and the
+// vertices' faces follow their faces; nothing else does (a face base's own face handles, such
+// as a blinding edge's face), and blind tags are cleared. The passes of the optimizers read
+// faces in memory order and, from each, the faces around its vertices. CGAL's spatially sorted
+// insertion makes faces in rounds over the whole domain, and the later rounds split and flip
+// them where they lie: half the neighbors of a face then lie more than 64 faces away in memory,
+// a tenth after this. Face handles held before the call then refer to other faces. Extra
+// memory: 40 bytes a face (double coordinates), no second container; everything is allocated,
+// and may throw, before the first face changes.
 template <class CDT>
 void sort_faces(CDT& cdt) {
   using Face_handle = typename CDT::Face_handle;
@@ -49,11 +53,11 @@ void sort_faces(CDT& cdt) {
       if (!cdt.is_infinite(f))
         finite.emplace_back(
             CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()), j);
-    CGAL::hilbert_sort(
-        finite.begin(), finite.end(),
-        CGAL::Spatial_sort_traits_adapter_2<typename CDT::Geom_traits,
-                                            CGAL::First_of_pair_property_map<Item>>(),
-        CGAL::Hilbert_sort_middle_policy());
+    CGAL::hilbert_sort(finite.begin(), finite.end(),
+                       CGAL::Spatial_sort_traits_adapter_2<typename CDT::Geom_traits,
+                                                           CGAL::First_of_pair_property_map<Item>>(
+                           CGAL::First_of_pair_property_map<Item>(), cdt.geom_traits()),
+                       CGAL::Hilbert_sort_median_policy());
     for (const Item& i : finite) where.push_back(i.second);
   }
   std::vector<Face_handle> slot;
