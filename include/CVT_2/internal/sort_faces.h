@@ -41,18 +41,24 @@ void sort_faces(CDT& cdt) {
   auto& faces = cdt.tds().faces();
   if (cdt.dimension() < 2 || faces.size() > std::numeric_limits<Index>::max()) return;
   const std::size_t n = faces.size();
-  // rank[j]: the rank of the face in slot j (the j-th face of the container, in memory order);
-  // where[k]: the slot of the face of rank k, the infinite faces ranked last
-  std::vector<Index> rank(n), where;
+  // slot[j]: the j-th face of the container, in memory order; where[k]: the slot of the face of
+  // rank k, the infinite faces ranked last; rank[j]: the rank of the face in slot j
+  std::vector<Face_handle> slot;
+  std::vector<Index> where, infinite, rank(n);
+  slot.reserve(n);
   where.reserve(n);
   {
     std::vector<Item> finite;
     finite.reserve(n);
-    Index j = 0;
-    for (auto f = faces.begin(); f != faces.end(); ++f, ++j)
-      if (!cdt.is_infinite(f))
+    for (auto f = faces.begin(); f != faces.end(); ++f) {
+      const Index j = Index(slot.size());
+      slot.push_back(f);
+      if (cdt.is_infinite(f))
+        infinite.push_back(j);
+      else
         finite.emplace_back(
             CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()), j);
+    }
     CGAL::hilbert_sort(finite.begin(), finite.end(),
                        CGAL::Spatial_sort_traits_adapter_2<typename CDT::Geom_traits,
                                                            CGAL::First_of_pair_property_map<Item>>(
@@ -60,15 +66,7 @@ void sort_faces(CDT& cdt) {
                        CGAL::Hilbert_sort_median_policy());
     for (const Item& i : finite) where.push_back(i.second);
   }
-  std::vector<Face_handle> slot;
-  slot.reserve(n);
-  {
-    Index j = 0;
-    for (auto f = faces.begin(); f != faces.end(); ++f, ++j) {
-      slot.push_back(f);
-      if (cdt.is_infinite(f)) where.push_back(j);
-    }
-  }
+  where.insert(where.end(), infinite.begin(), infinite.end());
   for (std::size_t k = 0; k < n; ++k) rank[where[k]] = Index(k);
   // Each face's new place goes into its neighbor(0) for the time of the move (any face's new
   // place in one read; none for a face that stays, as a face may not be its own neighbor), and
