@@ -291,12 +291,8 @@ class Lloyd_optimizer_2 {
     }
   };
 
-  template <class Cell>
-  Cell_figures cell_figures(Vertex_handle v, const Cell& cell, std::size_t resolution) const;
   Cell_figures cell_figures(Vertex_handle v, const Cell_points& points, bool is_free,
                             const Cell_moments_2<Kernel>& m) const;
-  template <class Cell>
-  static bool cell_points(const Cell& cell, Cell_points& points);
   template <class Face_iterator>
   void add_cells_in_batch(Face_iterator first, Face_iterator last, std::size_t resolution,
                           Chunk& sums) const;
@@ -399,10 +395,12 @@ auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::evaluate(std::size_t r
         if constexpr (has_batch_evaluation_v<Density, Kernel>) {
           add_cells_in_batch(first, last, resolution, m_chunk_sums[c]);
         } else {
-          internal::for_each_cell_in_faces(m_diagram, first, last,
-                                           [&](Vertex_handle v, const auto& cell) {
-                                             m_chunk_sums[c].add(cell_figures(v, cell, resolution));
-                                           });
+          Cell_points points;
+          internal::for_each_cell_points_in_faces(
+              m_diagram, first, last, points,
+              [&](Vertex_handle v, const Cell_points& cell, bool is_free) {
+                m_chunk_sums[c].add(cell_figures(v, cell, is_free, moments(v, cell, resolution)));
+              });
         }
       },
       m_number_of_threads);
@@ -410,31 +408,6 @@ auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::evaluate(std::size_t r
   m_evaluation.resolution = resolution;
   reduce_chunks();
   return m_evaluation;
-}
-
-// The moments of the cell of v, checked, and for a free generator its centroid and move ratio.
-template <class CDT, class Density, class Quadrature, class Traits>
-template <class Cell>
-auto Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::cell_figures(Vertex_handle v,
-                                                                       const Cell& cell,
-                                                                       std::size_t resolution) const
-    -> Cell_figures {
-  Cell_points points;
-  const bool is_free = cell_points(cell, points);
-  return cell_figures(v, points, is_free, moments(v, points, resolution));
-}
-
-// The points of `cell` into `points`; whether its generator is free (not one of them).
-template <class CDT, class Density, class Quadrature, class Traits>
-template <class Cell>
-bool Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::cell_points(const Cell& cell,
-                                                                      Cell_points& points) {
-  bool is_free = true;
-  for (const auto& c : cell) {
-    points.push_back(c.point);
-    is_free = is_free && c.type != Diagram::Cell_vertex::GENERATOR;
-  }
-  return is_free;
 }
 
 // The cells of the faces [first, last) with a batch density (DensityFunction_2::evaluate()):
@@ -451,19 +424,19 @@ void Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>::add_cells_in_batch(Fac
   constexpr bool with_nodes = has_quadrature_nodes_v<Quadrature, Kernel>;
   auto b = m_batch_buffers.take();  // freed, not given back, if an exception leaves
   b->clear();
-  internal::for_each_cell_in_faces(m_diagram, first, last, [&](Vertex_handle v, const auto& cell) {
-    Cell_points points;
-    const bool is_free = cell_points(cell, points);
-    const Batch_cell c{v, is_free, b->vertices.size(), b->asked.size(), b->nodes.size()};
-    if constexpr (with_nodes) {
-      m_quadrature.nodes(v->point(), points, resolution, b->asked, b->nodes);
-    } else {
-      const internal::Recording_density<Point_2, FT> record{&b->asked};
-      m_quadrature(v->point(), points, record, resolution);
-    }
-    b->vertices.insert(b->vertices.end(), points.begin(), points.end());
-    b->cells.push_back(c);
-  });
+  Cell_points cell;
+  internal::for_each_cell_points_in_faces(
+      m_diagram, first, last, cell, [&](Vertex_handle v, const Cell_points& points, bool is_free) {
+        const Batch_cell c{v, is_free, b->vertices.size(), b->asked.size(), b->nodes.size()};
+        if constexpr (with_nodes) {
+          m_quadrature.nodes(v->point(), points, resolution, b->asked, b->nodes);
+        } else {
+          const internal::Recording_density<Point_2, FT> record{&b->asked};
+          m_quadrature(v->point(), points, record, resolution);
+        }
+        b->vertices.insert(b->vertices.end(), points.begin(), points.end());
+        b->cells.push_back(c);
+      });
   internal::evaluate_in_batch(m_density, b->asked, b->values);
   std::size_t next = 0;
   const internal::Replaying_density<Point_2, FT> replay{&b->asked, &b->values, &next};

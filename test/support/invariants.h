@@ -184,6 +184,35 @@ inline std::size_t check_diagram(const Bvd& bvd, std::size_t samples, unsigned s
   CHECK(non_convex == 0);
   CHECK(not_containing == 0);
 
+  // The optimizers' pass lists each cell's points as cell() does, to the bit, each vertex once:
+  // the cells it reads straight from the faces (free, no blind face) and the others.
+  std::map<Cdt::Vertex_handle, std::vector<Point>> listed;
+  std::vector<Point> points;
+  std::size_t twice = 0, wrong_points = 0, wrong_free = 0;
+  CVT_2::internal::for_each_cell_points_in_faces(
+      bvd, cdt.all_faces_begin(), cdt.all_faces_end(), points,
+      [&](Cdt::Vertex_handle v, const std::vector<Point>& p, bool is_free) {
+        if (!listed.emplace(v, p).second) ++twice;
+        if (is_free != bvd.is_free(v)) ++wrong_free;
+      });
+  std::size_t with_cell = 0;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    bvd.cell(v, c);
+    if (c.empty()) continue;
+    ++with_cell;
+    const auto it = listed.find(v);
+    if (it == listed.end() || it->second.size() != c.size()) {
+      ++wrong_points;
+      continue;
+    }
+    for (std::size_t i = 0; i < c.size(); ++i)
+      if (it->second[i] != c[i].point) ++wrong_points;
+  }
+  CHECK(twice == 0);
+  CHECK(wrong_points == 0);
+  CHECK(wrong_free == 0);
+  CHECK(listed.size() == with_cell);
+
   // Sample points fall in the cell of their nearest visible generator (brute force).
   if (samples == 0) return 0;
   const Visibility_oracle oracle(bvd);

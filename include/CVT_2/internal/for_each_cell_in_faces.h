@@ -31,6 +31,58 @@ void for_each_cell_in_faces(const Diagram& diagram, Face_iterator first, Face_it
   });
 }
 
+// The same visit, with each cell as its points: visit(v, points, is_free), where `points` (a
+// container of Point_2 with clear() and push_back(), reused between calls) holds the cell's
+// vertices counterclockwise without repeats, as cell() lists them, and is_free tells that v is
+// not one of them. Most cells are those of a free vertex whose faces are all in the domain and
+// see their circumcenters: such a cell is the circumcenters of the faces in the order of the
+// circulation, and it is read straight from the faces, without a Cell_vertex; the same points,
+// to the bit, as cell() gives. Any other vertex takes cell().
+template <class Diagram, class Face_iterator, class Points, class Visit>
+void for_each_cell_points_in_faces(const Diagram& diagram, Face_iterator first, Face_iterator last,
+                                   Points& points, const Visit& visit) {
+  using CDT = typename Diagram::Triangulation;
+  using Vertex_handle = typename Diagram::Vertex_handle;
+  const auto& cdt = diagram.triangulation();
+  const auto circumcenter = diagram.geom_traits().construct_circumcenter_2_object();
+  std::vector<typename Diagram::Cell_vertex> c;
+  const auto add = [&points](const auto& p) {
+    if (points.empty() || points.back() != p) points.push_back(p);
+  };
+  for_each_face_prefetched(first, last, [&](const auto& f) {
+    for (int i = 0; i < 3; ++i) {
+      const Vertex_handle v = f->vertex(i);
+      if (v->face() != f || cdt.is_infinite(v)) continue;  // each vertex once, at its face
+      points.clear();
+      bool plain = true;  // a free vertex, its faces in the domain, none blind
+      auto fc = cdt.incident_faces(v);
+      const auto done = fc;
+      do {
+        if (!fc->is_inside_domain() || fc->is_blinded() ||
+            fc->is_constrained(CDT::cw(fc->index(v)))) {
+          plain = false;
+          break;
+        }
+        add(circumcenter(fc->vertex(0)->point(), fc->vertex(1)->point(), fc->vertex(2)->point()));
+      } while (++fc != done);
+      if (plain) {
+        if (points.size() > 1 && points.back() == points.front()) points.pop_back();
+        visit(v, static_cast<const Points&>(points), true);
+        continue;
+      }
+      diagram.cell(v, c);
+      if (c.empty()) continue;
+      points.clear();
+      bool is_free = true;
+      for (const auto& x : c) {
+        points.push_back(x.point);
+        is_free = is_free && x.type != Diagram::Cell_vertex::GENERATOR;
+      }
+      visit(v, static_cast<const Points&>(points), is_free);
+    }
+  });
+}
+
 }  // namespace internal
 }  // namespace CVT_2
 
