@@ -8,6 +8,7 @@
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
 #include <CVT_2/internal/Chunked_list.h>
 #include <CVT_2/internal/Face_chunks.h>
+#include <CVT_2/internal/sort_faces.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
@@ -756,5 +757,51 @@ TEST_CASE("random domains: Lloyd never raises the energy and keeps generators in
       outside += !cdt.are_there_incident_constraints(v) && !CVT_2::is_in_domain_2(cdt, v->point());
     REQUIRE(outside == 0);
     check_diagram(Bvd(cdt), 20, seed);  // and the final diagram
+  }
+}
+
+TEST_CASE("the optimizers lay out the faces that CGAL's own insertion scattered, for long runs",
+          "[lloyd]") {
+  // Built by CGAL's insertion, 2^16 faces and more: scattered in memory (insert_generators_2
+  // lays out its own). A run of 16 iterations or more lays them out first; a shorter one does
+  // not. Either way, the same result as from a triangulation laid out by hand.
+  const auto build = [](bool laid_out) {
+    Domain d;
+    load_square(d);
+    const std::vector<Point> points = random_points_in_domain(d.cdt, 40000, 3);
+    d.cdt.insert(points.begin(), points.end());
+    CVT_2::mark_domain_2(d.cdt, d.poly.holes);
+    REQUIRE(d.cdt.number_of_faces() >= std::size_t(1) << 16);
+    if (laid_out) CVT_2::internal::sort_faces(d.cdt);
+    return d;
+  };
+  const auto points_of = [](const Cdt& cdt) {
+    std::vector<Point> p;
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      p.push_back(v->point());
+    return p;
+  };
+  for (const bool lbfgs : {false, true}) {
+    CAPTURE(lbfgs);
+    const auto run = [lbfgs](Cdt& cdt, std::size_t iterations) {
+      const auto np = CVT_2::parameters::number_of_iterations(iterations).move_ratio_bound(0);
+      return lbfgs ? CVT_2::lbfgs_optimize_2(cdt, np) : CVT_2::lloyd_optimize_2(cdt, np);
+    };
+    Domain scattered = build(false), by_hand = build(true);
+    REQUIRE(CVT_2::internal::faces_are_scattered(scattered.cdt));
+    REQUIRE(!CVT_2::internal::faces_are_scattered(by_hand.cdt));
+    const std::vector<Point> start = points_of(scattered.cdt);
+
+    Domain short_run = build(false);
+    run(short_run.cdt, 15);
+    CHECK(CVT_2::internal::faces_are_scattered(short_run.cdt));
+
+    const auto r = run(scattered.cdt, 16);
+    const auto r_by_hand = run(by_hand.cdt, 16);
+    CHECK(!CVT_2::internal::faces_are_scattered(scattered.cdt));
+    CHECK(scattered.cdt.is_valid());
+    CHECK(points_of(scattered.cdt) != start);
+    CHECK(points_of(scattered.cdt) == points_of(by_hand.cdt));
+    CHECK(r.energy_history == r_by_hand.energy_history);
   }
 }

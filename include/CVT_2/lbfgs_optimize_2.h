@@ -29,7 +29,10 @@ namespace CVT_2 {
 /// line-search trials included.
 ///
 /// \param cdt a constrained Delaunay triangulation with its domain marked (see
-///        `Bounded_voronoi_diagram_2`); its free vertices are moved in place.
+///        `Bounded_voronoi_diagram_2`); its free vertices are moved in place. Before a run of
+///        16 iterations or more, faces that CGAL's own insertion left scattered in memory
+///        (2^16 faces or more) are laid out as `insert_generators_2()` does: face handles
+///        held before the call then refer to other faces.
 /// \param np optional named parameters: those of `lloyd_optimize_2()` (`density`,
 ///        `sizing_field`, `quadrature`, `minimum_quadrature_resolution`,
 ///        `maximum_quadrature_resolution`, `move_ratio_bound`, `number_of_iterations` (at most
@@ -45,6 +48,7 @@ Optimization_result lbfgs_optimize_2(CDT& cdt, const NP& np = parameters::defaul
   using Optimizer = Lbfgs_optimizer_2<CDT, typename Parameters::Density,
                                       typename Parameters::Quadrature, typename Parameters::Traits>;
   const Parameters p(np);
+  internal::lay_out_faces(cdt, p.options);
   Optimizer lbfgs(cdt, p.density, p.quadrature, p.options.lbfgs_memory, p.traits);
   lbfgs.set_number_of_threads(p.options.threads);
   return internal::run_optimization(lbfgs, p.options, "lbfgs");

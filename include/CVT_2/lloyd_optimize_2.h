@@ -18,7 +18,10 @@ namespace CVT_2 {
 /// The result describes the generators as they are at the end (`Optimization_result`).
 ///
 /// \param cdt a constrained Delaunay triangulation with its domain marked (see
-///        `Bounded_voronoi_diagram_2`); its free vertices are moved in place.
+///        `Bounded_voronoi_diagram_2`); its free vertices are moved in place. Before a run of
+///        16 iterations or more, faces that CGAL's own insertion left scattered in memory
+///        (2^16 faces or more) are laid out as `insert_generators_2()` does: face handles
+///        held before the call then refer to other faces.
 /// \param np optional named parameters among:
 ///   - `density(rho)`: a model of `DensityFunction_2` (a lambda works); default uniform.
 ///   - `sizing_field(mu)`: a sizing field \f$\mu\f$ instead, used as \f$\rho = 1/\mu^4\f$ (cell
@@ -48,6 +51,7 @@ Optimization_result lloyd_optimize_2(CDT& cdt, const NP& np = parameters::defaul
   using Optimizer = Lloyd_optimizer_2<CDT, typename Parameters::Density,
                                       typename Parameters::Quadrature, typename Parameters::Traits>;
   const Parameters p(np);
+  internal::lay_out_faces(cdt, p.options);
   Optimizer lloyd(cdt, p.density, p.quadrature, p.traits);
   lloyd.set_number_of_threads(p.options.threads);
   return internal::run_optimization(internal::Lloyd_steps<Optimizer>{lloyd}, p.options, "lloyd");

@@ -104,6 +104,30 @@ void sort_faces(CDT& cdt) {
   }
 }
 
+// Whether the faces of `cdt` lie scattered in memory, as CGAL's own insertion leaves them:
+// fewer than 3 in 4 of the neighbors of its first `sample` finite faces, in memory order, lie
+// within 64 faces of them (about 1 in 2 after CGAL's insertion, 9 in 10 after sort_faces()).
+// Distances are taken between addresses: within a block of the container they count faces,
+// across blocks they are large, as they should be.
+template <class CDT>
+bool faces_are_scattered(const CDT& cdt, std::size_t sample = std::size_t(1) << 14) {
+  if (cdt.dimension() < 2) return false;
+  const auto address = [](typename CDT::Face_handle f) {
+    return reinterpret_cast<std::uintptr_t>(&*f);
+  };
+  constexpr std::uintptr_t near = 64 * sizeof(typename CDT::Face);
+  std::size_t close = 0, all = 0, seen = 0;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end() && seen < sample; ++f, ++seen)
+    for (int i = 0; i < 3; ++i) {
+      const auto g = f->neighbor(i);
+      if (cdt.is_infinite(g)) continue;
+      const std::uintptr_t a = address(f), b = address(g);
+      ++all;
+      close += (a < b ? b - a : a - b) <= near;
+    }
+  return close * 4 < all * 3;
+}
+
 }  // namespace internal
 }  // namespace CVT_2
 
