@@ -732,3 +732,19 @@ TEST_CASE("sort_faces: the same triangulation, its faces in the Hilbert order of
   CHECK(line.dimension() == 1);
   CHECK(line.is_valid());
 }
+
+TEST_CASE("no plane: neither pass over the faces visits a cell", "[bvd][degenerate]") {
+  Cdt cdt;
+  for (const Point& p : {Point(0, 0), Point(1, 0), Point(2, 0)}) {
+    cdt.insert(p);
+    const Bvd bvd(cdt);
+    std::size_t visits = 0;
+    bvd.for_each_cell([&](Cdt::Vertex_handle, const auto&) { ++visits; });
+    std::vector<Point> points;
+    CVT_2::internal::for_each_cell_points_in_faces(
+        bvd, cdt.all_faces_begin(), cdt.all_faces_end(), points,
+        [&](Cdt::Vertex_handle, const std::vector<Point>&, bool) { ++visits; });
+    CHECK(visits == 0);
+  }
+  CHECK(cdt.dimension() == 1);
+}

@@ -44,6 +44,7 @@ void for_each_cell_points_in_faces(const Diagram& diagram, Face_iterator first, 
   using CDT = typename Diagram::Triangulation;
   using Vertex_handle = typename Diagram::Vertex_handle;
   const auto& cdt = diagram.triangulation();
+  if (cdt.dimension() < 2) return;  // no cell
   const auto circumcenter = diagram.geom_traits().construct_circumcenter_2_object();
   std::vector<typename Diagram::Cell_vertex> c;
   const auto add = [&points](const auto& p) {

@@ -107,8 +107,7 @@ void sort_faces(CDT& cdt) {
 // Whether the faces of `cdt` lie scattered in memory, as CGAL's own insertion leaves them:
 // fewer than 3 in 4 of the neighbors of its first `sample` finite faces, in memory order, lie
 // within 64 faces of them (about 1 in 2 after CGAL's insertion, 9 in 10 after sort_faces()).
-// Distances are taken between addresses: within a block of the container they count faces,
-// across blocks they are large, as they should be.
+// Distances are taken between addresses, which count faces within a block of the container.
 template <class CDT>
 bool faces_are_scattered(const CDT& cdt, std::size_t sample = std::size_t(1) << 14) {
   if (cdt.dimension() < 2) return false;
