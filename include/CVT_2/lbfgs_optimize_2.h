@@ -29,10 +29,12 @@ namespace CVT_2 {
 /// line-search trials included.
 ///
 /// \param cdt a constrained Delaunay triangulation with its domain marked (see
-///        `Bounded_voronoi_diagram_2`); its free vertices are moved in place. Before a run of
-///        16 iterations or more, faces that CGAL's own insertion left scattered in memory
-///        (2^16 faces or more) are laid out as `insert_generators_2()` does: face handles
-///        held before the call then refer to other faces.
+///        `Bounded_voronoi_diagram_2`); its free vertices are moved in place. If
+///        `number_of_iterations` is 16 or more, faces that CGAL's own insertion left
+///        scattered in memory (2^16 faces or more) are first laid out as
+///        `insert_generators_2()` does (its time counts in the run's): face handles held
+///        before the call then refer to other faces, and the results differ in the last
+///        bits from those of a shorter run.
 /// \param np optional named parameters: those of `lloyd_optimize_2()` (`density`,
 ///        `sizing_field`, `quadrature`, `minimum_quadrature_resolution`,
 ///        `maximum_quadrature_resolution`, `move_ratio_bound`, `number_of_iterations` (at most

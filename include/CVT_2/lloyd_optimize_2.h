@@ -18,10 +18,12 @@ namespace CVT_2 {
 /// The result describes the generators as they are at the end (`Optimization_result`).
 ///
 /// \param cdt a constrained Delaunay triangulation with its domain marked (see
-///        `Bounded_voronoi_diagram_2`); its free vertices are moved in place. Before a run of
-///        16 iterations or more, faces that CGAL's own insertion left scattered in memory
-///        (2^16 faces or more) are laid out as `insert_generators_2()` does: face handles
-///        held before the call then refer to other faces.
+///        `Bounded_voronoi_diagram_2`); its free vertices are moved in place. If
+///        `number_of_iterations` is 16 or more, faces that CGAL's own insertion left
+///        scattered in memory (2^16 faces or more) are first laid out as
+///        `insert_generators_2()` does (its time counts in the run's): face handles held
+///        before the call then refer to other faces, and the results differ in the last
+///        bits from those of a shorter run.
 /// \param np optional named parameters among:
 ///   - `density(rho)`: a model of `DensityFunction_2` (a lambda works); default uniform.
 ///   - `sizing_field(mu)`: a sizing field \f$\mu\f$ instead, used as \f$\rho = 1/\mu^4\f$ (cell
