@@ -105,9 +105,11 @@ void sort_faces(CDT& cdt) {
 }
 
 // Whether the faces of `cdt` lie scattered in memory, as CGAL's own insertion leaves them:
-// fewer than 3 in 4 of the neighbors of its first `sample` finite faces, in memory order, lie
-// within 64 faces of them (about 1 in 2 after CGAL's insertion, 9 in 10 after sort_faces()).
-// Distances are taken between addresses, which count faces within a block of the container.
+// fewer than 3 in 4 of the neighbors of `sample` finite faces, in memory order, lie within 64
+// faces of them (about 1 in 2 after CGAL's insertion, 9 in 10 after sort_faces()). Distances are
+// taken between addresses, which count faces within a block of the container; the first
+// `sample` faces are skipped when there are enough, as they lie in the container's first, small
+// blocks, whose neighbors across blocks are near or far as the allocator placed the blocks.
 template <class CDT>
 bool faces_are_scattered(const CDT& cdt, std::size_t sample = std::size_t(1) << 14) {
   if (cdt.dimension() < 2) return false;
@@ -115,8 +117,11 @@ bool faces_are_scattered(const CDT& cdt, std::size_t sample = std::size_t(1) << 
     return reinterpret_cast<std::uintptr_t>(&*f);
   };
   constexpr std::uintptr_t near = 64 * sizeof(typename CDT::Face);
+  auto f = cdt.finite_faces_begin();
+  if (cdt.number_of_faces() >= 2 * sample)
+    for (std::size_t k = 0; k < sample; ++k) ++f;
   std::size_t close = 0, all = 0, seen = 0;
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end() && seen < sample; ++f, ++seen)
+  for (; f != cdt.finite_faces_end() && seen < sample; ++f, ++seen)
     for (int i = 0; i < 3; ++i) {
       const auto g = f->neighbor(i);
       if (cdt.is_infinite(g)) continue;
