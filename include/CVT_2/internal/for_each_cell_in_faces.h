@@ -10,24 +10,33 @@
 namespace CVT_2 {
 namespace internal {
 
+// Calls visit(v) for every finite vertex v with v->face() in [first, last), each once, in the
+// order of the faces in memory: much kinder to the cache than the vertices' own order, as what
+// follows reads the faces around v. Ranges that cut the faces in pieces (Face_chunks) visit
+// every vertex once in all.
+template <class CDT, class Face_iterator, class Visit>
+void for_each_vertex_at_its_face(const CDT& cdt, Face_iterator first, Face_iterator last,
+                                 const Visit& visit) {
+  for_each_face_prefetched(first, last, [&](const auto& f) {
+    for (int i = 0; i < 3; ++i) {
+      const typename CDT::Vertex_handle v = f->vertex(i);
+      if (v->face() == f && !cdt.is_infinite(v)) visit(v);
+    }
+  });
+}
+
 // Calls visit(v, cell) for every vertex v with v->face() in [first, last) that has a cell, each
-// once, with its cell (the vector is reused between calls). Going by the faces in memory order
-// is much kinder to the cache than the vertices' own order: building all cells is bound by the
-// first access to each vertex's faces. Ranges that cut the faces in pieces (Face_chunks) visit
-// every cell once in all.
+// once, with its cell (the vector is reused between calls), in the order of
+// for_each_vertex_at_its_face(): building all cells is bound by the first access to each
+// vertex's faces.
 template <class Diagram, class Face_iterator, class Visit>
 void for_each_cell_in_faces(const Diagram& diagram, Face_iterator first, Face_iterator last,
                             const Visit& visit) {
   using Vertex_handle = typename Diagram::Vertex_handle;
-  const auto& cdt = diagram.triangulation();
   std::vector<typename Diagram::Cell_vertex> c;
-  for_each_face_prefetched(first, last, [&](const auto& f) {
-    for (int i = 0; i < 3; ++i) {
-      const Vertex_handle v = f->vertex(i);
-      if (v->face() != f || cdt.is_infinite(v)) continue;  // each vertex once, at its face
-      diagram.cell(v, c);
-      if (!c.empty()) visit(v, static_cast<const std::vector<typename Diagram::Cell_vertex>&>(c));
-    }
+  for_each_vertex_at_its_face(diagram.triangulation(), first, last, [&](Vertex_handle v) {
+    diagram.cell(v, c);
+    if (!c.empty()) visit(v, static_cast<const std::vector<typename Diagram::Cell_vertex>&>(c));
   });
 }
 
@@ -46,41 +55,37 @@ void for_each_cell_points_in_faces(const Diagram& diagram, Face_iterator first, 
   const auto& cdt = diagram.triangulation();
   if (cdt.dimension() < 2) return;  // no cell
   const auto circumcenter = diagram.geom_traits().construct_circumcenter_2_object();
-  std::vector<typename Diagram::Cell_vertex> c;
-  const auto add = [&points](const auto& p) {
-    if (points.empty() || points.back() != p) points.push_back(p);
+  // The circumcenters of the faces around v into `points`, if v is free and its faces are all
+  // in the domain and see them; false, with `points` left as it comes, otherwise.
+  const auto read_plain_cell = [&](Vertex_handle v) {
+    points.clear();
+    auto fc = cdt.incident_faces(v);
+    const auto done = fc;
+    do {
+      if (!fc->is_inside_domain() || fc->is_blinded() || fc->is_constrained(CDT::cw(fc->index(v))))
+        return false;
+      const auto p =
+          circumcenter(fc->vertex(0)->point(), fc->vertex(1)->point(), fc->vertex(2)->point());
+      if (points.empty() || points.back() != p) points.push_back(p);  // as construct_cell()
+    } while (++fc != done);
+    if (points.size() > 1 && points.back() == points.front()) points.pop_back();
+    return true;
   };
-  for_each_face_prefetched(first, last, [&](const auto& f) {
-    for (int i = 0; i < 3; ++i) {
-      const Vertex_handle v = f->vertex(i);
-      if (v->face() != f || cdt.is_infinite(v)) continue;  // each vertex once, at its face
-      points.clear();
-      bool plain = true;  // a free vertex, its faces in the domain, none blind
-      auto fc = cdt.incident_faces(v);
-      const auto done = fc;
-      do {
-        if (!fc->is_inside_domain() || fc->is_blinded() ||
-            fc->is_constrained(CDT::cw(fc->index(v)))) {
-          plain = false;
-          break;
-        }
-        add(circumcenter(fc->vertex(0)->point(), fc->vertex(1)->point(), fc->vertex(2)->point()));
-      } while (++fc != done);
-      if (plain) {
-        if (points.size() > 1 && points.back() == points.front()) points.pop_back();
-        visit(v, static_cast<const Points&>(points), true);
-        continue;
-      }
-      diagram.cell(v, c);
-      if (c.empty()) continue;
-      points.clear();
-      bool is_free = true;
-      for (const auto& x : c) {
-        points.push_back(x.point);
-        is_free = is_free && x.type != Diagram::Cell_vertex::GENERATOR;
-      }
-      visit(v, static_cast<const Points&>(points), is_free);
+  std::vector<typename Diagram::Cell_vertex> c;
+  for_each_vertex_at_its_face(cdt, first, last, [&](Vertex_handle v) {
+    if (read_plain_cell(v)) {
+      visit(v, static_cast<const Points&>(points), true);
+      return;
     }
+    diagram.cell(v, c);
+    if (c.empty()) return;
+    points.clear();
+    bool is_free = true;
+    for (const auto& x : c) {
+      points.push_back(x.point);
+      is_free = is_free && x.type != Diagram::Cell_vertex::GENERATOR;
+    }
+    visit(v, static_cast<const Points&>(points), is_free);
   });
 }
 
