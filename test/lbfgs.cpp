@@ -314,6 +314,71 @@ TEST_CASE("generators moved to targets beyond their stars and back come back to 
   CHECK(different == 0);
 }
 
+TEST_CASE(
+    "a bulk move flips chunk by chunk: small chunks, the same valid constrained Delaunay "
+    "triangulation, face by face, on 1 and 2 threads",
+    "[lbfgs][threads]") {
+  // Chunks of 64 faces: many flips after the move touch one chunk and run on its thread, many
+  // touch two and wait for the serial flips after; the county borders, constrained edges with
+  // domain faces on both sides, get flips of both kinds beside them.
+  std::vector<std::vector<Point>> layouts;  // each face's vertices, in memory order
+  for (const unsigned threads : {1u, 2u}) {
+    Domain d;
+    load_domain(d, "us_kentucky_counties.poly");
+    CVT_2::insert_generators_2(d.cdt, random_points_in_domain(d.cdt, 4000, 11));
+    const Domain_marks marks = snapshot_marks(d.cdt);
+    const CVT_2::internal::Face_chunks<Cdt> chunks(d.cdt, 64);
+    REQUIRE(chunks.size() > 50);
+    // The runs of each chunk hold its faces and no other.
+    std::vector<CVT_2::internal::Face_runs<Cdt::Face>> runs(chunks.size());
+    std::map<const Cdt::Face*, std::size_t> chunk_of;
+    chunks.for_each(
+        [&](std::size_t c, auto first, auto last) {
+          for (auto f = first; f != last; ++f) runs[c].add(&*f);
+        },
+        1);
+    chunks.for_each(
+        [&](std::size_t c, auto first, auto last) {
+          for (auto f = first; f != last; ++f) chunk_of[&*f] = c;
+        },
+        1);
+    std::size_t wrong = 0;
+    for (auto f = d.cdt.all_faces_begin(); f != d.cdt.all_faces_end(); ++f)
+      for (std::size_t c = 0; c < chunks.size(); ++c)
+        wrong += runs[c].holds(&*f) != (chunk_of[&*f] == c);
+    CHECK(wrong == 0);
+    CHECK(chunk_of.size() == d.cdt.tds().number_of_faces());
+    // The first Lloyd step from random points: most generators move by about a cell, and
+    // thousands of edges flip.
+    std::vector<Cdt::Vertex_handle> vertices;
+    std::vector<Point> targets;
+    {
+      CVT_2::Lloyd_optimizer_2<Cdt> lloyd(d.cdt);
+      lloyd.evaluate(10);
+      for (const auto& g : lloyd.free_generators()) {
+        vertices.push_back(g.vertex);
+        targets.push_back(g.centroid);
+      }
+    }
+    std::vector<std::size_t> order(vertices.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    CVT_2::internal::Move_buffers<Cdt> buffers;
+    CVT_2::internal::move_free_vertices(d.cdt, chunks, threads, vertices, targets, order, 8,
+                                        buffers);
+    check_invariants(d.cdt, marks);  // valid, constrained Delaunay, each vertex in its face
+    std::vector<Point> layout;
+    const auto point = [&](Cdt::Vertex_handle v) {  // the infinite vertex has no point
+      return d.cdt.is_infinite(v) ? Point(-1, -1) : v->point();
+    };
+    for (auto f = d.cdt.all_faces_begin(); f != d.cdt.all_faces_end(); ++f)
+      for (int i = 0; i < 3; ++i) layout.push_back(point(f->vertex(i)));
+    for (auto v = d.cdt.finite_vertices_begin(); v != d.cdt.finite_vertices_end(); ++v)
+      for (int i = 0; i < 3; ++i) layout.push_back(point(v->face()->vertex(i)));
+    layouts.push_back(layout);
+  }
+  CHECK(layouts[0] == layouts[1]);
+}
+
 TEST_CASE("when the line search fails, the step goes back and is a Lloyd step from there",
           "[lbfgs]") {
   Domain a, b;

@@ -127,9 +127,13 @@ inline bool check_triangulation(const Cdt& cdt, const Domain_marks& marks) {
     }
     wrong_side += (ab->second != f->is_inside_domain()) + (ba->second != g->is_inside_domain());
   }
-  std::size_t infinite_inside = 0, moved = 0;
+  std::size_t infinite_inside = 0, moved = 0, faceless = 0;
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
     infinite_inside += cdt.is_infinite(f) && f->is_inside_domain();
+  // CGAL's is_valid() does not look whether a vertex's face holds it
+  if (cdt.dimension() == 2)
+    for (auto v = cdt.all_vertices_begin(); v != cdt.all_vertices_end(); ++v)
+      faceless += !v->face()->has_vertex(v);
   for (const auto& [v, p] : marks.constrained_points) moved += v->point() != p;
   // (a domain whose area under- or overflows double, 1e-300 or 1e300 wide, is not compared)
   const bool same_area = !std::isnormal(marks.area) || !std::isfinite(marks.area) ||
@@ -140,12 +144,13 @@ inline bool check_triangulation(const Cdt& cdt, const Domain_marks& marks) {
   CHECK(wrong_side == 0);
   CHECK(unequal == 0);
   CHECK(infinite_inside == 0);
+  CHECK(faceless == 0);
   CHECK(moved == 0);
   CHECK(cdt.number_of_vertices() == marks.number_of_vertices);
   CHECK(same_area);
   return valid && same_area && flippable == 0 && 2 * constrained == marks.sides.size() &&
-         unknown == 0 && wrong_side == 0 && unequal == 0 && infinite_inside == 0 && moved == 0 &&
-         cdt.number_of_vertices() == marks.number_of_vertices;
+         unknown == 0 && wrong_side == 0 && unequal == 0 && infinite_inside == 0 && faceless == 0 &&
+         moved == 0 && cdt.number_of_vertices() == marks.number_of_vertices;
 }
 
 // The diagram's invariants: partition, convexity, the nearest-visible-generator oracle on

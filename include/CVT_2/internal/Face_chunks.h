@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
+#include <utility>
 #include <vector>
 
 namespace CVT_2 {
@@ -81,6 +83,31 @@ class Face_chunks {
   std::size_t m_chunk_size;
   const CDT* m_cdt = nullptr;
   std::vector<Face_iterator> m_starts;  // the first face of each chunk
+};
+
+// The faces of one chunk as runs of neighbours in memory, built by a pass over the chunk in
+// memory order: whether a face is one of them takes a few address comparisons and no read of
+// the face, which another chunk's thread may be writing meanwhile.
+template <class Face>
+class alignas(cache_line) Face_runs {
+ public:
+  void clear() { m_runs.clear(); }
+  // Adds f, which follows the faces added so far in memory order.
+  void add(const Face* f) {
+    if (!m_runs.empty() && m_runs.back().second == f)
+      ++m_runs.back().second;
+    else
+      m_runs.emplace_back(f, f + 1);
+  }
+  bool holds(const Face* f) const {
+    const std::less<const Face*> less;
+    for (const auto& [first, last] : m_runs)
+      if (!less(f, first) && less(f, last)) return true;
+    return false;
+  }
+
+ private:
+  std::vector<std::pair<const Face*, const Face*>> m_runs;  // [first, last) each
 };
 
 }  // namespace internal

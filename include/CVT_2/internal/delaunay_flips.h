@@ -3,8 +3,11 @@
 #ifndef CVT_2_INTERNAL_DELAUNAY_FLIPS_H
 #define CVT_2_INTERNAL_DELAUNAY_FLIPS_H
 
+#include <CVT_2/internal/Face_chunks.h>
 #include <CVT_2/internal/prefetch.h>
 
+#include <cstddef>
+#include <utility>
 #include <vector>
 
 // CGAL's own CDT::propagating_flip(f, i) follows only the edges opposite one new vertex, as after
@@ -52,6 +55,95 @@ void lawson_flips(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
       stack.push_back(Flip_candidate<CDT>::of(h, CDT::cw(k)));
     }
   }
+}
+
+// Flips the unconstrained edge i of f as CDT::flip() does, constrained flags included, but
+// leaves the vertices' face pointers alone: CGAL's flip reads and may rewrite those of the
+// edge's endpoints, which faces of other chunks share. Returns the endpoints that lost a face,
+// each with the face it still has: f->vertex(cw(i)) leaves f, f->vertex(ccw(i)) leaves the
+// neighbour.
+template <class CDT>
+std::pair<std::pair<typename CDT::Vertex_handle, typename CDT::Face_handle>,
+          std::pair<typename CDT::Vertex_handle, typename CDT::Face_handle>>
+flip_leaving_vertex_faces(CDT& cdt, typename CDT::Face_handle f, int i) {
+  using Face_handle = typename CDT::Face_handle;
+  const auto cw = [](int k) { return CDT::cw(k); };
+  const auto ccw = [](int k) { return CDT::ccw(k); };
+  const Face_handle g = f->neighbor(i);
+  const int j = cdt.mirror_index(f, i);
+  const auto lost =
+      std::make_pair(std::make_pair(f->vertex(cw(i)), g), std::make_pair(f->vertex(ccw(i)), f));
+  // the four faces around, each with its index toward f or g: their flags tell the constrained
+  // edges, which stay where they are and change faces on our side
+  const std::pair<Face_handle, int> wings[4] = {{f->neighbor(cw(i)), cdt.mirror_index(f, cw(i))},
+                                                {f->neighbor(ccw(i)), cdt.mirror_index(f, ccw(i))},
+                                                {g->neighbor(cw(j)), cdt.mirror_index(g, cw(j))},
+                                                {g->neighbor(ccw(j)), cdt.mirror_index(g, ccw(j))}};
+  const auto& [tr, tri] = wings[1];
+  const auto& [bl, bli] = wings[3];
+  f->set_vertex(cw(i), g->vertex(j));
+  g->set_vertex(cw(j), f->vertex(i));
+  cdt.tds().set_adjacency(f, i, bl, bli);
+  cdt.tds().set_adjacency(f, ccw(i), g, ccw(j));
+  cdt.tds().set_adjacency(g, j, tr, tri);
+  f->set_constraint(ccw(i), false);
+  g->set_constraint(ccw(j), false);
+  for (const auto& [w, k] : wings)
+    w->neighbor(k)->set_constraint(cdt.mirror_index(w, k), w->is_constrained(k));
+  return lost;
+}
+
+// Lawson's flips within one chunk of faces, which `runs` holds, while other threads flip in
+// theirs: only the edges whose flip touches faces of the chunk alone (its two faces and the
+// four around them). Every edge on `stack` has a face of the chunk; those that fail their
+// in-circle test and would touch another chunk's face go to `deferred`, for lawson_flips()
+// once all chunks are done. No vertex's face pointer is read or written here: the vertices that
+// lose a face are listed in `left` with a face they keep, for set_vertex_faces(). An edge whose
+// face a flip has changed since it was pushed is dropped, not looked for: that flip pushed the
+// edges around it, this one included if it is still there.
+template <class CDT>
+void chunk_local_flips(
+    CDT& cdt, const Face_runs<typename CDT::Face>& runs, std::vector<Flip_candidate<CDT>>& stack,
+    std::vector<Flip_candidate<CDT>>& deferred,
+    std::vector<std::pair<typename CDT::Vertex_handle, typename CDT::Face_handle>>& left) {
+  using Face_handle = typename CDT::Face_handle;
+  const auto ours = [&](Face_handle h) { return runs.holds(&*h); };
+  while (!stack.empty()) {
+    const Flip_candidate<CDT> e = stack.back();
+    stack.pop_back();
+    const Face_handle f = e.f;
+    if (f->vertex(CDT::ccw(e.i)) != e.a || f->vertex(CDT::cw(e.i)) != e.b) continue;
+    if (f->is_constrained(e.i)) continue;
+    const Face_handle g = f->neighbor(e.i);
+    if (!ours(g)) {
+      deferred.push_back(e);
+      continue;
+    }
+    if (!cdt.is_flipable(f, e.i)) continue;
+    const int j = cdt.mirror_index(f, e.i);
+    if (!ours(f->neighbor(CDT::cw(e.i))) || !ours(f->neighbor(CDT::ccw(e.i))) ||
+        !ours(g->neighbor(CDT::cw(j))) || !ours(g->neighbor(CDT::ccw(j)))) {
+      deferred.push_back(e);
+      continue;
+    }
+    const auto lost = flip_leaving_vertex_faces(cdt, f, e.i);
+    left.push_back(lost.first);
+    left.push_back(lost.second);
+    for (const Face_handle h : {f, g}) {
+      const int k = h->index(h == f ? g : f);
+      stack.push_back(Flip_candidate<CDT>::of(h, CDT::ccw(k)));
+      stack.push_back(Flip_candidate<CDT>::of(h, CDT::cw(k)));
+    }
+  }
+}
+
+// Gives each vertex of `left` whose face pointer no longer holds it the face listed with it,
+// from the last listed: the last face listed for a vertex in one chunk's list still holds it
+// (a flip that took it out would have listed it again).
+template <class Vertex_handle, class Face_handle>
+void set_vertex_faces(const std::vector<std::pair<Vertex_handle, Face_handle>>& left) {
+  for (auto it = left.rbegin(); it != left.rend(); ++it)
+    if (!it->first->face()->has_vertex(it->first)) it->first->set_face(it->second);
 }
 
 // Pushes every edge of the faces around v on the stack: the edges whose in-circle tests a move

@@ -34,6 +34,12 @@ struct Move_buffers {
   std::vector<Chunk_vector<typename CDT::Face_handle>> chunk_inverted;
   std::vector<Chunk_vector<Flip_candidate<CDT>>> chunk_stack;
   std::vector<Chunk_vector<std::size_t>> chunk_pending;
+  // for the flips chunk by chunk: each chunk's faces, the flips it leaves for after, the
+  // vertices its flips took out of a face
+  std::vector<Face_runs<typename CDT::Face>> chunk_runs;
+  std::vector<Chunk_vector<Flip_candidate<CDT>>> chunk_deferred;
+  std::vector<Chunk_vector<std::pair<typename CDT::Vertex_handle, typename CDT::Face_handle>>>
+      chunk_left;
   void release() { *this = Move_buffers(); }
 };
 
@@ -95,8 +101,9 @@ void set_targets(const std::vector<std::size_t>& pending, const VertexAt& vertex
 
 // One pass over the domain faces after a bulk move: the faces that are not positive into
 // `b.inverted`, and the edges of the positive ones that fail their in-circle test (each edge
-// once) onto `b.chunk_stack`. Each chunk of faces has its own outputs; the faces are joined in
-// chunk order, the stacks are not (chunk_lawson_flips() pops them as if they were).
+// once) onto `b.chunk_stack`. Each chunk of faces has its own outputs, its faces' runs in
+// memory included (`b.chunk_runs`); the faces are joined in chunk order, the stacks are not
+// (chunk_lawson_flips() pops them chunk by chunk).
 template <class CDT>
 void check_moved_faces(const CDT& cdt, const Face_chunks<CDT>& chunks, unsigned threads,
                        Move_buffers<CDT>& b) {
@@ -105,13 +112,17 @@ void check_moved_faces(const CDT& cdt, const Face_chunks<CDT>& chunks, unsigned 
   const auto less_xy = cdt.geom_traits().less_xy_2_object();
   b.chunk_inverted.resize(chunks.size());
   b.chunk_stack.resize(chunks.size());
+  b.chunk_runs.resize(chunks.size());
   chunks.for_each(
       [&](std::size_t c, auto first, auto last) {
         Chunk_vector<Face_handle>& inverted = b.chunk_inverted[c];
         Chunk_vector<Flip_candidate<CDT>>& stack = b.chunk_stack[c];
+        Face_runs<typename CDT::Face>& runs = b.chunk_runs[c];
         inverted.clear();
         stack.clear();
+        runs.clear();
         for_each_face_prefetched(first, last, [&](Face_handle f) {
+          runs.add(&*f);
           if (!f->is_inside_domain() || cdt.is_infinite(f)) return;
           if (orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) !=
               CGAL::LEFT_TURN) {
@@ -129,13 +140,31 @@ void check_moved_faces(const CDT& cdt, const Face_chunks<CDT>& chunks, unsigned 
     b.inverted.insert(b.inverted.end(), b.chunk_inverted[c].begin(), b.chunk_inverted[c].end());
 }
 
-// Lawson's flips from `b.stack` on top of the chunks' stacks, the last chunk's on top: the same
-// flips, in the same order, as from one stack that joined them all, without the copy.
+// Lawson's flips from the chunks' stacks and `b.stack`. First each chunk flips what it can alone
+// (chunk_local_flips()), on `threads` threads; then, in this thread, the vertices get faces that
+// hold them again, and Lawson's flips go on from `b.stack`, then from what each chunk left, the
+// last chunk's first. A chunk's flips depend on its faces only, and everything after runs in
+// the chunks' order: the same flips whatever the threads. Lawson's flips end at the constrained
+// Delaunay triangulation in any order; the faces that hold its triangles and the faces the
+// vertices point to depend on the order, and so do the bits of later sums.
 template <class CDT>
-void chunk_lawson_flips(CDT& cdt, Move_buffers<CDT>& b) {
+void chunk_lawson_flips(CDT& cdt, unsigned threads, Move_buffers<CDT>& b) {
+  const std::size_t chunks = b.chunk_stack.size();
+  b.chunk_deferred.resize(chunks);
+  b.chunk_left.resize(chunks);
+  run_chunks(chunks, threads, [&](std::size_t c) {
+    b.chunk_deferred[c].clear();
+    b.chunk_left[c].clear();
+    chunk_local_flips(cdt, b.chunk_runs[c], b.chunk_stack[c], b.chunk_deferred[c], b.chunk_left[c]);
+  });
+  for (std::size_t c = 0; c < chunks; ++c) {
+    set_vertex_faces(b.chunk_left[c]);
+    std::vector<std::pair<typename CDT::Vertex_handle, typename CDT::Face_handle>>().swap(
+        b.chunk_left[c]);
+  }
   lawson_flips(cdt, b.stack);
-  for (std::size_t c = b.chunk_stack.size(); c-- > 0;) {
-    b.stack.swap(b.chunk_stack[c]);
+  for (std::size_t c = chunks; c-- > 0;) {
+    b.stack.swap(b.chunk_deferred[c]);
     lawson_flips(cdt, b.stack);
   }
 }
@@ -262,7 +291,7 @@ std::size_t move_free_vertices(CDT& cdt, const Face_chunks<CDT>& chunks, unsigne
         });
     pending.resize(kept);
     if (at_once) {
-      chunk_lawson_flips(cdt, b);
+      chunk_lawson_flips(cdt, threads, b);
       continue;
     }
     if (b.moved.empty()) break;  // every remaining vertex is stuck where it is
