@@ -335,6 +335,7 @@ TEST_CASE(
     chunks.for_each(
         [&](std::size_t c, auto first, auto last) {
           for (auto f = first; f != last; ++f) runs[c].add(&*f);
+          runs[c].finish();
         },
         1);
     chunks.for_each(
@@ -365,7 +366,9 @@ TEST_CASE(
     CVT_2::internal::Move_buffers<Cdt> buffers;
     CVT_2::internal::move_free_vertices(d.cdt, chunks, threads, vertices, targets, order, 8,
                                         buffers);
-    check_invariants(d.cdt, marks);  // valid, constrained Delaunay, each vertex in its face
+    CHECK(buffers.chunk_flips > 200);     // by the chunks on their own
+    CHECK(buffers.deferred_edges > 200);  // left for after
+    check_invariants(d.cdt, marks);       // valid, constrained Delaunay, each vertex in its face
     std::vector<Point> layout;
     const auto point = [&](Cdt::Vertex_handle v) {  // the infinite vertex has no point
       return d.cdt.is_infinite(v) ? Point(-1, -1) : v->point();

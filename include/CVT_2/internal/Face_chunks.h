@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <functional>
+#include <iterator>
 #include <utility>
 #include <vector>
 
@@ -86,8 +87,9 @@ class Face_chunks {
 };
 
 // The faces of one chunk as runs of neighbours in memory, built by a pass over the chunk in
-// memory order: whether a face is one of them takes a few address comparisons and no read of
-// the face, which another chunk's thread may be writing meanwhile.
+// memory order: whether a face is one of them takes a search among the runs and no read of
+// the face, which another chunk's thread may be writing meanwhile. A chunk laid out in one or
+// two blocks of the face container is one or two runs; free slots cut more.
 template <class Face>
 class alignas(cache_line) Face_runs {
  public:
@@ -99,15 +101,24 @@ class alignas(cache_line) Face_runs {
     else
       m_runs.emplace_back(f, f + 1);
   }
+  // Sorts the runs by address (blocks need not follow each other in memory), for holds().
+  void finish() {
+    std::sort(m_runs.begin(), m_runs.end(), [](const Run& a, const Run& b) {
+      return std::less<const Face*>()(a.first, b.first);
+    });
+  }
+  // Whether f is one of the faces added. \pre finish() after the last add()
   bool holds(const Face* f) const {
     const std::less<const Face*> less;
-    for (const auto& [first, last] : m_runs)
-      if (!less(f, first) && less(f, last)) return true;
-    return false;
+    const auto after =
+        std::upper_bound(m_runs.begin(), m_runs.end(), f,
+                         [&](const Face* p, const Run& r) { return less(p, r.first); });
+    return after != m_runs.begin() && less(f, std::prev(after)->second);
   }
 
  private:
-  std::vector<std::pair<const Face*, const Face*>> m_runs;  // [first, last) each
+  using Run = std::pair<const Face*, const Face*>;  // [first, last)
+  std::vector<Run> m_runs;
 };
 
 }  // namespace internal

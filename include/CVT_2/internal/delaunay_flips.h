@@ -6,6 +6,8 @@
 #include <CVT_2/internal/Face_chunks.h>
 #include <CVT_2/internal/prefetch.h>
 
+#include <CGAL/assertions.h>
+
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -59,20 +61,15 @@ void lawson_flips(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
 
 // Flips the unconstrained edge i of f as CDT::flip() does, constrained flags included, but
 // leaves the vertices' face pointers alone: CGAL's flip reads and may rewrite those of the
-// edge's endpoints, which faces of other chunks share. Returns the endpoints that lost a face,
-// each with the face it still has: f->vertex(cw(i)) leaves f, f->vertex(ccw(i)) leaves the
-// neighbour.
+// edge's endpoints, which faces of other chunks share. The edge's endpoints each lose a face:
+// f->vertex(cw(i)) leaves f and stays in the neighbour, f->vertex(ccw(i)) the other way round.
 template <class CDT>
-std::pair<std::pair<typename CDT::Vertex_handle, typename CDT::Face_handle>,
-          std::pair<typename CDT::Vertex_handle, typename CDT::Face_handle>>
-flip_leaving_vertex_faces(CDT& cdt, typename CDT::Face_handle f, int i) {
+void flip_leaving_vertex_faces(CDT& cdt, typename CDT::Face_handle f, int i) {
   using Face_handle = typename CDT::Face_handle;
   const auto cw = [](int k) { return CDT::cw(k); };
   const auto ccw = [](int k) { return CDT::ccw(k); };
   const Face_handle g = f->neighbor(i);
   const int j = cdt.mirror_index(f, i);
-  const auto lost =
-      std::make_pair(std::make_pair(f->vertex(cw(i)), g), std::make_pair(f->vertex(ccw(i)), f));
   // the four faces around, each with its index toward f or g: their flags tell the constrained
   // edges, which stay where they are and change faces on our side
   const std::pair<Face_handle, int> wings[4] = {{f->neighbor(cw(i)), cdt.mirror_index(f, cw(i))},
@@ -90,28 +87,31 @@ flip_leaving_vertex_faces(CDT& cdt, typename CDT::Face_handle f, int i) {
   g->set_constraint(ccw(j), false);
   for (const auto& [w, k] : wings)
     w->neighbor(k)->set_constraint(cdt.mirror_index(w, k), w->is_constrained(k));
-  return lost;
 }
 
 // Lawson's flips within one chunk of faces, which `runs` holds, while other threads flip in
 // theirs: only the edges whose flip touches faces of the chunk alone (its two faces and the
-// four around them). Every edge on `stack` has a face of the chunk; those that fail their
-// in-circle test and would touch another chunk's face go to `deferred`, for lawson_flips()
-// once all chunks are done. No vertex's face pointer is read or written here: the vertices that
-// lose a face are listed in `left` with a face they keep, for set_vertex_faces(). An edge whose
-// face a flip has changed since it was pushed is dropped, not looked for: that flip pushed the
-// edges around it, this one included if it is still there.
+// four around them). Every edge on `stack` has a face of the chunk. An edge goes to `deferred`,
+// for lawson_flips() once all chunks are done, untested if its other face is another chunk's,
+// or if it fails its in-circle test and a face around it is another chunk's. No vertex's face
+// pointer is read or written here: the vertices that lose a face are listed in `left` with a
+// face they keep, for set_vertex_faces(), before the flip (a list that cannot grow throws with
+// the triangulation as it was). An edge whose face a flip has changed since it was pushed is
+// dropped, not looked for: that flip pushed the edges around it, this one included if it is
+// still there. Returns the number of flips.
 template <class CDT>
-void chunk_local_flips(
+std::size_t chunk_local_flips(
     CDT& cdt, const Face_runs<typename CDT::Face>& runs, std::vector<Flip_candidate<CDT>>& stack,
     std::vector<Flip_candidate<CDT>>& deferred,
     std::vector<std::pair<typename CDT::Vertex_handle, typename CDT::Face_handle>>& left) {
   using Face_handle = typename CDT::Face_handle;
   const auto ours = [&](Face_handle h) { return runs.holds(&*h); };
+  std::size_t flips = 0;
   while (!stack.empty()) {
     const Flip_candidate<CDT> e = stack.back();
     stack.pop_back();
     const Face_handle f = e.f;
+    CGAL_assertion(ours(f));
     if (f->vertex(CDT::ccw(e.i)) != e.a || f->vertex(CDT::cw(e.i)) != e.b) continue;
     if (f->is_constrained(e.i)) continue;
     const Face_handle g = f->neighbor(e.i);
@@ -126,15 +126,17 @@ void chunk_local_flips(
       deferred.push_back(e);
       continue;
     }
-    const auto lost = flip_leaving_vertex_faces(cdt, f, e.i);
-    left.push_back(lost.first);
-    left.push_back(lost.second);
+    left.emplace_back(f->vertex(CDT::cw(e.i)), g);
+    left.emplace_back(f->vertex(CDT::ccw(e.i)), f);
+    flip_leaving_vertex_faces(cdt, f, e.i);
+    ++flips;
     for (const Face_handle h : {f, g}) {
       const int k = h->index(h == f ? g : f);
       stack.push_back(Flip_candidate<CDT>::of(h, CDT::ccw(k)));
       stack.push_back(Flip_candidate<CDT>::of(h, CDT::cw(k)));
     }
   }
+  return flips;
 }
 
 // Gives each vertex of `left` whose face pointer no longer holds it the face listed with it,

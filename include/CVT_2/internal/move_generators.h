@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <functional>
 #include <iterator>
+#include <utility>
 #include <vector>
 
 namespace CVT_2 {
@@ -40,7 +41,14 @@ struct Move_buffers {
   std::vector<Chunk_vector<Flip_candidate<CDT>>> chunk_deferred;
   std::vector<Chunk_vector<std::pair<typename CDT::Vertex_handle, typename CDT::Face_handle>>>
       chunk_left;
-  void release() { *this = Move_buffers(); }
+  // flips so far: made by the chunks on their own, and edges they left for after (for tests)
+  std::size_t chunk_flips = 0, deferred_edges = 0;
+  void release() {  // all but the counts
+    Move_buffers released;
+    released.chunk_flips = chunk_flips;
+    released.deferred_edges = deferred_edges;
+    *this = std::move(released);
+  }
 };
 
 // Lists item(k) for the k of [0, n) with keep(k), in the order of k, into `out`: a pass that
@@ -133,6 +141,7 @@ void check_moved_faces(const CDT& cdt, const Face_chunks<CDT>& chunks, unsigned 
             if (tests_edge(cdt, f, i, less_xy) && cdt.is_flipable(f, i))
               stack.push_back(Flip_candidate<CDT>::of(f, i));
         });
+        runs.finish();
       },
       threads);
   b.inverted.clear();
@@ -152,15 +161,29 @@ void chunk_lawson_flips(CDT& cdt, unsigned threads, Move_buffers<CDT>& b) {
   const std::size_t chunks = b.chunk_stack.size();
   b.chunk_deferred.resize(chunks);
   b.chunk_left.resize(chunks);
-  run_chunks(chunks, threads, [&](std::size_t c) {
-    b.chunk_deferred[c].clear();
-    b.chunk_left[c].clear();
-    chunk_local_flips(cdt, b.chunk_runs[c], b.chunk_stack[c], b.chunk_deferred[c], b.chunk_left[c]);
-  });
+  std::vector<std::size_t> flips(chunks, 0);
+  const auto set_faces = [&] {
+    for (std::size_t c = 0; c < chunks; ++c) {
+      set_vertex_faces(b.chunk_left[c]);
+      std::vector<std::pair<typename CDT::Vertex_handle, typename CDT::Face_handle>>().swap(
+          b.chunk_left[c]);
+    }
+  };
+  try {
+    run_chunks(chunks, threads, [&](std::size_t c) {
+      b.chunk_deferred[c].clear();
+      b.chunk_left[c].clear();
+      flips[c] = chunk_local_flips(cdt, b.chunk_runs[c], b.chunk_stack[c], b.chunk_deferred[c],
+                                   b.chunk_left[c]);
+    });
+  } catch (...) {  // out of memory: the triangulation stays valid, if not Delaunay
+    set_faces();
+    throw;
+  }
+  set_faces();
   for (std::size_t c = 0; c < chunks; ++c) {
-    set_vertex_faces(b.chunk_left[c]);
-    std::vector<std::pair<typename CDT::Vertex_handle, typename CDT::Face_handle>>().swap(
-        b.chunk_left[c]);
+    b.chunk_flips += flips[c];
+    b.deferred_edges += b.chunk_deferred[c].size();
   }
   lawson_flips(cdt, b.stack);
   for (std::size_t c = chunks; c-- > 0;) {
