@@ -133,8 +133,9 @@ class Lbfgs_optimizer_2 {
     return m_current.evaluation;
   }
 
-  /// The number of threads that evaluations build cells and integrate them on; 0 (the default)
-  /// means one per core. The results are the same, bit for bit, whatever the number.
+  /// The number of threads that evaluations build cells and integrate them on, and that steps
+  /// check the moved faces, flip most edges and update the history on; 0 (the default) means one
+  /// per core. The results are the same, bit for bit, whatever the number.
   void set_number_of_threads(unsigned n) {
     m_lloyd.set_number_of_threads(n);
     m_history.set_number_of_threads(n);

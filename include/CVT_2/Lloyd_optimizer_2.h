@@ -230,8 +230,8 @@ class Lloyd_optimizer_2 {
   const Evaluation& evaluate(std::size_t resolution);
 
   /// The number of threads that `evaluate()` builds cells and integrates them on, and that
-  /// `move()` checks the moved faces on; 0 (the default) means one per core. The results are
-  /// the same, bit for bit, whatever the number.
+  /// `move()` checks the moved faces and flips most edges on; 0 (the default) means one per
+  /// core. The results are the same, bit for bit, whatever the number.
   void set_number_of_threads(unsigned n) { m_number_of_threads = n; }
   unsigned number_of_threads() const { return m_number_of_threads; }  ///< as set; 0: one per core
 
