@@ -334,13 +334,11 @@ TEST_CASE(
     std::map<const Cdt::Face*, std::size_t> chunk_of;
     chunks.for_each(
         [&](std::size_t c, auto first, auto last) {
-          for (auto f = first; f != last; ++f) runs[c].add(&*f);
+          for (auto f = first; f != last; ++f) {
+            runs[c].add(&*f);
+            chunk_of[&*f] = c;
+          }
           runs[c].finish();
-        },
-        1);
-    chunks.for_each(
-        [&](std::size_t c, auto first, auto last) {
-          for (auto f = first; f != last; ++f) chunk_of[&*f] = c;
         },
         1);
     std::size_t wrong = 0;

@@ -32,7 +32,21 @@ struct Flip_candidate {
   static Flip_candidate of(typename CDT::Face_handle f, int i) {
     return {f, i, f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))};
   }
+  // Whether (f, i) is still the edge from a to b.
+  bool is_current() const { return f->vertex(CDT::ccw(i)) == a && f->vertex(CDT::cw(i)) == b; }
 };
+
+// Pushes the four other edges of f and g, which a flip has just made to share an edge: those
+// whose in-circle tests the flip changed.
+template <class CDT>
+void push_edges_around_flip(typename CDT::Face_handle f, typename CDT::Face_handle g,
+                            std::vector<Flip_candidate<CDT>>& stack) {
+  for (const typename CDT::Face_handle h : {f, g}) {
+    const int k = h->index(h == f ? g : f);
+    stack.push_back(Flip_candidate<CDT>::of(h, CDT::ccw(k)));
+    stack.push_back(Flip_candidate<CDT>::of(h, CDT::cw(k)));
+  }
+}
 
 // Lawson's flips: an edge on the stack that is not constrained and fails the (symbolically
 // perturbed) empty-circle test is flipped, and the four edges around it are examined in turn.
@@ -43,19 +57,12 @@ void lawson_flips(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
   while (!stack.empty()) {
     Flip_candidate<CDT> e = stack.back();
     stack.pop_back();
-    if (e.f->vertex(CDT::ccw(e.i)) != e.a || e.f->vertex(CDT::cw(e.i)) != e.b) {
-      if (!cdt.is_edge(e.a, e.b, e.f, e.i)) continue;  // flipped away
-    }
+    if (!e.is_current() && !cdt.is_edge(e.a, e.b, e.f, e.i)) continue;  // flipped away
     if (!cdt.is_flipable(e.f, e.i)) continue;
     Face_handle f = e.f;
     const Face_handle g = f->neighbor(e.i);
     cdt.flip(f, e.i);
-    // The two faces now share the new edge; their four other edges are examined.
-    for (const Face_handle h : {f, g}) {
-      const int k = h->index(h == f ? g : f);
-      stack.push_back(Flip_candidate<CDT>::of(h, CDT::ccw(k)));
-      stack.push_back(Flip_candidate<CDT>::of(h, CDT::cw(k)));
-    }
+    push_edges_around_flip<CDT>(f, g, stack);
   }
 }
 
@@ -112,7 +119,7 @@ std::size_t chunk_local_flips(
     stack.pop_back();
     const Face_handle f = e.f;
     CGAL_assertion(ours(f));
-    if (f->vertex(CDT::ccw(e.i)) != e.a || f->vertex(CDT::cw(e.i)) != e.b) continue;
+    if (!e.is_current()) continue;
     if (f->is_constrained(e.i)) continue;
     const Face_handle g = f->neighbor(e.i);
     if (!ours(g)) {
@@ -130,11 +137,7 @@ std::size_t chunk_local_flips(
     left.emplace_back(f->vertex(CDT::ccw(e.i)), f);
     flip_leaving_vertex_faces(cdt, f, e.i);
     ++flips;
-    for (const Face_handle h : {f, g}) {
-      const int k = h->index(h == f ? g : f);
-      stack.push_back(Flip_candidate<CDT>::of(h, CDT::ccw(k)));
-      stack.push_back(Flip_candidate<CDT>::of(h, CDT::cw(k)));
-    }
+    push_edges_around_flip<CDT>(f, g, stack);
   }
   return flips;
 }
