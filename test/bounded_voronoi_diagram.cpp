@@ -11,7 +11,10 @@
 
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/hilbert_sort.h>
+#include <CGAL/property_map.h>
 
 #include <catch2/catch.hpp>
 
@@ -680,11 +683,25 @@ TEST_CASE("sort_faces: the same triangulation, its faces in the Hilbert order of
     centroids.push_back(CGAL::centroid(d.cdt.triangle(f)));
   }
   CHECK(!finite_after_infinite);
-  // CGAL's Hilbert sort of them (it shuffles with a fixed seed first, and leaves a set that
-  // falls in one quadrant of its box as it is: the order depends on the order given)
-  CGAL::hilbert_sort(centroids_before.begin(), centroids_before.end(), K(),
+  // CGAL's Hilbert sort of them, in single precision relative to the first vertex (it shuffles
+  // with a fixed seed first, and leaves a set that falls in one quadrant of its box as it is:
+  // the order depends on the order given)
+  using Float_point = CGAL::Simple_cartesian<float>::Point_2;
+  using Item = std::pair<Float_point, std::size_t>;
+  const Point origin = d.cdt.finite_vertices_begin()->point();
+  std::vector<Item> items;
+  for (const Point& c : centroids_before) {
+    // as sort_faces() computes it: the mean of the three vertices' coordinates, in double
+    items.emplace_back(Float_point(float(c.x() - origin.x()), float(c.y() - origin.y())),
+                       items.size());
+  }
+  CGAL::hilbert_sort(items.begin(), items.end(),
+                     CGAL::Spatial_sort_traits_adapter_2<CGAL::Simple_cartesian<float>,
+                                                         CGAL::First_of_pair_property_map<Item>>(),
                      CGAL::Hilbert_sort_median_policy());
-  CHECK(centroids == centroids_before);
+  std::vector<Point> expected;
+  for (const Item& i : items) expected.push_back(centroids_before[i.second]);
+  CHECK(centroids == expected);
   const double near_after = near(d.cdt);
   CAPTURE(near_before, near_after);
   CHECK(near_after > near_before + 0.3);
@@ -723,6 +740,15 @@ TEST_CASE("sort_faces: the same triangulation, its faces in the Hilbert order of
   CVT_2::insert_generators_2(islands, random_points_in_domain(islands, 5000, 7));
   CHECK(islands.is_valid());
   CHECK(near(islands) > 0.8);
+  // Far from the origin, as projected coordinates in metres are (the centroids are sorted in
+  // single precision: relative to a vertex, not to the origin, whose floats are 0.06 apart here).
+  CVT_2::IO::Poly_data<Point> far;
+  add_ring(far,
+           {Point(1e6, 4e6), Point(1e6 + 1, 4e6), Point(1e6 + 1, 4e6 + 1), Point(1e6, 4e6 + 1)});
+  Cdt utm = triangulate(far);
+  CVT_2::insert_generators_2(utm, random_points_in_domain(utm, 5000, 8));
+  CHECK(utm.is_valid());
+  CHECK(near(utm) > 0.8);
   // No plane, no layout.
   Cdt line;
   CVT_2::internal::sort_faces(line);

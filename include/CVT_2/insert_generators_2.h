@@ -65,7 +65,7 @@ bool is_in_domain_2(const CDT& cdt, const typename CDT::Point_2& p) {
 /// read them in memory order, find the faces around each vertex close by (at 10^6 generators, a
 /// Lloyd iteration takes about a quarter less time). Face handles held before the call then
 /// refer to other faces, and the faces' blind tags are cleared: as after any change of the
-/// triangulation, a diagram on it must be updated. The layout takes 40 bytes a face while it
+/// triangulation, a diagram on it must be updated. The layout takes 16 bytes a face while it
 /// runs, and is skipped if that memory cannot be had.
 /// \throws Domain_error (with `index()` the position in `points`) for a NaN or infinite
 ///         coordinate, one beyond 1e300 in magnitude, or a point outside the closed domain;

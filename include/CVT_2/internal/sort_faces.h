@@ -5,12 +5,11 @@
 
 #include <CVT_2/internal/prefetch.h>
 
-#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/hilbert_sort.h>
 #include <CGAL/property_map.h>
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -23,68 +22,68 @@ namespace internal {
 // Moves the faces of `cdt` within their container (the same slots of the same container) so
 // that memory order follows CGAL's Hilbert sort of their centroids (the median policy: the
 // middle one stops at a cluster that falls in one quadrant of its box, and would leave a domain
-// with a far island in shuffled order), the infinite faces last. The faces' neighbors and the
-// vertices' faces follow their faces; nothing else does (a face base's own face handles, such
-// as a blinding edge's face), and blind tags are cleared. The passes of the optimizers read
-// faces in memory order and, from each, the faces around its vertices. CGAL's spatially sorted
-// insertion makes faces in rounds over the whole domain, and the later rounds split and flip
-// them where they lie: half the neighbors of a face then lie more than 64 faces away in memory,
-// a tenth after this. Face handles held before the call then refer to other faces. Extra
-// memory: 40 bytes a face (double coordinates), no second container; everything is allocated,
-// and may throw, before the first face changes.
+// with a far island in shuffled order), the infinite faces last. The centroids are sorted in
+// single precision, relative to the first vertex: the order is only a layout, and a float pair
+// with its slot takes 12 bytes. The faces' neighbors and the vertices' faces follow their faces;
+// nothing else does (a face base's own face handles, such as a blinding edge's face), and blind
+// tags are cleared. The passes of the optimizers read faces in memory order and, from each, the
+// faces around its vertices. CGAL's spatially sorted insertion makes faces in rounds over the
+// whole domain, and the later rounds split and flip them where they lie: half the neighbors of
+// a face then lie more than 64 faces away in memory, a tenth after this. Face handles held
+// before the call then refer to other faces. Extra memory: 16 bytes a face, no second container;
+// everything is allocated, and may throw, before the first face changes.
 template <class CDT>
 void sort_faces(CDT& cdt) {
   using Face_handle = typename CDT::Face_handle;
-  using Point_2 = typename CDT::Point_2;
   using Index = std::uint32_t;
-  using Item = std::pair<Point_2, Index>;  // a finite face's centroid and slot
+  using Float_point = CGAL::Simple_cartesian<float>::Point_2;
+  using Item = std::pair<Float_point, Index>;  // a finite face's centroid and slot
   auto& faces = cdt.tds().faces();
   if (cdt.dimension() < 2 || faces.size() > std::numeric_limits<Index>::max()) return;
   const std::size_t n = faces.size();
-  // slot[j]: the j-th face of the container, in memory order; where[k]: the slot of the face of
-  // rank k, the infinite faces ranked last; rank[j]: the rank of the face in slot j
-  std::vector<Face_handle> slot;
-  std::vector<Index> where, infinite, rank(n);
-  slot.reserve(n);
-  where.reserve(n);
+  // where[k]: the slot of the face of rank k, the infinite faces ranked last, slots counted in
+  // memory order
+  std::vector<Index> where;
   {
+    const auto& origin = cdt.finite_vertices_begin()->point();
+    const double ox = CGAL::to_double(origin.x()), oy = CGAL::to_double(origin.y());
+    const auto x = [](typename CDT::Vertex_handle v) { return CGAL::to_double(v->point().x()); };
+    const auto y = [](typename CDT::Vertex_handle v) { return CGAL::to_double(v->point().y()); };
     std::vector<Item> finite;
+    std::vector<Index> infinite;
     finite.reserve(n);
-    for (auto f = faces.begin(); f != faces.end(); ++f) {
-      const Index j = Index(slot.size());
-      slot.push_back(f);
-      if (cdt.is_infinite(f))
+    Index j = 0;
+    for (auto f = faces.begin(); f != faces.end(); ++f, ++j) {
+      if (cdt.is_infinite(f)) {
         infinite.push_back(j);
-      else
-        finite.emplace_back(
-            CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()), j);
+        continue;
+      }
+      const auto a = f->vertex(0), b = f->vertex(1), c = f->vertex(2);
+      finite.emplace_back(
+          Float_point(float((x(a) + x(b) + x(c)) / 3 - ox), float((y(a) + y(b) + y(c)) / 3 - oy)),
+          j);
     }
-    CGAL::hilbert_sort(finite.begin(), finite.end(),
-                       CGAL::Spatial_sort_traits_adapter_2<typename CDT::Geom_traits,
-                                                           CGAL::First_of_pair_property_map<Item>>(
-                           CGAL::First_of_pair_property_map<Item>(), cdt.geom_traits()),
-                       CGAL::Hilbert_sort_median_policy());
+    CGAL::hilbert_sort(
+        finite.begin(), finite.end(),
+        CGAL::Spatial_sort_traits_adapter_2<CGAL::Simple_cartesian<float>,
+                                            CGAL::First_of_pair_property_map<Item>>(),
+        CGAL::Hilbert_sort_median_policy());
+    where.reserve(n);
     for (const Item& i : finite) where.push_back(i.second);
+    where.insert(where.end(), infinite.begin(), infinite.end());
   }
-  where.insert(where.end(), infinite.begin(), infinite.end());
+  // slot[j]: the j-th face of the container; rank[j]: the rank of the face in slot j
+  std::vector<Face_handle> slot;
+  std::vector<Index> rank(n);
+  slot.reserve(n);
+  for (auto f = faces.begin(); f != faces.end(); ++f) slot.push_back(f);
   for (std::size_t k = 0; k < n; ++k) rank[where[k]] = Index(k);
-  // Each face's new place goes into its neighbor(0) for the time of the move (any face's new
-  // place in one read; none for a face that stays, as a face may not be its own neighbor), and
-  // its new neighbors, by rank, into `neighbors`: they are set once all faces are in place.
-  std::vector<std::array<Face_handle, 3>> neighbors(n);
-  for (std::size_t j = 0; j < n; ++j) {
-    const Face_handle f = slot[j];
-    neighbors[rank[j]] = {f->neighbor(0), f->neighbor(1), f->neighbor(2)};
-    f->set_neighbors(rank[j] == j ? Face_handle() : slot[rank[j]], f->neighbor(1), f->neighbor(2));
-  }
-  const auto place = [](Face_handle f) {
-    const Face_handle p = f->neighbor(0);
-    return p == Face_handle() ? f : p;
-  };
-  for (auto& a : neighbors)
-    for (Face_handle& g : a) g = place(g);
-  for (auto v = cdt.tds().vertices().begin(); v != cdt.tds().vertices().end(); ++v)
-    if (v->face() != Face_handle()) v->set_face(place(v->face()));
+  // The face in slot i goes to slot rank[i]. After the moves, the face that sits in slot j came
+  // from the slot i with rank[i] = j; it carries, in its blinding edge's face (a handle free
+  // here: blind tags are stale after an insertion, and cleared below), the new place of the
+  // face that was in slot j, slot[rank[j]] = slot[rank[rank[i]]]. So an old neighbor handle
+  // gives its face's new place, and the neighbors are set once no face is its own neighbor.
+  for (std::size_t i = 0; i < n; ++i) slot[i]->set_blinding_edge({slot[rank[rank[i]]], 0});
   // Slot by slot, the face of its rank is swapped in; the face it held takes the other slot.
   // The other slots are known ahead, so they are fetched ahead.
   constexpr std::size_t distance = 8;
@@ -97,11 +96,12 @@ void sort_faces(CDT& cdt) {
     rank[j] = r;
     where[r] = j;
   }
-  for (std::size_t k = 0; k < n; ++k) {
-    const Face_handle f = slot[k];
-    f->set_neighbors(neighbors[k][0], neighbors[k][1], neighbors[k][2]);
-    if (f->is_blinded()) f->clear_blinding();  // stale after an insertion, if not dangling
-  }
+  const auto place = [](Face_handle old) { return old->blinding_edge().first; };
+  for (const Face_handle f : slot)
+    f->set_neighbors(place(f->neighbor(0)), place(f->neighbor(1)), place(f->neighbor(2)));
+  for (auto v = cdt.tds().vertices().begin(); v != cdt.tds().vertices().end(); ++v)
+    if (v->face() != Face_handle()) v->set_face(place(v->face()));
+  for (const Face_handle f : slot) f->clear_blinding();
 }
 
 // Whether the faces of `cdt` lie scattered in memory, as CGAL's own insertion leaves them:
