@@ -4,7 +4,9 @@
 # built. CVT_2_BUILD_DIR: the build directory (default build); JOBS: parallel compile jobs (2).
 # CVT_2_CONVERGENCE_CSV: the CSV the L-BFGS benchmark writes (see the README), drawn as
 # doc/fig/convergence.png by scripts/plot_convergence.py; `make_figures.sh convergence` draws
-# only that one.
+# only that one. CVT_2_SPEED_DIR: a directory holding the printed outputs of the speed runs the
+# README lists (lloyd.txt, scaling.txt, scaling_1_thread.txt), drawn as doc/fig/speed.png by
+# scripts/plot_speed.py; `make_figures.sh speed` draws only that one.
 set -e
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${CVT_2_BUILD_DIR:-$root/build}
@@ -12,6 +14,12 @@ csv=${CVT_2_CONVERGENCE_CSV:-}
 [ -z "$csv" ] || csv=$(cd "$(dirname "$csv")" && pwd)/$(basename "$csv")
 if [ "$1" = convergence ] && [ -z "$csv" ]; then
   echo "make_figures.sh convergence: set CVT_2_CONVERGENCE_CSV to the benchmark's CSV" >&2
+  exit 1
+fi
+speed=${CVT_2_SPEED_DIR:-}
+[ -z "$speed" ] || speed=$(cd "$speed" && pwd)
+if [ "$1" = speed ] && [ -z "$speed" ]; then
+  echo "make_figures.sh speed: set CVT_2_SPEED_DIR to the directory of the speed runs' outputs" >&2
   exit 1
 fi
 "$root/scripts/install_dependencies.sh" librsvg2-bin pngquant python3-matplotlib
@@ -48,7 +56,7 @@ PY
 }
 
 cd "$tmp"
-if [ "$1" != convergence ]; then
+if [ "$1" != convergence ] && [ "$1" != speed ]; then
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > /dev/null
 cmake --build "$build" -j "${JOBS:-2}" --target bvd_cells lloyd_four_clusters lloyd_uniform \
   custom_density lloyd_adaptive lloyd_france lloyd_world lloyd_curved_hole cvt2 \
@@ -92,9 +100,17 @@ pngquant --force --output "$fig/kentucky_counties.png" 64 kentucky.png
 pngquant --force --output "$fig/crack_interpolation.png" 64 crack.png
 fi
 
-if [ -n "$csv" ]; then
+if [ -n "$csv" ] && [ "$1" != speed ]; then
   python3 "$root/scripts/plot_convergence.py" "$csv" convergence.svg
   png 1000 convergence.svg "$fig/convergence.png"
+fi
+
+if [ -n "$speed" ] && [ "$1" != convergence ]; then
+  one_thread=""
+  [ ! -f "$speed/scaling_1_thread.txt" ] || one_thread="$speed/scaling_1_thread.txt"
+  /usr/bin/python3 "$root/scripts/plot_speed.py" "$speed/lloyd.txt" "$speed/scaling.txt" \
+    $one_thread speed.png
+  pngquant --force --output "$fig/speed.png" 64 speed.png
 fi
 
 cd "$root"
