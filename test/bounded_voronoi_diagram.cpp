@@ -740,15 +740,21 @@ TEST_CASE("sort_faces: the same triangulation, its faces in the Hilbert order of
   CVT_2::insert_generators_2(islands, random_points_in_domain(islands, 5000, 7));
   CHECK(islands.is_valid());
   CHECK(near(islands) > 0.8);
-  // Far from the origin, as projected coordinates in metres are (the centroids are sorted in
-  // single precision: relative to a vertex, not to the origin, whose floats are 0.06 apart here).
-  CVT_2::IO::Poly_data<Point> far;
-  add_ring(far,
-           {Point(1e6, 4e6), Point(1e6 + 1, 4e6), Point(1e6 + 1, 4e6 + 1), Point(1e6, 4e6 + 1)});
-  Cdt utm = triangulate(far);
-  CVT_2::insert_generators_2(utm, random_points_in_domain(utm, 5000, 8));
-  CHECK(utm.is_valid());
-  CHECK(near(utm) > 0.8);
+  // Far from the origin, as projected coordinates in metres are, and at extreme scales (the
+  // centroids are sorted in single precision: relative to a vertex, not to the origin, whose
+  // floats are 0.06 and 0.25 apart here, and scaled, as a float ends near 3e38).
+  for (const auto& [corner, side] :
+       {std::pair<Point, double>(Point(1e6, 4e6), 1), std::pair<Point, double>(Point(0, 0), 1e200),
+        std::pair<Point, double>(Point(0, 0), 1e-200)}) {
+    CAPTURE(corner, side);
+    CVT_2::IO::Poly_data<Point> far;
+    const double x = corner.x(), y = corner.y();
+    add_ring(far, {corner, Point(x + side, y), Point(x + side, y + side), Point(x, y + side)});
+    Cdt cdt = triangulate(far);
+    CVT_2::insert_generators_2(cdt, random_points_in_domain(cdt, 5000, 8));
+    CHECK(cdt.is_valid());
+    CHECK(near(cdt) > 0.8);
+  }
   // No plane, no layout.
   Cdt line;
   CVT_2::internal::sort_faces(line);

@@ -10,6 +10,8 @@
 #include <CGAL/hilbert_sort.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -23,15 +25,16 @@ namespace internal {
 // that memory order follows CGAL's Hilbert sort of their centroids (the median policy: the
 // middle one stops at a cluster that falls in one quadrant of its box, and would leave a domain
 // with a far island in shuffled order), the infinite faces last. The centroids are sorted in
-// single precision, relative to the first vertex: the order is only a layout, and a float pair
-// with its slot takes 12 bytes. The faces' neighbors and the vertices' faces follow their faces;
-// nothing else does (a face base's own face handles, such as a blinding edge's face), and blind
-// tags are cleared. The passes of the optimizers read faces in memory order and, from each, the
-// faces around its vertices. CGAL's spatially sorted insertion makes faces in rounds over the
-// whole domain, and the later rounds split and flip them where they lie: half the neighbors of
-// a face then lie more than 64 faces away in memory, a tenth after this. Face handles held
-// before the call then refer to other faces. Extra memory: 16 bytes a face, no second container;
-// everything is allocated, and may throw, before the first face changes.
+// single precision, relative to the first vertex and scaled by a power of two into [-1, 1] (any
+// extent of double coordinates fits; floats relative to the origin would be 0.25 apart at 4e6):
+// the order is only a layout, and a float pair with its slot takes 12 bytes. The faces' neighbors
+// and the vertices' faces follow their faces; nothing else does (a face base's own face handles,
+// such as a blinding edge's face), and blind tags are cleared. The passes of the optimizers read
+// faces in memory order and, from each, the faces around its vertices. CGAL's spatially sorted
+// insertion makes faces in rounds over the whole domain, and the later rounds split and flip them
+// where they lie: half the neighbors of a face then lie more than 64 faces away in memory, a tenth
+// after this. Face handles held before the call then refer to other faces. Extra memory: 16 bytes a
+// face, no second container; everything is allocated, and may throw, before the first face changes.
 template <class CDT>
 void sort_faces(CDT& cdt) {
   using Face_handle = typename CDT::Face_handle;
@@ -45,10 +48,16 @@ void sort_faces(CDT& cdt) {
   // memory order
   std::vector<Index> where;
   {
-    const auto& origin = cdt.finite_vertices_begin()->point();
-    const double ox = CGAL::to_double(origin.x()), oy = CGAL::to_double(origin.y());
     const auto x = [](typename CDT::Vertex_handle v) { return CGAL::to_double(v->point().x()); };
     const auto y = [](typename CDT::Vertex_handle v) { return CGAL::to_double(v->point().y()); };
+    const double ox = x(cdt.finite_vertices_begin()), oy = y(cdt.finite_vertices_begin());
+    double extent = 0;
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      extent = std::max({extent, std::abs(x(v) - ox), std::abs(y(v) - oy)});
+    int exponent = 0;
+    if (!std::isfinite(extent)) return;  // coordinates beyond what insert_generators_2() takes
+    std::frexp(extent, &exponent);       // extent < 2^exponent
+    const double scale = std::ldexp(1.0, -exponent);
     std::vector<Item> finite;
     std::vector<Index> infinite;
     finite.reserve(n);
@@ -59,9 +68,9 @@ void sort_faces(CDT& cdt) {
         continue;
       }
       const auto a = f->vertex(0), b = f->vertex(1), c = f->vertex(2);
-      finite.emplace_back(
-          Float_point(float((x(a) + x(b) + x(c)) / 3 - ox), float((y(a) + y(b) + y(c)) / 3 - oy)),
-          j);
+      finite.emplace_back(Float_point(float(((x(a) + x(b) + x(c)) / 3 - ox) * scale),
+                                      float(((y(a) + y(b) + y(c)) / 3 - oy) * scale)),
+                          j);
     }
     CGAL::hilbert_sort(
         finite.begin(), finite.end(),
