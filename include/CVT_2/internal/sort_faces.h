@@ -54,9 +54,9 @@ void sort_faces(CDT& cdt) {
     double extent = 0;
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
       extent = std::max({extent, std::abs(x(v) - ox), std::abs(y(v) - oy)});
-    int exponent = 0;
     if (!std::isfinite(extent)) return;  // coordinates beyond what insert_generators_2() takes
-    std::frexp(extent, &exponent);       // extent < 2^exponent
+    int exponent = 0;
+    std::frexp(extent, &exponent);  // extent < 2^exponent
     const double scale = std::ldexp(1.0, -exponent);
     std::vector<Item> finite;
     std::vector<Index> infinite;
