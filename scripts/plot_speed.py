@@ -59,14 +59,13 @@ def main(argv):
                                  (cdt, "CGAL constrained Delaunay build of the points", "^--"),
                                  (ours, "CVT_2 Lloyd iteration (lloyd_optimize_2), both cores", "o-")):
         left.loglog(*zip(*series), style, label=label)
-    # the ratios as the benchmark printed them, from its unrounded times
-    for series, ratios, text, offset, align in (
-            (ours, column(lloyd, "N", "ours/cdt", "cdt build s", square), "{}× the build", (7, -13), "left"),
-            (cgal, column(lloyd, "N", "CGAL/ours", "cdt build s", square), "{}× ours", (7, -13), "left")):
+    # the ratios as the benchmark printed them, from its unrounded times, below right of each point
+    for series, ratios, text in ((ours, column(lloyd, "N", "ours/cdt", "cdt build s", square), "{}× the build"),
+                                 (cgal, column(lloyd, "N", "CGAL/ours", "cdt build s", square), "{}× ours")):
         ratio = dict(ratios)
         for n, s in series:
             left.annotate(text.format(f"{ratio[n]:g}"), (n, s), textcoords="offset points",
-                          xytext=offset, ha=align, fontsize=9)
+                          xytext=(7, -13), fontsize=9)
     low = min(s for _, s in ours)
     left.set_ylim(low / 3, max(s for _, s in cgal) * 30)  # room for the legend
     left.set_xlim(min(n for n, _ in ours) / 2, max(n for n, _ in ours) * 4)
