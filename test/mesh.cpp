@@ -225,6 +225,173 @@ TEST_CASE("the mesh of random domains: holes, touching polylines, points on cons
   }
 }
 
+namespace {
+
+// The unit square, and with `inner` the segments y = 0.3 and x = 0.7 (cells on both sides).
+Cdt_ids unit_square(bool inner) {
+  CVT_2::IO::Poly_data<Point> poly;
+  add_ring(poly, {{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  if (inner) {
+    poly.vertices.insert(poly.vertices.end(), {{0.1, 0.3}, {0.9, 0.3}, {0.7, 0.45}, {0.7, 0.9}});
+    poly.segments.push_back({4, 5});
+    poly.segments.push_back({6, 7});
+  }
+  poly.vertex_lines.assign(poly.vertices.size(), 0);
+  poly.segment_lines.assign(poly.segments.size(), 0);
+  Cdt_ids cdt;
+  CVT_2::IO::insert_poly(cdt, poly);
+  return cdt;
+}
+
+}  // namespace
+
+TEST_CASE("generators a hair apart beside a constraint keep cells of positive area", "[mesh]") {
+  // Two generators at one x, within 1e-16 to 1e-12 of a horizontal constraint (or at one y,
+  // of a vertical one): the cell nearer the constraint is a strip that thin, whose points lie
+  // within 2^-40 of their distance to the generator. It keeps its area and vertices, and the
+  // cells still tile the domain (check_mesh()).
+  {  // the issue's case: the lower cell is (0.75, 0) (0.75, 2e-14) (0.25, 2e-14) (0.25, 0)
+    Cdt_ids cdt = unit_square(false);
+    CVT_2::insert_generators_2(cdt, std::vector<Point>{{0.5, 1e-14}, {0.5, 3e-14}});
+    const Bvd_ids bvd(cdt);
+    const Mesh mesh(bvd);
+    check_mesh(mesh, cdt);
+    std::size_t k = 0;
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      if (v->point() == Point(0.5, 1e-14)) k = mesh.cell_of(v);
+    CHECK(mesh.cell(k).size() == 4);
+    CHECK(CGAL::to_double(mesh.area(k)) == Approx(0.5 * 2e-14));
+  }
+  // (vertical, where, towards, from, to): the square's sides and the inner segments, both sides.
+  static const double lines[8][5] = {{0, 0, 1, 0.05, 0.95},   {0, 1, -1, 0.05, 0.95},
+                                     {0, 0.3, 1, 0.15, 0.85}, {0, 0.3, -1, 0.15, 0.85},
+                                     {1, 0, 1, 0.05, 0.95},   {1, 1, -1, 0.05, 0.95},
+                                     {1, 0.7, 1, 0.5, 0.85},  {1, 0.7, -1, 0.5, 0.85}};
+  std::mt19937_64 rng(7);
+  std::size_t thin = 0;
+  for (int trial = 0; trial < int(random_cases(300)); ++trial) {
+    CAPTURE(trial);
+    Cdt_ids cdt = unit_square(true);
+    std::vector<Point> generators;
+    for (int pair = uniform_int(rng, 1, 3); pair > 0; --pair) {
+      const auto& l = lines[uniform_int(rng, 0, 7)];
+      const double along = uniform(rng, l[3], l[4]);
+      const double d = std::pow(10.0, uniform(rng, -16, -12)), e = d * uniform(rng, 1.5, 4);
+      for (const double off : {d, e}) {
+        const double across = l[1] + l[2] * off;
+        generators.push_back(l[0] == 1 ? Point(across, along) : Point(along, across));
+      }
+    }
+    if (uniform_int(rng, 0, 1) == 1)
+      for (const Point& p : CVT_2::random_points_in_domain_2(
+               cdt, 20, CVT_2::parameters::random_seed(unsigned(trial))))
+        generators.push_back(p);
+    CVT_2::insert_generators_2(cdt, generators);
+    const Bvd_ids bvd(cdt);
+    const Mesh mesh(bvd);
+    check_mesh(mesh, cdt);
+    // Each cell has the area the walk gives it, thin or not.
+    std::size_t k = 0;
+    bvd.for_each_cell([&](Cdt_ids::Vertex_handle, const auto& c) {
+      const double walked = signed_area(c);
+      thin += walked > 0 && walked < 1e-9;
+      CHECK(mesh.cell(k).size() >= 3);
+      INFO(std::to_string(k) + ": " + std::to_string(walked * 1e20) + "e-20 by the walk, " +
+           std::to_string(CGAL::to_double(mesh.area(k)) * 1e20) + "e-20 in the mesh");
+      CHECK(CGAL::to_double(mesh.area(k)) == Approx(walked).epsilon(1e-6).margin(1e-15));
+      ++k;
+    });
+  }
+  CHECK(thin > 100);  // the thin cells happened
+}
+
+TEST_CASE("a circumcenter a hair inside the boundary merges onto it, not the boundary onto it",
+          "[mesh]") {
+  // Three generators on a circle centred 1e-15 above the bottom side: their circumcenter and
+  // the clip points where its bisectors meet the side are one vertex, which stays on the side.
+  Cdt_ids cdt = unit_square(false);
+  const double r = 0.2, c = 1e-15;
+  std::vector<Point> generators;
+  for (const double degrees : {-60.0, 60.0, 80.0}) {
+    const double t = degrees * CGAL_PI / 180;
+    generators.emplace_back(0.5 + r * std::sin(t), c + r * std::cos(t));
+  }
+  CVT_2::insert_generators_2(cdt, generators);
+  const Bvd_ids bvd(cdt);
+  const Mesh mesh(bvd);
+  check_mesh(mesh, cdt);
+  std::size_t on_side = 0;
+  for (const auto& e : mesh.edges()) {
+    if (e.constraint == Mesh::none || e.cells[1] != Mesh::none) continue;
+    for (const auto i : e.vertices) {
+      const Point& p = mesh.point(i);
+      CAPTURE(p);
+      CHECK(std::min({std::abs(p.x()), std::abs(p.y()), std::abs(1 - p.x()),
+                      std::abs(1 - p.y())}) <= 1e-16);
+      on_side += std::abs(p.x() - 0.5) < 1e-3;
+    }
+  }
+  CHECK(on_side >= 2);  // the merged vertex, on the bottom side
+}
+
+TEST_CASE("cell vertices farther apart than a rounding stay apart: a grid off by 1e-10", "[mesh]") {
+  // Each four neighbours of the grid are nearly cocircular: their two circumcenters some 1e-10
+  // of the step apart, an edge the mesh keeps (it merges points within 2^-40 of their distance
+  // to the generator, where a circumcenter's rounding is some 2^-50; 2^10 times that would
+  // merge these).
+  std::mt19937_64 rng(3);
+  std::vector<Point> grid;
+  const double h = 1.0 / 32;
+  for (int i = 1; i < 32; ++i)
+    for (int j = 1; j < 32; ++j)
+      grid.emplace_back((i + uniform(rng, -1e-10, 1e-10)) * h,
+                        (j + uniform(rng, -1e-10, 1e-10)) * h);
+  Cdt_ids cdt = unit_square(false);
+  CVT_2::insert_generators_2(cdt, grid);
+  const Bvd_ids bvd(cdt);
+  const Mesh mesh(bvd);
+  check_mesh(mesh, cdt);
+  std::size_t k = 0, short_edges = 0;
+  bvd.for_each_cell([&](Cdt_ids::Vertex_handle v, const auto& c) {
+    // The walk's edges longer than 2^-36 of the distance to the generator are all kept.
+    std::size_t kept = 0;
+    for (std::size_t j = 0; j < c.size(); ++j) {
+      const double far = CGAL::squared_distance(c[j].point, v->point());
+      const double length = CGAL::squared_distance(c[j].point, c[(j + 1) % c.size()].point);
+      kept += length > 0x1.0p-72 * far;
+      short_edges += length > 0x1.0p-72 * far && length < 0x1.0p-50 * far;
+    }
+    CHECK(mesh.cell(k).size() >= kept);
+    ++k;
+  });
+  CHECK(short_edges > 100);  // edges that a 2^10-fold tolerance would merge
+}
+
+TEST_CASE("the two sides of a constraint meet at their own points, a hair apart", "[mesh]") {
+  // Rows of generators on both sides of the inner segment y = 0.3 (x from 0.1 to 0.9), the rows
+  // below shifted by 1e-10 of their step: the cells above and below meet the segment at points
+  // 2.5e-12 apart, each a vertex of the conforming mesh (it merges the two sides' points within
+  // 2^-40 of the segment's length, 7e-13; 2^10 times that would merge these).
+  Cdt_ids cdt = unit_square(true);
+  const double h = 0.8 / 32, shift = 1e-10 * h;
+  std::vector<Point> generators;
+  for (int i = 1; i < 32; ++i)
+    for (const double dy : {0.5 * h, 1.5 * h}) {
+      generators.emplace_back(0.1 + i * h, 0.3 + dy);
+      generators.emplace_back(0.1 + i * h + shift, 0.3 - dy);
+    }
+  CVT_2::insert_generators_2(cdt, generators);
+  const Bvd_ids bvd(cdt);
+  const Mesh mesh(bvd);
+  check_mesh(mesh, cdt);
+  std::size_t on_segment = 0;
+  for (std::size_t i = 0; i < mesh.number_of_vertices(); ++i) {
+    const Point& p = mesh.point(i);
+    on_segment += std::abs(p.y() - 0.3) < 1e-14 && p.x() > 0.1 + h && p.x() < 0.9 - h;
+  }
+  CHECK(on_segment == 2 * 30);  // the bisectors between the columns, from above and below
+}
+
 TEST_CASE("each mesh cell is its diagram cell, with the vertices the cells beside it add",
           "[mesh]") {
   const Cdt_ids cdt = load("us_massachusetts_counties.poly", 2000, 5);

@@ -35,7 +35,9 @@ namespace CVT_2 {
 /// triangulation's topology (never by comparing coordinates, except that points a cell visits
 /// twice in a row at one point, or within 2^-40 of their distance to its generator, are one
 /// vertex: a circumcenter that is also a clip point, the circumcenters of nearly cocircular
-/// generators, which rounding could otherwise set in a zigzag, the cell no simple polygon); each
+/// generators, which rounding could otherwise set in a zigzag, the cell no simple polygon;
+/// except where that would leave a cell of positive area without area, as a generator a hair
+/// from a constraint or from another generator has: the points of such a cell stay apart); each
 /// cell is a cycle of vertex indices, counterclockwise; each edge of a cycle knows what lies beyond
 /// it: another cell (a bisector edge), or a constraint, with the cell on its other side if the
 /// constraint is inside the domain.
@@ -43,7 +45,8 @@ namespace CVT_2 {
 /// Cells are numbered in the order of `Bounded_voronoi_diagram_2::for_each_cell()`, vertices
 /// with the circumcenters first, in the order of their faces in memory, then the other vertices
 /// in the order of the cells that first meet them (points merged into one take the number of
-/// their constrained generator if they have one). The same triangulation, with its faces in the
+/// their constrained generator if they have one, else of their clip point, so that the
+/// domain's boundary stays where it is). The same triangulation, with its faces in the
 /// same order in memory, gives the same mesh, whatever the number of threads.
 ///
 /// How cells that are not simple polygons are represented:
@@ -201,7 +204,8 @@ class Bvd_mesh_2 {
                                       unsigned threads);
   bool add_free_cell(const Triangulation& cdt, Vertex_handle v, Chunk_cells& out) const;
   static bool is_one_point(const Point_2& p, const Point_2& q, const Point_2& generator);
-  bool has_repeated_point(const Entry* first, std::size_t n, const Point_2& generator) const;
+  void add_repeated_points(const Entry* first, std::size_t n, const Point_2& generator,
+                           Chunk_cells& out) const;
   void add_chain(const Diagram& bvd, Vertex_handle v, std::vector<Cell_vertex>& raw,
                  Chunk_cells& out) const;
   template <class Raw>
@@ -213,11 +217,9 @@ class Bvd_mesh_2 {
   Index vertex(Vertex_handle v, const Cell_vertex& c, Chunk_cells& out) const;
   Constraint constraint_cells(const Tri_edge& e) const;
   void assemble(std::vector<Chunk_cells>& chunks, unsigned threads);
-  bool merge_listed(const std::vector<std::pair<Index, Index>>& same,
-                    std::vector<Chunk_cells>& chunks);
-  bool merge_points(const std::vector<std::pair<Index, Index>>& same, Index first,
-                    std::vector<Index>& renumber);
-  void merge_vertices(const std::vector<std::pair<Index, Index>>& same);
+  std::vector<Index> merge_groups(const std::vector<std::pair<Index, Index>>& same) const;
+  bool keeps_area(std::size_t k, const std::vector<Index>& root) const;
+  bool merge_vertices(std::vector<std::pair<Index, Index>> same);
   void drop_repeats();
   void conform_constraints();
   void pair_constraint_sides();
@@ -401,14 +403,14 @@ bool Bvd_mesh_2<Diagram>::is_one_point(const Point_2& p, const Point_2& q,
   return CGAL::to_double(CGAL::squared_distance(p, q)) <= 0x1.0p-80 * far;
 }
 
-// Whether the cycle of circumcenters [first, first + n) visits one point twice in a row.
+// The circumcenters of the cycle [first, first + n) that are one point with the next, as merges.
 template <class Diagram>
-bool Bvd_mesh_2<Diagram>::has_repeated_point(const Entry* first, std::size_t n,
-                                             const Point_2& generator) const {
-  for (std::size_t j = 0; j < n; ++j)
-    if (is_one_point(m_points[first[j].vertex], m_points[first[(j + 1) % n].vertex], generator))
-      return true;
-  return false;
+void Bvd_mesh_2<Diagram>::add_repeated_points(const Entry* first, std::size_t n,
+                                              const Point_2& generator, Chunk_cells& out) const {
+  for (std::size_t j = 0; j < n; ++j) {
+    const Index a = first[j].vertex, b = first[(j + 1) % n].vertex;
+    if (is_one_point(m_points[a], m_points[b], generator)) out.merges.emplace_back(a, b);
+  }
 }
 
 // The cell of v by Algorithm 2, its vertices in `raw`.
@@ -423,18 +425,17 @@ void Bvd_mesh_2<Diagram>::add_chain(const Diagram& bvd, Vertex_handle v,
 
 // The cells of generators[0, n) into `out`, in order. A free cell's circumcenters are fetched
 // as its walk names them and compared some cells later, when they have arrived: the walks wait
-// for no point. A free cell that meets a point twice is done again by Algorithm 2, which
-// merges the two (rare: cocircular points).
+// for no point.
 template <class Diagram>
 void Bvd_mesh_2<Diagram>::add_cells(const Diagram& bvd, const Vertex_handle* generators,
                                     std::size_t n, Chunk_cells& out) const {
   const Triangulation& cdt = bvd.triangulation();
   std::vector<Cell_vertex> raw;
   std::vector<std::size_t> start(n);  // of each cell's entries
-  std::vector<unsigned char> is_free(n, 0), redo(n, 0);
+  std::vector<unsigned char> is_free(n, 0);
   const auto check = [&](std::size_t k) {
-    redo[k] = is_free[k] && has_repeated_point(out.entries.data() + start[k], out.sizes[k],
-                                               generators[k]->point());
+    if (is_free[k])
+      add_repeated_points(out.entries.data() + start[k], out.sizes[k], generators[k]->point(), out);
   };
   constexpr std::size_t lag = 8;
   out.sizes.reserve(n);
@@ -450,48 +451,21 @@ void Bvd_mesh_2<Diagram>::add_cells(const Diagram& bvd, const Vertex_handle* gen
         if (k >= lag) check(k - lag);
       });
   for (std::size_t k = n > lag ? n - lag : 0; k < n; ++k) check(k);
-  // From the first cell to redo on, the cells again: the others copied.
-  const std::size_t k = std::size_t(std::find(redo.begin(), redo.end(), 1) - redo.begin());
-  if (k == n) return;
-  const std::vector<Index> sizes(out.sizes.begin() + std::ptrdiff_t(k), out.sizes.end());
-  const std::vector<Entry> entries(out.entries.begin() + std::ptrdiff_t(start[k]),
-                                   out.entries.end());
-  out.sizes.resize(k);
-  out.entries.resize(start[k]);
-  for (std::size_t i = 0, from = 0; i < sizes.size(); from += sizes[i++]) {
-    if (redo[k + i]) {
-      add_chain(bvd, generators[k + i], raw, out);
-    } else {
-      out.entries.insert(out.entries.end(), entries.data() + from,
-                         entries.data() + from + sizes[i]);
-      out.sizes.push_back(sizes[i]);
-    }
-  }
 }
 
-// The chain of v's cell into `out`: runs of points that are one (is_one_point()) become one
-// vertex (the others of the run recorded as merged into it), with the edge that leaves the run.
+// The chain of v's cell into `out`, each point with the edge that leaves it; points that are
+// one with the next (is_one_point()) recorded as merges, made (or not) when all cells are in.
 template <class Diagram>
 template <class Raw>
 void Bvd_mesh_2<Diagram>::add_cell(Vertex_handle v, const Raw& raw, Chunk_cells& out) const {
-  const std::size_t m = raw.size();
-  std::size_t start = 0;  // a point that differs from the one before it, so no run wraps
-  const auto one = [&v](const Cell_vertex& a, const Cell_vertex& b) {
-    return is_one_point(a.point, b.point, v->point());
-  };
-  while (start < m && one(raw[start], raw[(start + m - 1) % m])) ++start;
-  if (start == m) start = 0;  // a cell of one point
-  const auto at = [&](std::size_t j) -> const Cell_vertex& { return raw[(start + j) % m]; };
-  std::size_t count = 0;
-  for (std::size_t j = 0; j < m; ++count) {
-    const Index first = vertex(v, at(j), out);
-    std::size_t last = j;
-    for (; last + 1 < m && one(at(last + 1), at(last)); ++last)
-      out.merges.emplace_back(first, vertex(v, at(last + 1), out));
-    out.entries.push_back({first, out_edge(v, at(last), at(last + 1), out)});
-    j = last + 1;
-  }
-  out.sizes.push_back(Index(count));
+  const std::size_t m = raw.size(), first = out.entries.size();
+  for (std::size_t j = 0; j < m; ++j)
+    out.entries.push_back({vertex(v, raw[j], out), out_edge(v, raw[j], raw[(j + 1) % m], out)});
+  for (std::size_t j = 0; j < m; ++j)
+    if (is_one_point(raw[j].point, raw[(j + 1) % m].point, v->point()))
+      out.merges.emplace_back(out.entries[first + j].vertex,
+                              out.entries[first + (j + 1) % m].vertex);
+  out.sizes.push_back(Index(m));
 }
 
 template <class Diagram>
@@ -515,8 +489,7 @@ Bvd_mesh_2<Diagram>::Bvd_mesh_2(const Diagram& bvd, unsigned threads) {
 
 // The chunks' cells into the mesh's arrays: the vertices other than circumcenters numbered in
 // the order of the cells that first meet them, constraints likewise (both few, serially), then
-// the cells copied chunk by chunk; vertices found at one point are merged, before the copy by
-// merge_listed() or after it by merge_vertices().
+// the cells copied chunk by chunk; vertices found at one point are merged after the copy.
 template <class Diagram>
 void Bvd_mesh_2<Diagram>::assemble(std::vector<Chunk_cells>& chunks, unsigned threads) {
   std::unordered_map<Key, Index, Key_hash> numbers;
@@ -552,7 +525,6 @@ void Bvd_mesh_2<Diagram>::assemble(std::vector<Chunk_cells>& chunks, unsigned th
     for (const auto& [a, b] : c.merges) same.emplace_back(number(a), number(b));
     entries.push_back(entries.back() + c.entries.size());
   }
-  const bool merged = !same.empty() && merge_listed(same, chunks);
   // Room for the vertices conform_constraints() adds along constraints, about one a side there.
   m_cell_vertices.reserve(entries.back() + 2 * on_constraint_sides);
   m_sides.reserve(entries.back() + 2 * on_constraint_sides);
@@ -587,15 +559,7 @@ void Bvd_mesh_2<Diagram>::assemble(std::vector<Chunk_cells>& chunks, unsigned th
   });
   for (const auto& o : on_constraints)
     m_on_constraints.insert(m_on_constraints.end(), o.begin(), o.end());
-  if (merged) {
-    // A cell that computed a merged point to other bits (a clip point, from the other side of
-    // its bisector) merged nothing itself, and can now meet the vertex twice in a row.
-    drop_repeats();
-    list_sides_on_constraints();
-  } else if (!same.empty()) {
-    merge_vertices(same);
-    list_sides_on_constraints();
-  }
+  if (merge_vertices(std::move(same))) list_sides_on_constraints();
 }
 
 template <class Diagram>
@@ -606,77 +570,107 @@ void Bvd_mesh_2<Diagram>::list_sides_on_constraints() {
       if (m_sides[e].constraint != none) m_on_constraints.emplace_back(Index(k), e);
 }
 
-// Vertices found at one point made one: union-find over `same`. A group's root is its vertex
-// below `first` if it has one (which keeps its number), else its generator if it has one (an
-// input point, exact, where the others are constructions rounded near it: the cell keeps its
-// generator as a vertex), else its smallest number; the vertices from `first` on closed up in
-// order, a merged one given its root's new number, in renumber[i - first]. The same groups and
-// roots whatever the order of `same`. False, and nothing changed, if a group holds two vertices
-// below `first`.
+// The groups of vertices that `same` makes one (union-find): the root of each vertex, which is
+// the group's generator if it has one (an input point, exact, where the others are
+// constructions rounded near it: the cell keeps its generator as a vertex), else its clip point
+// on a constraint if it has one (so that a circumcenter a rounding off the domain's boundary
+// does not move the boundary), else its smallest number. The same groups and roots whatever the
+// order of `same`.
 template <class Diagram>
-bool Bvd_mesh_2<Diagram>::merge_points(const std::vector<std::pair<Index, Index>>& same,
-                                       Index first, std::vector<Index>& renumber) {
-  const Index size = Index(m_points.size());
-  std::vector<Index> parent(size - first);
-  std::iota(parent.begin(), parent.end(), first);
-  const auto root = [&](Index i) {  // halving the paths; the vertices below first are roots
-    while (i >= first && parent[i - first] != i) {
-      const Index p = parent[i - first];
-      i = parent[i - first] = p >= first ? parent[p - first] : p;
-    }
+auto Bvd_mesh_2<Diagram>::merge_groups(const std::vector<std::pair<Index, Index>>& same) const
+    -> std::vector<Index> {
+  std::vector<Index> parent(m_points.size());
+  std::iota(parent.begin(), parent.end(), Index(0));
+  const auto root = [&](Index i) {  // halving the paths
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
   const auto rank = [&](Index i) {  // the smallest rank in a group is its root
-    return std::make_tuple(i >= first, m_types[i] != Cell_vertex::GENERATOR, i);
+    const Vertex_type t = m_types[i];
+    return std::make_pair(t == Cell_vertex::GENERATOR    ? 0
+                          : t == Cell_vertex::CLIP_POINT ? 1
+                                                         : 2,
+                          i);
   };
   for (const auto& [a, b] : same) {
     const Index ra = root(a), rb = root(b);
     if (ra == rb) continue;
-    if (std::max(ra, rb) < first) return false;
     if (rank(ra) < rank(rb))
-      parent[rb - first] = ra;
+      parent[rb] = ra;
     else
-      parent[ra - first] = rb;
+      parent[ra] = rb;
   }
-  renumber.assign(parent.size(), none);
-  Index next = first;
-  for (Index i = first; i < size; ++i)
-    if (root(i) == i) {
+  for (Index i = 0; i < parent.size(); ++i) parent[i] = root(i);
+  return parent;
+}
+
+// Whether cell k, its vertices moved to their roots, keeps its area, to 2^-20 of it: merges
+// make one the points of a cell that rounding set apart (which changes its area by some 2^-40 of
+// it), never the corners of a thin cell, as a generator a hair from a constraint or from another
+// generator has. A cell without area by its points has nothing to keep.
+template <class Diagram>
+bool Bvd_mesh_2<Diagram>::keeps_area(std::size_t k, const std::vector<Index>& root) const {
+  const std::size_t b = m_offsets[k], n = m_offsets[k + 1] - b;
+  const auto area = [&](auto at) {
+    FT a = 0;
+    for (std::size_t j = 1; j + 1 < n; ++j)
+      a += CGAL::area(m_points[at(0)], m_points[at(j)], m_points[at(j + 1)]);
+    return a;
+  };
+  const FT before = area([&](std::size_t j) { return m_cell_vertices[b + j]; });
+  if (!(before > 0)) return true;
+  const FT after = area([&](std::size_t j) { return root[m_cell_vertices[b + j]]; });
+  return CGAL::abs(after - before) <= before * 0x1.0p-20;
+}
+
+// Vertices found at one point are made one, in the cells' cycles too, but for those of cells
+// that would lose their area: the merges of their vertices at different points are not made.
+// Whether any vertex was merged.
+template <class Diagram>
+bool Bvd_mesh_2<Diagram>::merge_vertices(std::vector<std::pair<Index, Index>> same) {
+  if (same.empty()) return false;
+  std::vector<Index> root = merge_groups(same);
+  // The vertices of such cells, and those at their very points, keep their places.
+  std::vector<unsigned char> kept(m_points.size(), 0);
+  for (bool vetoed = true; vetoed;) {
+    vetoed = false;
+    for (std::size_t k = 0; k + 1 < m_offsets.size(); ++k) {
+      bool moves = false;
+      for (std::size_t e = m_offsets[k]; e < m_offsets[k + 1] && !moves; ++e)
+        moves = root[m_cell_vertices[e]] != m_cell_vertices[e];
+      if (!moves || keeps_area(k, root)) continue;
+      for (std::size_t e = m_offsets[k]; e < m_offsets[k + 1]; ++e)
+        if (!kept[m_cell_vertices[e]]) kept[m_cell_vertices[e]] = 1, vetoed = true;
+    }
+    for (bool spread = vetoed; spread;) {
+      spread = false;
+      for (const auto& [a, b] : same)
+        if (kept[a] != kept[b] && m_points[a] == m_points[b]) kept[a] = kept[b] = 1, spread = true;
+    }
+    const auto apart = [&](const std::pair<Index, Index>& s) {
+      return (kept[s.first] || kept[s.second]) && m_points[s.first] != m_points[s.second];
+    };
+    if (vetoed) {
+      same.erase(std::remove_if(same.begin(), same.end(), apart), same.end());
+      root = merge_groups(same);
+    }
+  }
+  // The roots keep their places, the others go; the vertices closed up in order.
+  std::vector<Index> renumber(m_points.size(), none);
+  Index next = 0;
+  for (Index i = 0; i < m_points.size(); ++i)
+    if (root[i] == i) {
       m_points[next] = m_points[i];
       m_types[next] = m_types[i];
-      renumber[i - first] = next++;
+      renumber[i] = next++;
     }
-  for (Index i = first; i < size; ++i) {
-    const Index r = root(i);
-    if (r != i) renumber[i - first] = r < first ? r : renumber[r - first];
-  }
+  if (next == m_points.size()) return false;
+  for (Index i = 0; i < root.size(); ++i) renumber[i] = renumber[root[i]];
   m_points.resize(next);
   m_types.resize(next);
-  return true;
-}
-
-// Vertices found at one point in a cell's chain (a clip point at a circumcenter, say), before
-// the cells are copied: when no group of them holds two circumcenters, the others are numbered
-// after all circumcenters, and merge_points() renumbers only them, in the chunks' keys. False
-// (and nothing done) otherwise: merge_vertices() then does it all, after the copy.
-template <class Diagram>
-bool Bvd_mesh_2<Diagram>::merge_listed(const std::vector<std::pair<Index, Index>>& same,
-                                       std::vector<Chunk_cells>& chunks) {
-  const Index centers = Index(m_number_of_circumcenters);
-  std::vector<Index> renumber;
-  if (!merge_points(same, centers, renumber)) return false;
-  for (Chunk_cells& c : chunks)
-    for (auto& key : c.keys) key.first.cells[0] = renumber[key.first.cells[0] - centers];
-  return true;
-}
-
-// Vertices found equal are made one, in the cells' cycles too.
-template <class Diagram>
-void Bvd_mesh_2<Diagram>::merge_vertices(const std::vector<std::pair<Index, Index>>& same) {
-  std::vector<Index> renumber;
-  merge_points(same, 0, renumber);  // no vertex is below 0: never false
   for (Index& i : m_cell_vertices) i = renumber[i];
   drop_repeats();
+  return true;
 }
 
 // A merge can leave a cell with the same vertex twice in a row: one of them goes, the cycles
@@ -761,8 +755,7 @@ void Bvd_mesh_2<Diagram>::conform_constraints() {
       position[t[i].second] = Index(i);
     }
   }
-  if (!same.empty()) {
-    merge_vertices(same);
+  if (merge_vertices(std::move(same))) {
     list_sides_on_constraints();
     return conform_constraints();
   }
