@@ -13,20 +13,27 @@
 #include <CVT_2/IO/write_vtu.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/insert_generators_2.h>
+#include <CVT_2/internal/Interrupt_scope.h>
 #include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/valid_point.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/mark_domain_2.h>
+#include <CVT_2/natural_neighbor_coordinates_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 #include <CVT_2/version.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -35,7 +42,10 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <new>
+#include <numeric>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -96,11 +106,24 @@ std::string shape_of(const py::array& a) {
   return s + (a.ndim() == 1 ? ",)" : ")");
 }
 
+// Whether an array holds what a double takes as meant: integers and floats, not booleans,
+// strings, complex numbers or objects, which numpy would cast without a word.
+bool holds_real_numbers(const py::array& a) {
+  const char kind = a.dtype().kind();
+  return kind == 'f' || kind == 'i' || kind == 'u';
+}
+
 // An array of shape (n, 2) of numbers (a list of pairs works), as points; an empty sequence is no
 // point. Coordinates are checked where they are used, with the library's messages.
 std::vector<Point_2> to_points(py::handle object, const std::string& name) {
-  const Array a = Array::ensure(object);
-  if (!a) throw py::type_error(name + " must be an array of shape (n, 2) of numbers");
+  const std::string what = name + " must be an array of shape (n, 2) of numbers";
+  if (object.is_none()) throw py::type_error(what + ", not None");
+  const py::array given = py::array::ensure(object);
+  if (!given) throw py::type_error(what);
+  if (!holds_real_numbers(given))
+    throw py::type_error(what + ", not an array of " + std::string(py::str(given.dtype())));
+  const Array a = Array::ensure(given);
+  if (!a) throw py::type_error(what);
   if (a.ndim() == 1 && a.shape(0) == 0) return {};
   if (a.ndim() != 2 || a.shape(1) != 2)
     throw py::value_error(name + " must have shape (n, 2), not " + shape_of(a));
@@ -128,14 +151,82 @@ py::array_t<T> to_array(const std::vector<T>& v, py::ssize_t columns = 1) {
   return a;
 }
 
-// Generators into a triangulation whose domain is marked; a bad one is named by its row.
-void insert_points(CDT& cdt, const std::vector<Point_2>& points, const std::string& name) {
+// Generators into a triangulation whose domain is marked; a bad one is named by its row (the
+// first few of those outside, with how many). Returns the notes: the points moved onto the
+// boundary, outside it by no more than `boundary_tolerance` (None: the library's default).
+std::vector<std::string> insert_points(CDT& cdt, const std::vector<Point_2>& points,
+                                       const std::string& name,
+                                       std::optional<double> boundary_tolerance = {}) {
+  const auto row = [&name](std::size_t k) { return name + "[" + std::to_string(k) + "]"; };
   try {
-    CVT_2::insert_generators_2(cdt, points);
+    const auto r =
+        boundary_tolerance
+            ? CVT_2::insert_generators_2(cdt, points,
+                                         CVT_2::parameters::boundary_tolerance(*boundary_tolerance))
+            : CVT_2::insert_generators_2(cdt, points);
+    const std::string note = CVT_2::internal::moved_points_note(r, points, row, row);
+    return note.empty() ? std::vector<std::string>() : std::vector<std::string>{note};
+  } catch (const CVT_2::internal::Generators_outside_error& e) {
+    throw CVT_2::Domain_error(row(e.index()) + ": " + e.message(row), e.index());
   } catch (const CVT_2::Domain_error& e) {
     if (e.index() == CVT_2::Domain_error::no_index) throw;
-    throw CVT_2::Domain_error(name + "[" + std::to_string(e.index()) + "]: " + e.what(), e.index());
+    throw CVT_2::Domain_error(row(e.index()) + ": " + e.what(), e.index());
   }
+}
+
+// Ctrl-C while the library works without the GIL: its long loops poll an Interrupt_scope with
+// this check, which takes the GIL at most every 20 ms for Python to run its signal handlers, and
+// throws their exception (KeyboardInterrupt). What the call was building is then dropped.
+struct Signal_check {
+  std::chrono::steady_clock::time_point next{};
+  void operator()() {
+    const auto now = std::chrono::steady_clock::now();
+    if (now < next) return;
+    next = now + std::chrono::milliseconds(20);
+    const py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  }
+};
+
+// The vertex each of `points` became in `cdt`, into which they were inserted (points merged as
+// duplicates share one). A point insert_generators_2() moved onto the boundary (outside it by a
+// rounding) is at the nearest vertex around where it was: the vertex is within the boundary
+// tolerance of it, and any other that close would have been merged with it.
+std::vector<CDT::Vertex_handle> vertices_of(const CDT& cdt, const std::vector<Point_2>& points) {
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  if (!points.empty()) {  // make_property_map() would take the address of points[0]
+    using Map = CGAL::Pointer_property_map<Point_2>::const_type;
+    CGAL::spatial_sort(
+        order.begin(), order.end(),
+        CVT_2::internal::Interruptible_sort_traits_2<CGAL::Spatial_sort_traits_adapter_2<K, Map>>(
+            CGAL::Spatial_sort_traits_adapter_2<K, Map>(CGAL::make_property_map(points))));
+  }
+  std::vector<CDT::Vertex_handle> out(points.size());
+  CDT::Face_handle hint;
+  for (const std::size_t i : order) {
+    CVT_2::internal::poll_interrupt_sometimes();
+    const Point_2& p = points[i];
+    CDT::Locate_type lt;
+    int li;
+    const CDT::Face_handle f = cdt.locate(p, lt, li, hint);
+    hint = f;
+    if (lt == CDT::VERTEX) {
+      out[i] = f->vertex(li);
+      continue;
+    }
+    CDT::Vertex_handle nearest;
+    for (const CDT::Face_handle g : {f, f->neighbor(0), f->neighbor(1), f->neighbor(2)})
+      for (int j = 0; j < 3; ++j) {
+        const CDT::Vertex_handle v = g->vertex(j);
+        if (!cdt.is_infinite(v) &&
+            (nearest == CDT::Vertex_handle() ||
+             CGAL::compare_distance_to_point(p, v->point(), nearest->point()) == CGAL::SMALLER))
+          nearest = v;
+      }
+    out[i] = nearest;
+  }
+  return out;
 }
 
 // --- domains -----------------------------------------------------------------------------------
@@ -348,6 +439,21 @@ py::dict domain_arrays(const Domain& d) {
   return out;
 }
 
+// The description's own points, numbered in Python after the points a call is given:
+// domain_arrays()' vertices (a WKT, GeoJSON or shapely domain's ring and line points, each once,
+// in order of first appearance), then a WKT or GeoJSON domain's generators (a .poly's are among
+// its vertices).
+std::vector<Point_2> own_points(const Domain& d) {
+  if (const auto* p = std::get_if<0>(&d.data.description)) return p->vertices;
+  std::vector<Point_2> out;
+  std::set<Point_2> seen;
+  for (const Point_2& p : d.segment_ends)
+    if (seen.insert(p).second) out.push_back(p);
+  const auto& generators = std::get<1>(d.data.description).points;
+  out.insert(out.end(), generators.begin(), generators.end());
+  return out;
+}
+
 // --- densities ---------------------------------------------------------------------------------
 
 // A Python callable as a density evaluated in batches (DensityFunction_2::evaluate()): it gets
@@ -375,6 +481,10 @@ struct Python_density {
       for (py::ssize_t i = 0; i < n; ++i)
         w(i, 0) = points[std::size_t(i)].x(), w(i, 1) = points[std::size_t(i)].y();
       const py::object result = (*function)(xy);
+      if (py::isinstance<py::array>(result) &&
+          !holds_real_numbers(py::reinterpret_borrow<py::array>(result)))
+        throw py::type_error("the density must return an array of numbers, not an array of " +
+                             std::string(py::str(result.attr("dtype"))));
       const Array a = Array::ensure(result);
       if (!a)
         throw py::type_error("the density must return an array of numbers, not " +
@@ -452,8 +562,9 @@ Array random_points(const Domain& domain, std::int64_t n, std::uint64_t seed,
   const std::size_t count = checked_count(n, "n");
   const Density_choice choice(density, lipschitz_k, boundary_size);
   std::vector<Point_2> points;
-  {
+  try {
     py::gil_scoped_release release;
+    const CVT_2::internal::Interrupt_scope interruptible{Signal_check()};
     const auto cdt = domain.triangulation();
     const std::optional<Sizing> sizing = choice.sizing(*cdt);
     const auto np = CVT_2::parameters::random_seed(seed);
@@ -466,11 +577,29 @@ Array random_points(const Domain& domain, std::int64_t n, std::uint64_t seed,
     } else {
       points = CVT_2::random_points_in_domain_2(*cdt, count, np);
     }
+  } catch (const std::exception& e) {  // the points' reserve(): length_error or bad_alloc
+    if (!dynamic_cast<const std::length_error*>(&e) && !dynamic_cast<const std::bad_alloc*>(&e))
+      throw;
+    PyErr_SetString(PyExc_MemoryError,
+                    ("not enough memory for n = " + std::to_string(count) + " points").c_str());
+    throw py::error_already_set();
   }
   return to_array(points);
 }
 
 // --- the diagram -------------------------------------------------------------------------------
+
+// Whether w, a neighbour of u on the way from a to b, is a point that insert_generators_2()
+// moved onto the boundary next to the segment ab, bending it through w by a few units in the
+// last place: strictly between u and b along ab, and within 2^-44 of its largest coordinate
+// from the line.
+bool is_bent_onto(const Point_2& w, const Point_2& u, const Point_2& a, const Point_2& b) {
+  const double dx = b.x() - a.x(), dy = b.y() - a.y();
+  const double m = std::max({std::abs(a.x()), std::abs(a.y()), std::abs(b.x()), std::abs(b.y())});
+  return (w.x() - u.x()) * dx + (w.y() - u.y()) * dy > 0 &&
+         (b.x() - w.x()) * dx + (b.y() - w.y()) * dy > 0 &&
+         CVT_2::internal::distance_to_line(w, a, b) <= std::ldexp(m, -44);
+}
 
 // A bounded Voronoi diagram as a mesh, with the arrays Python reads, computed once. It keeps
 // the triangulation, which the writers read through the mesh's generators.
@@ -482,6 +611,8 @@ struct Diagram {
   std::vector<double> points, vertices, areas, centroids;
   std::vector<std::uint8_t> constrained, ridge_boundary, vertex_kinds;
   std::vector<std::int64_t> ridge_points, ridge_vertices, ridge_constraint;
+  std::vector<std::string> notes;             // the points moved onto the boundary
+  std::optional<std::vector<Point_2>> given;  // the points of bounded_voronoi(), in their order
 
   Diagram(std::shared_ptr<CDT> t, std::shared_ptr<const Domain> d, unsigned threads)
       : cdt(std::move(t)), domain(std::move(d)) {
@@ -491,6 +622,7 @@ struct Diagram {
     const Mesh& m = *mesh;
     const std::size_t n = m.number_of_cells();
     for (std::size_t k = 0; k < n; ++k) {
+      CVT_2::internal::poll_interrupt_sometimes();
       const Point_2& p = m.generator(k)->point();
       points.push_back(p.x()), points.push_back(p.y());
       constrained.push_back(m.is_constrained(k) ? 1 : 0);
@@ -502,6 +634,7 @@ struct Diagram {
     for (std::size_t i = 0; i < m.number_of_vertices(); ++i)
       vertex_kinds.push_back(std::uint8_t(m.vertex_type(i)));
     for (const Mesh::Edge& e : m.edges()) {
+      CVT_2::internal::poll_interrupt_sometimes();
       const bool boundary = e.cells[1] == Mesh::none;
       ridge_points.push_back(e.cells[0]);
       ridge_points.push_back(boundary ? e.cells[0] : e.cells[1]);
@@ -510,6 +643,41 @@ struct Diagram {
       ridge_boundary.push_back(boundary ? 1 : 0);
       ridge_constraint.push_back(e.constraint == Mesh::none ? -1 : input[e.constraint]);
     }
+  }
+
+  // Where the given points and the domain's own (own_points()), numbered in this order, went:
+  // `point_region`, the cell of each (-1: none); `input_index`, the first given point of each
+  // cell (-1: none); `duplicates`, pairs (i, j) of points in one cell, j the first there.
+  py::dict rows() const {
+    std::vector<Point_2> all = given.value();  // bounded_voronoi()'s diagrams only
+    const std::vector<Point_2> own = own_points(*domain);
+    all.insert(all.end(), own.begin(), own.end());
+    std::vector<std::int64_t> region(all.size()), input(mesh->number_of_cells(), -1), duplicates;
+    {
+      py::gil_scoped_release release;
+      const CVT_2::internal::Interrupt_scope interruptible{Signal_check()};
+      const std::vector<CDT::Vertex_handle> v = vertices_of(*cdt, all);
+      std::vector<std::int64_t> first(mesh->number_of_cells(), -1);
+      for (std::size_t i = 0; i < all.size(); ++i) {
+        if (!bvd->has_cell(v[i])) {
+          region[i] = -1;
+          continue;
+        }
+        const std::size_t k = mesh->cell_of(v[i]);
+        region[i] = std::int64_t(k);
+        if (first[k] >= 0) {
+          duplicates.push_back(std::int64_t(i)), duplicates.push_back(first[k]);
+          continue;
+        }
+        first[k] = std::int64_t(i);
+        if (i < given->size()) input[k] = std::int64_t(i);
+      }
+    }
+    py::dict out;
+    out["point_region"] = to_array(region);
+    out["input_index"] = to_array(input);
+    out["duplicates"] = to_array(duplicates, 2);
+    return out;
   }
 
   // For each constraint of the mesh (a constrained edge of the triangulation, by the cells of
@@ -536,7 +704,7 @@ struct Diagram {
       const CDT::Vertex_handle target = vertex_at(b);
       if (u == CDT::Vertex_handle() || target == CDT::Vertex_handle()) continue;
       while (u != target) {
-        CDT::Vertex_handle next;
+        CDT::Vertex_handle next, bent;
         auto e = cdt->incident_edges(u), done = e;
         do {
           if (!cdt->is_constrained(*e)) continue;
@@ -549,7 +717,9 @@ struct Diagram {
             next = w;
             break;
           }
+          if (is_bent_onto(w->point(), u->point(), a, b)) bent = w;
         } while (++e != done);
+        if (next == CDT::Vertex_handle()) next = bent;
         if (next == CDT::Vertex_handle()) break;
         if (CVT_2::internal::has_domain_face(*cdt, u) &&
             CVT_2::internal::has_domain_face(*cdt, next))
@@ -646,13 +816,93 @@ struct Diagram {
 };
 
 std::shared_ptr<Diagram> bounded_voronoi(const std::shared_ptr<const Domain>& domain,
-                                         py::handle points_object, std::int64_t threads) {
-  const std::vector<Point_2> points = to_points(points_object, "points");
+                                         py::handle points_object, std::int64_t threads,
+                                         std::optional<double> boundary_tolerance) {
+  std::vector<Point_2> points = to_points(points_object, "points");
   const unsigned t = unsigned(checked_count(threads, "threads"));
   py::gil_scoped_release release;
+  const CVT_2::internal::Interrupt_scope interruptible{Signal_check()};
   std::shared_ptr<CDT> cdt = domain->triangulation();
-  insert_points(*cdt, points, "points");
-  return std::make_shared<Diagram>(std::move(cdt), domain, t);
+  std::vector<std::string> notes = insert_points(*cdt, points, "points", boundary_tolerance);
+  auto diagram = std::make_shared<Diagram>(std::move(cdt), domain, t);
+  diagram->notes = std::move(notes);
+  diagram->given = std::move(points);  // for point_region, found when asked for
+  return diagram;
+}
+
+// --- natural-neighbour coordinates -------------------------------------------------------------
+
+// The natural-neighbour coordinates of `queries` on the bounded Voronoi diagram of the domain and
+// `nodes`, as natural_neighbor_matrix_2() computes them, in compressed rows (the arrays of
+// scipy.sparse.csr_matrix) whose columns are the nodes, then the domain's own points
+// (own_points()): a generator's weight goes to the first of them at it.
+py::dict natural_neighbours(const std::shared_ptr<const Domain>& domain, py::handle nodes_object,
+                            py::handle queries_object, const std::string& method,
+                            std::int64_t threads, std::optional<double> boundary_tolerance) {
+  std::vector<Point_2> nodes = to_points(nodes_object, "nodes");
+  const std::vector<Point_2> queries = to_points(queries_object, "queries");
+  if (method != "sibson" && method != "laplace")
+    throw py::value_error("method must be 'sibson' or 'laplace', not '" + method + "'");
+  for (std::size_t k = 0; k < queries.size(); ++k)
+    if (!CVT_2::internal::is_valid_point(queries[k]))
+      throw CVT_2::Domain_error("queries[" + std::to_string(k) + "]: " +
+                                    CVT_2::internal::invalid_point_message(
+                                        "query " + CVT_2::internal::to_string(queries[k])),
+                                k);
+  const unsigned t = unsigned(checked_count(threads, "threads"));
+  std::vector<std::int64_t> indptr{0}, indices;
+  std::vector<double> data;
+  std::vector<std::uint8_t> inside;
+  std::size_t columns = 0;
+  {
+    py::gil_scoped_release release;
+    const CVT_2::internal::Interrupt_scope interruptible{Signal_check()};
+    const std::shared_ptr<CDT> cdt = domain->triangulation();
+    insert_points(*cdt, nodes, "nodes", boundary_tolerance);
+    const BVD bvd(*cdt);
+    const auto m =
+        CVT_2::natural_neighbor_matrix_2(bvd, queries,
+                                         CVT_2::parameters::natural_neighbor_method(
+                                             method == "laplace" ? CVT_2::LAPLACE : CVT_2::SIBSON)
+                                             .number_of_threads(t));
+    std::vector<Point_2> all = std::move(nodes);
+    const std::vector<Point_2> own = own_points(*domain);
+    all.insert(all.end(), own.begin(), own.end());
+    columns = all.size();
+    std::unordered_map<const void*, std::int64_t> column;
+    {
+      const std::vector<CDT::Vertex_handle> v = vertices_of(*cdt, all);
+      column.reserve(v.size());
+      for (std::size_t i = 0; i < v.size(); ++i) column.emplace(&*v[i], std::int64_t(i));
+    }
+    std::vector<std::int64_t> of_node(m.nodes.size());
+    for (std::size_t j = 0; j < m.nodes.size(); ++j) {
+      const auto it = column.find(&*m.nodes[j]);
+      if (it == column.end())  // every vertex is a node or a point of the description
+        throw std::logic_error("natural_neighbours: a generator that is no node");
+      of_node[j] = it->second;
+    }
+    std::vector<std::pair<std::int64_t, double>> row;
+    indices.reserve(m.columns.size());
+    data.reserve(m.values.size());
+    for (std::size_t k = 0; k < queries.size(); ++k) {
+      CVT_2::internal::poll_interrupt_sometimes();
+      row.clear();
+      for (std::size_t e = m.row_offsets[k]; e < m.row_offsets[k + 1]; ++e)
+        row.emplace_back(of_node[m.columns[e]], m.values[e]);
+      std::sort(row.begin(), row.end());  // distinct columns: by column
+      for (const auto& [j, w] : row) indices.push_back(j), data.push_back(w);
+      indptr.push_back(std::int64_t(indices.size()));
+    }
+    inside = m.inside;
+  }
+  py::dict out;
+  out["indptr"] = to_array(indptr);
+  out["indices"] = to_array(indices);
+  out["data"] = to_array(data);
+  out["shape"] = py::make_tuple(queries.size(), columns);
+  out["inside"] = to_array(inside).attr("astype")("bool");
+  return out;
 }
 
 // --- optimization ------------------------------------------------------------------------------
@@ -665,10 +915,13 @@ struct Optimization {
   CVT_2::Optimization_result result;
   std::vector<Point_2> points;
   std::vector<std::uint8_t> constrained;
+  std::vector<std::int64_t> input_index;  // of each generator: its first input row, or -1
+  std::vector<std::string> notes;         // the points moved onto the boundary
 
   std::shared_ptr<Diagram> diagram(std::int64_t threads) {
     const unsigned t = unsigned(checked_count(threads, "threads"));
     py::gil_scoped_release release;
+    const CVT_2::internal::Interrupt_scope interruptible{Signal_check()};
     const std::lock_guard<std::mutex> lock(mutex);
     return std::make_shared<Diagram>(cdt, domain, t);
   }
@@ -679,7 +932,8 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
                                        const py::object& density, double move_ratio,
                                        std::int64_t max_iterations, double time_limit,
                                        std::int64_t threads, const py::object& callback,
-                                       double lipschitz_k, const py::object& boundary_size) {
+                                       double lipschitz_k, const py::object& boundary_size,
+                                       std::optional<double> boundary_tolerance) {
   const std::vector<Point_2> points = to_points(points_object, "points");
   if (algorithm != "lbfgs" && algorithm != "lloyd")
     throw py::value_error("algorithm must be 'lbfgs' or 'lloyd', not '" + algorithm + "'");
@@ -695,27 +949,43 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
   const Density_choice choice(density, lipschitz_k, boundary_size);
   auto out = std::make_shared<Optimization>();
   out->domain = domain;
-  // After each iteration: Ctrl-C, and the user's callback with the figures so far.
+  // The user's callback with the figures of a state; whether to go on.
+  const auto call_back = [&callback](const CVT_2::Optimization_result& r) {
+    py::dict info;
+    info["iteration"] = r.number_of_iterations;
+    info["evaluations"] = r.number_of_evaluations;
+    info["energy"] = r.energy;
+    info["max_move_ratio"] = r.max_move_ratio;
+    info["mean_move_ratio"] = r.mean_move_ratio;
+    info["seconds"] = r.seconds;
+    const py::object go_on = callback(info);
+    if (go_on.is_none()) return true;
+    if (PyBool_Check(go_on.ptr()) ||
+        py::isinstance(go_on, py::module_::import("numpy").attr("bool_")))
+      return go_on.cast<bool>();
+    throw py::type_error("the callback must return None, True or False, not " +
+                         std::string(py::str(py::type::of(go_on).attr("__name__"))));
+  };
+  // At each state but the last (the library does not call it there): Ctrl-C, and the callback.
   const std::function<bool(const CVT_2::Optimization_result&)> progress =
-      [&callback](const CVT_2::Optimization_result& r) {
+      [&callback, &call_back](const CVT_2::Optimization_result& r) {
         const py::gil_scoped_acquire gil;
         if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-        if (callback.is_none()) return true;
-        py::dict info;
-        info["iteration"] = r.number_of_iterations;
-        info["evaluations"] = r.number_of_evaluations;
-        info["energy"] = r.energy;
-        info["max_move_ratio"] = r.max_move_ratio;
-        info["mean_move_ratio"] = r.mean_move_ratio;
-        info["seconds"] = r.seconds;
-        const py::object go_on = callback(info);
-        return go_on.is_none() || go_on.cast<bool>();
+        return callback.is_none() || call_back(r);
       };
   {
     py::gil_scoped_release release;
+    const CVT_2::internal::Interrupt_scope interruptible{Signal_check()};
     std::shared_ptr<CDT> cdt = domain->triangulation();
     const std::optional<Sizing> sizing = choice.sizing(*cdt);
-    insert_points(*cdt, points, "points");
+    out->notes = insert_points(*cdt, points, "points", boundary_tolerance);
+    // The input row of each vertex (the first, for merged rows), kept as the vertices move.
+    std::unordered_map<const void*, std::int64_t> row;
+    {
+      const std::vector<CDT::Vertex_handle> v = vertices_of(*cdt, points);
+      row.reserve(v.size());
+      for (std::size_t i = 0; i < v.size(); ++i) row.emplace(&*v[i], std::int64_t(i));
+    }
     // As cvt2 runs it.
     const auto np = CVT_2::parameters::number_of_iterations(iterations)
                         .move_ratio_bound(move_ratio)
@@ -737,9 +1007,14 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
     bvd.for_each_cell([&](CDT::Vertex_handle v, const auto&) {
       out->points.push_back(v->point());
       out->constrained.push_back(bvd.is_free(v) ? 0 : 1);
+      const auto it = row.find(&*v);
+      out->input_index.push_back(it == row.end() ? -1 : it->second);
     });
     out->cdt = std::move(cdt);
   }
+  // The final state, which the callback has not seen unless it stopped the run there.
+  if (!callback.is_none() && out->result.stop_reason != CVT_2::CALLBACK_REQUESTED_STOP)
+    call_back(out->result);
   return out;
 }
 
@@ -816,7 +1091,9 @@ PYBIND11_MODULE(_cvt2, m) {
       .def_property_readonly(
           "ridge_boundary",
           [](const Diagram& d) { return to_array(d.ridge_boundary).attr("astype")("bool"); })
+      .def_property_readonly("notes", [](const Diagram& d) { return d.notes; })
       .def("cycles", &Diagram::cycles)
+      .def("rows", &Diagram::rows)
       .def("outlines", &Diagram::outlines)
       .def("polygons", &Diagram::polygons)
       .def("wkb", &Diagram::wkb)
@@ -858,15 +1135,21 @@ PYBIND11_MODULE(_cvt2, m) {
           "mean_move_ratio_history",
           [](const Optimization& o) { return to_array(o.result.mean_move_ratio_history); })
       .def_property_readonly("seconds", [](const Optimization& o) { return o.result.seconds; })
+      .def_property_readonly("input_index",
+                             [](const Optimization& o) { return to_array(o.input_index); })
+      .def_property_readonly("notes", [](const Optimization& o) { return o.notes; })
       .def("diagram", &Optimization::diagram, py::arg("threads") = 0);
 
   m.def("random_points", &random_points, py::arg("domain"), py::arg("n"), py::arg("seed"),
         py::arg("density"), py::arg("lipschitz_k"), py::arg("boundary_size"));
   m.def("optimize", &optimize, py::arg("domain"), py::arg("points"), py::arg("algorithm"),
         py::arg("density"), py::arg("move_ratio"), py::arg("max_iterations"), py::arg("time_limit"),
-        py::arg("threads"), py::arg("callback"), py::arg("lipschitz_k"), py::arg("boundary_size"));
+        py::arg("threads"), py::arg("callback"), py::arg("lipschitz_k"), py::arg("boundary_size"),
+        py::arg("boundary_tolerance"));
   m.def("bounded_voronoi", &bounded_voronoi, py::arg("domain"), py::arg("points"),
-        py::arg("threads"));
+        py::arg("threads"), py::arg("boundary_tolerance"));
+  m.def("natural_neighbours", &natural_neighbours, py::arg("domain"), py::arg("nodes"),
+        py::arg("queries"), py::arg("method"), py::arg("threads"), py::arg("boundary_tolerance"));
   m.def("_optimize_lambda_density", &optimize_lambda_density, py::arg("domain"), py::arg("points"),
         py::arg("max_iterations"), py::arg("move_ratio"), py::arg("threads"), py::arg("a"),
         py::arg("cx"), py::arg("cy"), py::arg("w"));

@@ -1,5 +1,6 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // Readers and domains: .poly parsing, clear errors with file and line, Triangle's domain rule.
+#include "support/invariants.h"
 #include "support/support.h"
 
 #include <CVT_2/IO/read_domain.h>
@@ -12,6 +13,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <random>
 #include <sstream>
 
 using namespace support;
@@ -471,4 +474,359 @@ TEST_CASE("read_domain_data then insert_domain builds what read_domain builds, a
   }
   CHECK_THROWS_WITH(CVT_2::IO::read_domain_data<K>(data_path("four_clusters_points.txt")),
                     Catch::Contains("unknown domain format"));
+}
+
+namespace {
+
+// The message of the Domain_error that inserting `text` as WKT throws, or "".
+std::string wkt_domain_error(const std::string& text) {
+  return message_of<CVT_2::Domain_error>([&] {
+    Cdt cdt;
+    CVT_2::IO::insert_wkt(cdt, parse_wkt(text));
+  });
+}
+
+std::string geojson_domain_error(const std::string& text) {
+  return message_of<CVT_2::Domain_error>([&] {
+    std::istringstream is(text);
+    Cdt cdt;
+    CVT_2::IO::insert_wkt(cdt, CVT_2::IO::read_geojson<K>(is, "t.geojson"));
+  });
+}
+
+}  // namespace
+
+// Issue 38: a hole outside its shell was read as the bare shell, silently (GEOS: "Hole lies
+// outside shell"); so was a hole inside another hole ("Holes are nested").
+TEST_CASE("regression: a hole outside its shell or inside another hole is an error naming the ring",
+          "[io][wkt][regression]") {
+  CHECK_THAT(wkt_domain_error("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0), (5 5, 6 5, 6 6, 5 6, 5 5))"),
+             Catch::Contains("t.wkt:1: polygon 0, ring 1: the hole through (5, 5) lies outside "
+                             "the polygon's exterior (ring 0)"));
+  // Partly outside, through two vertices on the exterior's edge (no crossing to find).
+  CHECK_THAT(wkt_domain_error("POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (4 1, 5 2, 4 3, 3 2, 4 1))"),
+             Catch::Contains("t.wkt:1: polygon 0, ring 1: the hole through (4, 1) reaches "
+                             "outside the polygon's exterior"));
+  // Outside along three edges of the exterior: every vertex of the hole is on it.
+  CHECK_THAT(wkt_domain_error("POLYGON ((0 0, 3 0, 3 3, 2 3, 2 1, 1 1, 1 3, 0 3, 0 0), "
+                              "(1 3, 2 3, 2 1, 1 1, 1 3))"),
+             Catch::Contains("polygon 0, ring 1: the hole through (1, 3) lies outside"));
+  CHECK_THAT(wkt_domain_error("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 8 2, 8 8, 2 8, 2 2), "
+                              "(3 3, 4 3, 4 4, 3 4, 3 3))"),
+             Catch::Contains("t.wkt:1: polygon 0, ring 2: the hole through (3, 3) overlaps the "
+                             "hole of ring 1: holes may not lie inside one another"));
+  // The second polygon's hole lies in the first one's hole, not in its own exterior.
+  CHECK_THAT(wkt_domain_error("\nMULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 8 2, 8 8, 2 "
+                              "8, 2 2)), ((20 0, 30 0, 30 10, 20 10, 20 0), (3 3, 4 3, 4 4, 3 4, 3 "
+                              "3)))"),
+             Catch::Contains("t.wkt:2: polygon 1, ring 1: the hole through (3, 3) lies outside"));
+  CHECK_THAT(geojson_domain_error(
+                 R"({"type": "Feature", "properties": {"name": "sq"}, "geometry": {"type":
+                 "MultiPolygon", "coordinates": [[[[20, 0], [30, 0], [30, 1], [20, 0]]],
+                 [[[0, 0], [1, 0], [1, 1], [0, 1], [0, 0]], [[5, 5], [6, 5], [6, 6], [5, 5]]]]}})"),
+             Catch::Contains("t.geojson: feature 1 (sq): polygon 1, ring 1: the hole through (5, "
+                             "5) lies outside"));
+  // What GEOS accepts stays accepted: holes touching the exterior or each other at a vertex,
+  // and, as make_valid() reads them, along an edge; an island in a lake (another polygon).
+  const auto area = [](const std::string& text) {
+    Cdt cdt;
+    CVT_2::IO::insert_wkt(cdt, parse_wkt(text));
+    return domain_area(cdt);
+  };
+  CHECK(
+      area("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (0 0, 2 1, 1 2, 0 0), (2 1, 4 1, 4 3, 2 1))") ==
+      Approx(100 - 1.5 - 2));
+  CHECK(area("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (0 0, 5 0, 5 5, 0 5, 0 0))") == Approx(75));
+  CHECK(area("MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 8 2, 8 8, 2 8, 2 2)), "
+             "((3 3, 7 3, 7 7, 3 7, 3 3), (4 4, 6 4, 6 6, 4 6, 4 4)))") == Approx(64 + 12));
+}
+
+// Issue 38: a LINESTRING wholly outside the domain (coordinates in another system, x and y
+// swapped) was kept and silently had no effect; so were a .poly's segments and hole points
+// outside it.
+TEST_CASE("regression: a constraint or hole point outside the domain is an error naming it",
+          "[io][wkt][regression]") {
+  CHECK_THAT(wkt_domain_error("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))\nLINESTRING (5 5, 6 6)"),
+             Catch::Contains("t.wkt:2: the line from (5, 5) to (6, 6) lies outside the domain, "
+                             "which spans (0, 0) to (1, 1): it would constrain nothing"));
+  // x and y swapped; in a hole; touching the boundary at one point only
+  CHECK_THAT(wkt_domain_error("POLYGON ((10 50, 11 50, 11 51, 10 51, 10 50))\n"
+                              "MULTILINESTRING ((10.2 50.5, 10.8 50.5), (50.5 10.2, 50.5 10.8))"),
+             Catch::Contains("t.wkt:2: the line from (50.5, 10.199999999999999) to (50.5, "
+                             "10.800000000000001) lies outside the domain, which spans (10, 50) "
+                             "to (11, 51)"));
+  CHECK_THAT(wkt_domain_error("POLYGON ((0 0, 9 0, 9 9, 0 9, 0 0), (3 3, 3 6, 6 6, 6 3, 3 3))\n"
+                              "LINESTRING (4 4, 5 5)"),
+             Catch::Contains("t.wkt:2: the line from (4, 4) to (5, 5) lies outside the domain"));
+  CHECK_THAT(wkt_domain_error("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))\nLINESTRING (1 0.5, 2 0.5)"),
+             Catch::Contains("t.wkt:2: the line from (1, 0.5) to (2, 0.5) lies outside"));
+  CHECK_THAT(geojson_domain_error(
+                 R"({"type": "GeometryCollection", "geometries": [{"type": "Polygon",
+                 "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]}, {"type": "LineString",
+                 "coordinates": [[37.5, -84.2], [37.6, -84.1]]}]})"),
+             Catch::Contains("t.geojson: geometry 1: the line from (37.5, -84.200000000000003) "
+                             "to (37.600000000000001, -84.099999999999994) lies outside"));
+  // .poly: a segment outside, a hole point outside (two in one hole are fine)
+  const auto poly_error = [](const std::string& text) {
+    return message_of<CVT_2::Domain_error>([&] {
+      Cdt cdt;
+      CVT_2::IO::insert_poly(cdt, parse(text));
+    });
+  };
+  const std::string vertices =
+      "1 0 0\n2 4 0\n3 4 4\n4 0 4\n5 1 1\n6 2 1\n7 2 2\n8 1 2\n";  // a square hole in a square
+  const std::string rings = "1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 8\n8 8 5\n";
+  CHECK(poly_error("8 2 0 0\n" + vertices + "8 0\n" + rings + "2\n1 1.2 1.5\n2 1.8 1.5\n")
+            .empty());  // two points in one hole
+  CHECK_THAT(
+      poly_error("8 2 0 0\n" + vertices + "8 0\n" + rings + "3\n1 1.2 1.5\n2 1.8 1.5\n3 7 1\n"),
+      Catch::Contains("t.poly:22: hole point (7, 1) lies outside the domain, in no region "
+                      "the segments enclose: it removes nothing"));
+  // As in Triangle, a hole removes the segments inside it with the rest.
+  CHECK(poly_error("10 2 0 0\n" + vertices + "9 1.3 1.3\n10 1.7 1.7\n9 0\n" + rings +
+                   "9 9 10\n1\n1 1.2 1.6\n")
+            .empty());
+  CHECK_THAT(poly_error("3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 3\n3 3 1\n1\n1 0.5 0\n"),
+             Catch::Contains("t.poly:10: hole point (0.5, 0) lies on a segment"));
+}
+
+TEST_CASE("a line partly outside the domain constrains the cells with its part inside",
+          "[io][wkt]") {
+  // From (0.5, 0.5) to the boundary vertex (1, 0.5), then out to (2, 0.5).
+  Cdt cdt;
+  CVT_2::IO::insert_wkt(
+      cdt, parse_wkt("POLYGON ((0 0, 1 0, 1 0.5, 1 1, 0 1, 0 0))\nLINESTRING (0.5 0.5, 1 0.5, 2 "
+                     "0.5)\nMULTIPOINT ((0.75 0.45), (0.75 0.55))"));
+  CHECK(domain_area(cdt) == Approx(1).epsilon(1e-15));
+  std::size_t inside = 0, outside = 0;
+  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
+    if (!cdt.is_constrained(*e)) continue;
+    const auto f = e->first, g = f->neighbor(e->second);
+    const Point a = f->vertex(cdt.ccw(e->second))->point(),
+                b = f->vertex(cdt.cw(e->second))->point();
+    if (a.y() != 0.5 || b.y() != 0.5) continue;
+    if (f->is_inside_domain() && g->is_inside_domain()) ++inside;  // the part inside: a slit
+    if (!f->is_inside_domain() && !g->is_inside_domain()) ++outside;
+  }
+  CHECK(inside == 1);
+  CHECK(outside == 1);
+  // The cell of (0.75, 0.45) stops at the slit: nothing of it lies above y = 0.5 right of 0.5.
+  const Bvd bvd(cdt);
+  Cell c;
+  Cdt::Locate_type lt;
+  int li;
+  const auto f = cdt.locate(Point(0.75, 0.45), lt, li);
+  REQUIRE(lt == Cdt::VERTEX);
+  bvd.cell(f->vertex(li), c);
+  for (const auto& x : c) CHECK((x.point.y() <= 0.5 || x.point.x() <= 0.5));
+  check_diagram(bvd, 200, 1);
+}
+
+namespace {
+
+// Points on the boundary of `cdt`'s domain computed in floating point: the midpoints of its
+// boundary edges, and projections of points near them, n in all (seeded).
+std::vector<Point> boundary_points(const Cdt& cdt, std::size_t n, unsigned seed) {
+  std::vector<std::pair<Point, Point>> edges;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    for (int i = 0; i < 3; ++i)
+      if (f->is_inside_domain() && !f->neighbor(i)->is_inside_domain())
+        edges.emplace_back(f->vertex(cdt.ccw(i))->point(), f->vertex(cdt.cw(i))->point());
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Point> points;
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& [a, b] = edges[rng() % edges.size()];
+    const double dx = b.x() - a.x(), dy = b.y() - a.y();
+    if (k % 2 == 0) {
+      points.push_back(CGAL::midpoint(a, b));
+      continue;
+    }
+    const double t = u(rng), s = u(rng) - 0.5;
+    const double qx = a.x() + t * dx - s * dy, qy = a.y() + t * dy + s * dx;
+    const double r = ((qx - a.x()) * dx + (qy - a.y()) * dy) / (dx * dx + dy * dy);
+    points.emplace_back(a.x() + r * dx, a.y() + r * dy);
+  }
+  return points;
+}
+
+// The marks consistent (both sides of an unconstrained edge alike, infinite faces outside), the
+// triangulation valid and constrained Delaunay.
+void check_marks(const Cdt& cdt) {
+  CHECK(cdt.is_valid());
+  std::size_t unequal = 0, flippable = 0, infinite_inside = 0;
+  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
+    if (!cdt.is_constrained(*e)) {
+      unequal += e->first->is_inside_domain() != e->first->neighbor(e->second)->is_inside_domain();
+      flippable += cdt.is_flipable(e->first, e->second);
+    }
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
+    infinite_inside += cdt.is_infinite(f) && f->is_inside_domain();
+  CHECK(unequal == 0);
+  CHECK(flippable == 0);
+  CHECK(infinite_inside == 0);
+}
+
+}  // namespace
+
+// Issue 38: points on the boundary computed in floating point were refused as "outside" about
+// half the time.
+TEST_CASE("points a rounding outside the domain go onto its boundary as constrained vertices",
+          "[io][boundary]") {
+  const std::string file = GENERATE(as<std::string>{}, "earcut_dude.poly",
+                                    "us_kentucky_counties.poly", "bubble_with_hole.poly");
+  // as given; in metres of a projection far from its origin; tiny
+  const auto [scale, offset] =
+      GENERATE(std::make_pair(1.0, 0.0), std::make_pair(1000.0, 4.5e6), std::make_pair(1e-3, 0.0));
+  CAPTURE(file, scale, offset);
+  Domain d;
+  load_domain(d, file, scale, offset, offset);
+  const double area = domain_area(d.cdt);
+  // The points outside the domain and those exactly on its boundary; the others lie inside by
+  // a rounding and are free generators as before (whether such a cell holds its generator is a
+  // rounding's call for the double-precision test of check_diagram()).
+  std::vector<Point> points;
+  std::size_t outside = 0;
+  for (const Point& p : boundary_points(d.cdt, 600, 3)) {
+    Cdt::Locate_type lt;
+    int li;
+    const auto f = d.cdt.locate(p, lt, li);
+    const bool in = CVT_2::is_in_domain_2(d.cdt, p);
+    if (in && lt == Cdt::FACE) continue;
+    if (in && lt == Cdt::EDGE && !d.cdt.is_constrained(Cdt::Edge(f, li))) continue;
+    points.push_back(p);
+    outside += !in;
+  }
+  CHECK(outside > 100);  // the case at hand: about half of them
+  const auto r = CVT_2::insert_generators_2(d.cdt, points);
+  CHECK(r.moved.size() == outside);
+  CHECK(std::is_sorted(r.moved.begin(), r.moved.end()));
+  CHECK(r.boundary_tolerance > 0);
+  std::size_t not_on_boundary = 0, far = 0;
+  for (std::size_t k = 0; k < r.moved.size(); ++k) {
+    Cdt::Locate_type lt;
+    int li;
+    const auto f = d.cdt.locate(r.moved_to[k], lt, li);
+    not_on_boundary += lt != Cdt::VERTEX || !d.cdt.are_there_incident_constraints(f->vertex(li)) ||
+                       !CVT_2::internal::has_domain_face(d.cdt, f->vertex(li));
+    far += !(std::sqrt(CGAL::squared_distance(r.moved_to[k], points[r.moved[k]])) <=
+             2 * r.boundary_tolerance);
+    CHECK(r.distances[k] <= r.boundary_tolerance);
+  }
+  CHECK(not_on_boundary == 0);
+  CHECK(far == 0);
+  std::size_t missing = 0;  // the others are vertices, as given
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    if (std::binary_search(r.moved.begin(), r.moved.end(), k)) continue;
+    Cdt::Locate_type lt;
+    int li;
+    d.cdt.locate(points[k], lt, li);
+    missing += lt != Cdt::VERTEX;
+  }
+  CHECK(missing == 0);
+  check_marks(d.cdt);
+  // The boundary bends by a rounding at most where a point went next to an edge.
+  CHECK(domain_area(d.cdt) == Approx(area).epsilon(1e-12));
+  check_diagram(Bvd(d.cdt), 100, 1);
+}
+
+TEST_CASE("points a rounding off a slanted hull edge go onto it one after the other",
+          "[io][boundary]") {
+  // The points of the edge (1, 0.3) - (0.7, 1) at t = k/80, computed in double, that lie
+  // outside: the edge is on the convex hull, and each point bends it next to the previous one.
+  Cdt cdt;
+  CVT_2::IO::insert_wkt(cdt, parse_wkt("POLYGON ((0 0, 1 0.3, 0.7 1, 0 1, 0 0))"));
+  std::vector<Point> points;
+  for (int k = 1; k < 80; ++k) {
+    const double t = k / 80.0;
+    const Point p(1 + t * (0.7 - 1), 0.3 + t * (1 - 0.3));
+    if (!CVT_2::is_in_domain_2(cdt, p)) points.push_back(p);
+  }
+  REQUIRE(points.size() > 10);
+  const auto r = CVT_2::insert_generators_2(cdt, points);
+  CHECK(r.moved.size() == points.size());
+  CHECK(cdt.number_of_vertices() == 4 + points.size());
+  check_marks(cdt);
+  CHECK(domain_area(cdt) == Approx(0.745).epsilon(1e-14));
+  check_diagram(Bvd(cdt), 200, 1);
+}
+
+TEST_CASE("a point within the boundary tolerance of a boundary vertex is merged with it",
+          "[io][boundary]") {
+  Domain d;
+  load_square(d);
+  const std::vector<Point> corner{Point(1.0000000000000002, 1.0000000000000002)};
+  auto r = CVT_2::insert_generators_2(d.cdt, corner);
+  REQUIRE(r.moved.size() == 1);
+  CHECK(r.moved_to[0] == Point(1, 1));
+  CHECK(d.cdt.number_of_vertices() == 4);
+  // A user tolerance of 1e-3: a point 5e-4 outside, near the vertex (0.3, 0), does not make a
+  // cell 1e-4 wide next to it.
+  const std::vector<Point> on{Point(0.3, 0)};
+  CVT_2::insert_generators_2(d.cdt, on);
+  const std::vector<Point> near{Point(0.3001, -0.0005), Point(0.6, -0.0005)};
+  r = CVT_2::insert_generators_2(d.cdt, near, CVT_2::parameters::boundary_tolerance(1e-3));
+  REQUIRE(r.moved.size() == 2);
+  CHECK(r.moved_to[0] == Point(0.3, 0));
+  CHECK(r.moved_to[1] == Point(0.6, 0));  // the projection onto y = 0 is exact
+  CHECK(d.cdt.number_of_vertices() == 6);
+  CHECK(r.boundary_tolerance == 1e-3);
+  check_marks(d.cdt);
+  check_diagram(Bvd(d.cdt), 100, 1);
+}
+
+TEST_CASE("points outside beyond the tolerance: an error naming how many and the first few",
+          "[io][boundary]") {
+  using E = CVT_2::Domain_error;
+  Domain d;
+  load_square(d);
+  std::vector<Point> points{Point(0.5, 0.5)};
+  for (int k = 0; k < 12; ++k) points.emplace_back(2 + k, 0.5);
+  const std::string m = message_of<E>([&] { CVT_2::insert_generators_2(d.cdt, points); });
+  CHECK_THAT(m, Catch::StartsWith("generator (2, 0.5) lies outside the domain, at 1 from it "
+                                  "(boundary tolerance 8.88e-16); so do 11 more: [2] (3, 0.5), "
+                                  "[3] (4, 0.5), [4] (5, 0.5), [5] (6, 0.5), [6] (7, 0.5), and 6 "
+                                  "more"));
+  try {
+    CVT_2::insert_generators_2(d.cdt, points);
+  } catch (const E& e) {
+    CHECK(e.index() == 1);
+  }
+  CHECK(d.cdt.number_of_vertices() == 4);  // nothing inserted
+  // A rounding outside, with no tolerance: outside; a user tolerance for metres.
+  const std::vector<Point> rounding{Point(0.5, -1e-17)};
+  CHECK_THAT(message_of<E>([&] {
+               CVT_2::insert_generators_2(d.cdt, rounding,
+                                          CVT_2::parameters::boundary_tolerance(0));
+             }),
+             Catch::Contains("generator (0.5, -1.0000000000000001e-17) lies outside the domain, "
+                             "at 1e-17 from it (boundary tolerance 0)"));
+  const std::vector<Point> metres{Point(0.5, 1 + 1e-10)};
+  CHECK_THAT(message_of<E>([&] { CVT_2::insert_generators_2(d.cdt, metres); }),
+             Catch::Contains("lies outside the domain, at 1e-10 from it"));
+  CHECK(CVT_2::insert_generators_2(d.cdt, metres, CVT_2::parameters::boundary_tolerance(1e-9))
+            .moved.size() == 1);
+  CHECK_THROWS_AS(
+      CVT_2::insert_generators_2(d.cdt, metres, CVT_2::parameters::boundary_tolerance(-1.0)),
+      std::invalid_argument);
+  // The readers name lines.
+  std::istringstream text("0.5 0.5\n3 3\n-1 0.5\n# x\n0.25 0.25\n0.5 2\n");
+  const auto file = CVT_2::IO::read_points<Point>(text, "p.txt");
+  CHECK_THAT(
+      message_of<E>([&] { CVT_2::IO::insert_points(d.cdt, file); }),
+      Catch::Contains("p.txt:2: generator (3, 3) lies outside the domain, at 2.83 from it "
+                      "(boundary tolerance 8.88e-16); so do 2 more: line 3 (-1, 0.5), line 6 "
+                      "(0.5, 2)"));
+  CHECK_THAT(wkt_domain_error("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))\nPOINT (0.5 0.5)\nPOINT (3 3)\n"
+                              "MULTIPOINT ((0.2 0.2), (4 4))"),
+             Catch::Contains("t.wkt:3: generator (3, 3) lies outside the domain, at 2.83 from it "
+                             "(boundary tolerance 8.88e-16); so does 1 more: line 4 (4, 4)"));
+  // A reader's note names the points moved.
+  std::istringstream near("0.25 0.25\n0.5 -1e-17\n1.0000000000000002 0.5\n");
+  const auto moved = CVT_2::IO::read_points<Point>(near, "q.txt");
+  const auto r = CVT_2::IO::insert_points(d.cdt, moved);
+  CHECK(CVT_2::IO::moved_points_note(moved, r) ==
+        "q.txt:2: generator (0.5, -1.0000000000000001e-17) lies 1e-17 outside the domain, within "
+        "the boundary tolerance 8.88e-16: moved onto the boundary at (0.5, 0), a constrained "
+        "vertex; so was 1 more: line 3");
 }

@@ -336,6 +336,113 @@ TEST_CASE("away from constraints, the coordinates are CGAL's on a Delaunay trian
   }
 }
 
+namespace {
+
+// Algorithm 1 twice: q's virtual star, tagged face by face by a walk along each way to the
+// circumcenter (Virtual_insertion, with its floating-point filters), against the faces around q
+// inserted into a copy, tagged from each constraint by the diagram (tag_blind_faces).
+struct Tag_count {
+  std::size_t faces = 0, blind = 0, ties = 0;
+};
+
+void compare_star_tags(const Cdt& cdt, const std::vector<Point>& queries, Tag_count& count) {
+  using Insertion = CVT_2::internal::Virtual_insertion<Bvd>;
+  const Bvd bvd(cdt);
+  Insertion insertion(bvd);
+  const CVT_2::Bvd_traits_2<K> traits;
+  const auto blinded = traits.is_blinded_2_object();
+  const auto compare = traits.compare_blinding_distance_2_object();
+  for (const Point& q : queries) {
+    INFO("q = " << std::setprecision(17) << q.x() << ' ' << q.y());
+    Cdt::Face_handle hint;
+    if (insertion.insert(q, hint) != Insertion::INSIDE) continue;
+    Cdt after = cdt;
+    CVT_2::insert_generators_2(after, std::vector<Point>{q});
+    const Bvd tagged(after);
+    Cdt::Vertex_handle vq;
+    REQUIRE(find_node(after, q, vq));
+    std::map<std::pair<Point, Point>, Cdt::Face_handle> around;  // by their other two points
+    auto f = after.incident_faces(vq), done = f;
+    do {
+      const int i = f->index(vq);
+      around[{f->vertex(Cdt::ccw(i))->point(), f->vertex(Cdt::cw(i))->point()}] = f;
+    } while (++f != done);
+    for (const auto& s : insertion.star()) {
+      const Point &ps = insertion.point(s.s), &pt = insertion.point(s.t);
+      CAPTURE(ps, pt);
+      const auto it = around.find({ps, pt});
+      REQUIRE(it != around.end());  // the same star
+      const Cdt::Face_handle g = it->second;
+      CHECK(s.blind == g->is_blinded());
+      ++count.faces;
+      if (!s.blind || !g->is_blinded()) continue;
+      ++count.blind;
+      // The same constraint, or another one the way meets at the same point (through a vertex
+      // where both end).
+      const Point a1 = insertion.point(s.blinding.a), b1 = insertion.point(s.blinding.b);
+      const auto e = g->blinding_edge();
+      const Point a2 = e.first->vertex(Cdt::ccw(e.second))->point();
+      const Point b2 = e.first->vertex(Cdt::cw(e.second))->point();
+      CHECK(blinded(q, ps, pt, a1, b1));
+      CHECK(compare(q, ps, pt, a1, b1, a2, b2) == CGAL::EQUAL);
+      count.ties += !((a1 == a2 && b1 == b2) || (a1 == b2 && b1 == a2));
+    }
+  }
+}
+
+// p -> p 2^exponent, exactly.
+Point scaled(const Point& p, int exponent) {
+  return Point(std::ldexp(p.x(), exponent), std::ldexp(p.y(), exponent));
+}
+
+}  // namespace
+
+TEST_CASE("the virtual star is tagged as Algorithm 1 tags q inserted at any scale",
+          "[natural_neighbors]") {
+  // 2^-1000 and 2^990: coordinates near 1e-300 and 1e300, where the filters' products leave
+  // the normal range; the same domains, exactly scaled.
+  const int exponent = GENERATE(0, -1000, 990);
+  CAPTURE(exponent);
+  Tag_count count;
+  const unsigned cases = random_cases(12, 0.1);
+  for (unsigned seed = 1; seed <= cases; ++seed) {
+    CAPTURE(seed);
+    std::vector<Point> generators;
+    auto poly = random_domain(seed, generators, 60);
+    transform(poly, std::ldexp(1.0, exponent), 0, 0);
+    Cdt cdt = triangulate(poly);
+    for (Point& p : generators) p = scaled(p, exponent);
+    CVT_2::insert_generators_2(cdt, generators);
+    compare_star_tags(cdt, queries(cdt, 24, seed), count);
+  }
+  // A grid of nodes, cocircular by fours, with constraints along a diagonal and a grid line:
+  // queries at the centers of the squares (on four nodes' circle), on the grid lines, on the
+  // constraints, and a unit in the last place from nodes.
+  CVT_2::IO::Poly_data<Point> poly;
+  add_ring(poly, {Point(0, 0), Point(8, 0), Point(8, 8), Point(0, 8)});
+  poly.vertices.insert(poly.vertices.end(), {Point(2, 2), Point(6, 6), Point(1, 5), Point(4, 5)});
+  poly.segments.push_back({4, 5});
+  poly.segments.push_back({6, 7});
+  transform(poly, std::ldexp(1.0, exponent), 0, 0);
+  Cdt grid = triangulate(poly);
+  std::vector<Point> nodes, q;
+  for (int x = 1; x < 8; ++x)
+    for (int y = 1; y < 8; ++y) {
+      nodes.push_back(scaled(Point(x, y), exponent));
+      const Point& n = nodes.back();
+      q.push_back(scaled(Point(x + 0.5, y + 0.5), exponent));
+      q.push_back(scaled(Point(x + 0.5, y), exponent));
+      q.push_back(Point(std::nextafter(n.x(), HUGE_VAL), n.y()));
+      q.push_back(Point(n.x(), std::nextafter(n.y(), -HUGE_VAL)));
+    }
+  CVT_2::insert_generators_2(grid, nodes);
+  for (const double t : {2.25, 3.5, 5.75})
+    q.push_back(scaled(Point(t, t), exponent)), q.push_back(scaled(Point(t - 1, 5), exponent));
+  compare_star_tags(grid, q, count);
+  INFO("star faces " << count.faces << ", blind " << count.blind << ", ties " << count.ties);
+  CHECK(count.blind > count.faces / 20);
+}
+
 TEST_CASE("CGAL's interpolation functions take the output as it is", "[natural_neighbors]") {
   Domain d;
   load_square(d);

@@ -11,10 +11,15 @@
 #include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/enum.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
 #include <map>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -137,6 +142,159 @@ typename CDT::Face_handle face_beside(const CDT& cdt, const typename CDT::Point_
                      " is not a constraint of the triangulation");
 }
 
+// Calls f(face, index) for each edge of the triangulation along the segment from the vertex u
+// to the point b, in order (a constraint from u to b, split by the vertices on it), and returns
+// the vertex at b; a null handle if the segment is not made of edges.
+template <class CDT, class F>
+typename CDT::Vertex_handle for_each_edge_along(const CDT& cdt, typename CDT::Vertex_handle u,
+                                                const typename CDT::Point_2& b, const F& f) {
+  using Vertex_handle = typename CDT::Vertex_handle;
+  const typename CDT::Point_2 a = u->point();
+  while (u->point() != b) {
+    Vertex_handle next;
+    auto ec = cdt.incident_edges(u), done = ec;
+    do {
+      const typename CDT::Face_handle g = ec->first;
+      const int i = ec->second;
+      const Vertex_handle w =
+          g->vertex(CDT::cw(i)) == u ? g->vertex(CDT::ccw(i)) : g->vertex(CDT::cw(i));
+      if (cdt.is_infinite(w)) continue;
+      if (w->point() == b ||
+          (CGAL::orientation(a, b, w->point()) == CGAL::COLLINEAR &&
+           CGAL::collinear_are_strictly_ordered_along_line(u->point(), w->point(), b))) {
+        f(g, i);
+        next = w;
+        break;
+      }
+    } while (++ec != done);
+    if (next == Vertex_handle()) return next;
+    u = next;
+  }
+  return u;
+}
+
+// The vertex at p, or a null handle.
+template <class CDT>
+typename CDT::Vertex_handle vertex_at(const CDT& cdt, const typename CDT::Point_2& p,
+                                      typename CDT::Face_handle& hint) {
+  typename CDT::Locate_type lt;
+  int li;
+  hint = cdt.locate(p, lt, li, hint);
+  return lt == CDT::VERTEX ? hint->vertex(li) : typename CDT::Vertex_handle();
+}
+
+// The faces of the region a ring encloses, read as mark_domain_from_polygons_2() reads it (its
+// loops touch at vertices; a loop inside an odd number of the others is a hole in it): flooded
+// from inside its loops, across every edge but its own. The ring's edges are constraints.
+template <class CDT, class PointIterator>
+std::unordered_set<typename CDT::Face_handle> ring_region(const CDT& cdt, PointIterator first,
+                                                          PointIterator last) {
+  using Face_handle = typename CDT::Face_handle;
+  using Key = std::pair<const void*, const void*>;
+  const auto key = [](typename CDT::Vertex_handle x, typename CDT::Vertex_handle y) {
+    const void *p = &*x, *q = &*y;
+    return p < q ? Key(p, q) : Key(q, p);
+  };
+  const auto loops = simple_loops(first, last);
+  const auto depth = nesting_depths(loops);
+  std::set<Key> own;
+  std::vector<Face_handle> stack;
+  Face_handle hint;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const auto& loop = loops[l];
+    const CGAL::Orientation inside =
+        CGAL::orientation_2(loop.begin(), loop.end()) == CGAL::COUNTERCLOCKWISE ? CGAL::LEFT_TURN
+                                                                                : CGAL::RIGHT_TURN;
+    auto u = vertex_at(cdt, loop[0], hint);
+    for (std::size_t i = 0; i < loop.size() && u != typename CDT::Vertex_handle(); ++i) {
+      const auto& a = loop[i];
+      const auto& b = loop[(i + 1) % loop.size()];
+      u = for_each_edge_along(cdt, u, b, [&](Face_handle g, int j) {
+        own.insert(key(g->vertex(CDT::ccw(j)), g->vertex(CDT::cw(j))));
+        if (depth[l] % 2 != 0) return;  // a hole in the ring's region: its inside is not in it
+        const auto third = g->vertex(j);
+        const bool g_inside =
+            !cdt.is_infinite(third) && CGAL::orientation(a, b, third->point()) == inside;
+        stack.push_back(g_inside ? g : g->neighbor(j));
+      });
+    }
+    if (u == typename CDT::Vertex_handle())
+      throw Domain_error("the ring through " + to_string(loop[0]) +
+                         " is not made of constraints of the triangulation");
+  }
+  std::unordered_set<Face_handle> region;
+  while (!stack.empty()) {
+    const Face_handle f = stack.back();
+    stack.pop_back();
+    if (cdt.is_infinite(f) || !region.insert(f).second) continue;
+    for (int i = 0; i < 3; ++i)
+      if (!own.count(key(f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i)))))
+        stack.push_back(f->neighbor(i));
+  }
+  return region;
+}
+
+// GEOS's rules for the holes of a valid polygon: each lies inside the polygon's exterior ring,
+// and none inside another (they may touch the exterior and each other at points and, as
+// make_valid() reads them, along edges). A hole outside would remove nothing, silently.
+// `where(i, r)` names ring r (0: the exterior) of the i-th polygon in messages. The rings are
+// constraints of `cdt`.
+template <class CDT, class PolygonWithHolesRange, class Where>
+void check_holes_inside(const CDT& cdt, const PolygonWithHolesRange& polygons, const Where& where) {
+  if (cdt.dimension() < 2) return;  // no area: the domain is empty
+  std::size_t i = 0;
+  for (const auto& pwh : polygons) {
+    if (pwh.number_of_holes() > 0) {
+      const auto shell = ring_region(cdt, pwh.outer_boundary().vertices_begin(),
+                                     pwh.outer_boundary().vertices_end());
+      std::unordered_map<typename CDT::Face_handle, std::size_t> hole_of;
+      std::size_t r = 1;
+      for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h, ++r) {
+        const auto region = ring_region(cdt, h->vertices_begin(), h->vertices_end());
+        bool in = false, out = false;
+        std::size_t overlapped = 0;  // the first earlier hole it shares a face with
+        for (const auto& f : region) {
+          (shell.count(f) ? in : out) = true;
+          const auto [it, is_new] = hole_of.emplace(f, r);
+          if (!is_new && (overlapped == 0 || it->second < overlapped)) overlapped = it->second;
+        }
+        const std::string hole = "the hole through " + to_string(*h->vertices_begin());
+        if (out)
+          throw Domain_error(where(i, r) + hole + (in ? " reaches outside" : " lies outside") +
+                             " the polygon's exterior (ring 0): a hole must lie inside it");
+        if (overlapped)
+          throw Domain_error(where(i, r) + hole + " overlaps the hole of ring " +
+                             std::to_string(overlapped) + ": holes may not lie inside one another");
+      }
+    }
+    ++i;
+  }
+}
+
+// Whether a polyline inserted as constraints meets the domain: an edge along it has a domain
+// face on a side, or, if its points are all one, that point is in the closed domain.
+template <class CDT, class PointRange>
+bool polyline_meets_domain(const CDT& cdt, const PointRange& polyline,
+                           typename CDT::Face_handle& hint) {
+  using Vertex_handle = typename CDT::Vertex_handle;
+  auto it = std::begin(polyline);
+  if (it == std::end(polyline)) return true;
+  Vertex_handle u = vertex_at(cdt, *it, hint);
+  if (u == Vertex_handle()) return true;  // not inserted: not for this check to say
+  bool meets = has_domain_face(cdt, u);
+  bool one_point = true;
+  for (++it; it != std::end(polyline) && u != Vertex_handle(); ++it) {
+    if (*it == u->point()) continue;
+    one_point = false;
+    meets = false;
+    u = for_each_edge_along(cdt, u, *it, [&](typename CDT::Face_handle g, int j) {
+      meets = meets || g->is_inside_domain() || g->neighbor(j)->is_inside_domain();
+    });
+    if (meets) return true;
+  }
+  return u == Vertex_handle() || (one_point && meets);
+}
+
 }  // namespace internal
 
 /// \ingroup PkgCvt2Ref
@@ -148,8 +306,10 @@ typename CDT::Face_handle face_beside(const CDT& cdt, const typename CDT::Point_
 /// Call it again after inserting vertices: new faces are created outside the domain.
 /// \tparam CDT a constrained triangulation whose faces model `BvdFaceBase_2`.
 /// \tparam PointRange a range of `CDT::Point_2`.
-/// \throws Domain_error if a seed has a NaN or infinite coordinate, or lies on a constrained
-///         edge or vertex (it would not say which side is the hole).
+/// \throws Domain_error (with `index()` the seed's position) if a seed has a NaN or infinite
+///         coordinate, lies on a constrained edge or vertex (it would not say which side is the
+///         hole), or lies outside every region the segments enclose (it would remove nothing:
+///         a seed misplaced, or a hole's segments that do not close).
 template <class CDT, class PointRange>
 void mark_domain_2(const CDT& cdt, const PointRange& hole_seeds) {
   using Face_handle = typename CDT::Face_handle;
@@ -160,32 +320,47 @@ void mark_domain_2(const CDT& cdt, const PointRange& hole_seeds) {
   }
   std::vector<Face_handle> stack{cdt.infinite_face()};
   internal::flood_outside(cdt, stack);
+  // Every seed is checked against the regions closed by segments, before any hole is removed:
+  // two seeds in one hole are fine.
   Face_handle hint;
+  std::size_t k = 0;
   for (const auto& p : hole_seeds) {
     if (!internal::is_valid_point(p))
-      throw Domain_error(internal::invalid_point_message("hole point " + internal::to_string(p)));
+      throw Domain_error(internal::invalid_point_message("hole point " + internal::to_string(p)),
+                         k);
     typename CDT::Locate_type lt;
     int li;
     const Face_handle f = cdt.locate(p, lt, li, hint);
     hint = f;
+    const std::size_t before = stack.size();
     if (lt == CDT::FACE) {
       stack.push_back(f);
     } else if (lt == CDT::EDGE) {
       if (cdt.is_constrained(typename CDT::Edge(f, li)))
         throw Domain_error("hole point " + internal::to_string(p) +
-                           " lies on a segment: it does not say which side is the hole");
+                               " lies on a segment: it does not say which side is the hole",
+                           k);
       stack.push_back(f);
       stack.push_back(f->neighbor(li));
     } else if (lt == CDT::VERTEX) {
       if (cdt.are_there_incident_constraints(f->vertex(li)))
-        throw Domain_error("hole point " + internal::to_string(p) +
-                           " lies on a segment endpoint: it does not say which side is the hole");
+        throw Domain_error(
+            "hole point " + internal::to_string(p) +
+                " lies on a segment endpoint: it does not say which side is the hole",
+            k);
       auto fc = cdt.incident_faces(f->vertex(li)), done = fc;
       do stack.push_back(fc);
       while (++fc != done);
-    }  // outside the convex hull: outside already
-    internal::flood_outside(cdt, stack);
+    }
+    if (std::none_of(stack.begin() + std::ptrdiff_t(before), stack.end(),
+                     [](Face_handle g) { return g->is_inside_domain(); }))
+      throw Domain_error("hole point " + internal::to_string(p) +
+                             " lies outside the domain, in no region the segments enclose: it "
+                             "removes nothing",
+                         k);
+    ++k;
   }
+  internal::flood_outside(cdt, stack);
 }
 
 /// \ingroup PkgCvt2Ref

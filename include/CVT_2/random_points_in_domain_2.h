@@ -5,6 +5,7 @@
 
 #include <CVT_2/Concepts/DensityFunction_2.h>
 #include <CVT_2/exceptions.h>
+#include <CVT_2/internal/Interrupt_scope.h>
 #include <CVT_2/parameters.h>
 
 #include <CGAL/Kernel/global_functions.h>
@@ -91,6 +92,7 @@ std::vector<std::array<Point_2, 3>> bisect_triangles(const Domain_triangles<Poin
   for (std::size_t f = 0; f < d.triangles.size(); ++f) {
     stack.assign(1, d.triangles[f]);
     while (!stack.empty()) {
+      poll_interrupt_sometimes();
       const Triangle u = stack.back();
       stack.pop_back();
       if (d.area(u) <= small) {
@@ -219,6 +221,7 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   points.reserve(n);
   std::size_t misses = 0;
   while (points.size() < n) {
+    internal::poll_interrupt_sometimes();
     const double u = internal::uniform01(rng) * total;
     const std::size_t k = std::min<std::size_t>(
         std::upper_bound(cumulative.begin(), cumulative.end(), u) - cumulative.begin(),

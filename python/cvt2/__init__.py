@@ -16,7 +16,10 @@ the points given, plus the domain's own vertices (constrained generators, which 
   names of ``scipy.spatial.Voronoi`` (``points``, ``vertices``, ``regions``, ``point_region``,
   ``ridge_points``, ``ridge_vertices``), no -1 anywhere, and what scipy lacks: the constraint
   under each ridge, cell areas and centroids, valid shapely geometries, GeoJSON, VTU and
-  MODFLOW 6 DISV files.
+  MODFLOW 6 DISV files;
+- :func:`natural_neighbours` gives the natural-neighbour (Sibson or Laplace) coordinates of
+  query points on that diagram as a sparse matrix: ``M @ values`` interpolates values given at
+  the generators, never across a constraint.
 
 Errors in the input raise :class:`ParseError` or :class:`DomainError` (both ValueError) with the
 library's message, which names the file and line or the row of the offending item.
@@ -44,12 +47,14 @@ from ._cvt2 import DomainError, ParseError, __version__
 
 __all__ = [
     "BoundedVoronoi",
+    "CsrMatrix",
     "Domain",
     "DomainError",
     "OptimizeResult",
     "ParseError",
     "__version__",
     "bounded_voronoi",
+    "natural_neighbours",
     "optimize",
     "random_points",
 ]
@@ -250,11 +255,14 @@ def _impl(domain):
     return domain._impl
 
 
-def _count(value, name):
+def _count(value, name, below=2**63):
+    """An integer count: >= 0 and below ``below`` (None: no bound), what the module's int64 takes."""
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
         raise TypeError(f"{name} must be an integer, not {type(value).__name__}")
-    if value < 0:
+    if below is None and value < 0:
         raise ValueError(f"{name} must be >= 0, not {value}")
+    if below is not None and not 0 <= value < below:
+        raise ValueError(f"{name} must be >= 0 and below 2**{below.bit_length() - 1}, not {value}")
     return int(value)
 
 
@@ -276,7 +284,7 @@ def random_points(domain, n, seed=1, density=None, *, lipschitz_k=0.1, boundary_
     Returns a float64 array (n, 2).
     """
     n = _count(n, "n")
-    seed = _count(seed, "seed")
+    seed = _count(seed, "seed", below=None)
     if seed >= 2**64:
         raise ValueError(f"seed must be below 2**64, not {seed}")
     return _cvt2.random_points(_impl(domain), n, seed, density, float(lipschitz_k), boundary_size)
@@ -295,6 +303,7 @@ def optimize(
     time_limit=0.0,
     lipschitz_k=0.1,
     boundary_size=None,
+    boundary_tolerance=None,
 ) -> "OptimizeResult":
     """Moves ``points`` to a centroidal Voronoi tessellation of ``domain``: each free generator
     to the centroid of its bounded Voronoi cell (under the density), again and again. The same
@@ -304,7 +313,9 @@ def optimize(
     - ``domain``: a :class:`Domain`; its own vertices (and generators) are generators too;
       constrained ones never move, and no generator crosses a constraint;
     - ``points``: float array (n, 2), the initial free generators (:func:`random_points`, say),
-      in the domain (its boundary included: a point on a constraint becomes constrained);
+      in the domain (its boundary included: a point on a constraint becomes constrained; one
+      outside by no more than ``boundary_tolerance`` goes onto the boundary, see
+      :func:`bounded_voronoi`);
     - ``algorithm``: ``"lbfgs"`` (L-BFGS on the CVT energy; fewer evaluations) or ``"lloyd"``;
     - ``density``: None (uniform, integrated exactly), ``"lipschitz"`` (the automatic sizing
       of the paper's Section 4: cell size ``lipschitz_k`` * distance to the boundary +
@@ -317,10 +328,16 @@ def optimize(
       diameter(cell)`` is below it (0: never);
     - ``max_iterations``: at most that many iterations;
     - ``threads``: threads for the cells (0: one per core); the result does not depend on it;
-    - ``callback``: None, or ``f(info)`` called after each iteration with a dict (``iteration``,
-      ``evaluations``, ``energy``, ``max_move_ratio``, ``mean_move_ratio``, ``seconds``);
-      returning False stops;
-    - ``time_limit``: stop after that many seconds (0: no limit).
+    - ``callback``: None, or ``f(info)`` called once with each state the run goes through,
+      with its figures in a dict (``iteration``, ``evaluations``, ``energy``,
+      ``max_move_ratio``, ``mean_move_ratio``, ``seconds``): first the points given
+      (``iteration`` 0, before any move), then the state after each iteration, the last call
+      with the final state, the one returned (``energy`` is then the result's ``energy``).
+      Returning False stops there (the result is that state, ``stop_reason`` ``"callback"``);
+      None or True goes on, and the last call's answer is not used when the run stopped for
+      another reason. Anything else it returns raises TypeError;
+    - ``time_limit``: stop after that many seconds (0: no limit);
+    - ``boundary_tolerance``: as in :func:`bounded_voronoi`.
 
     Ctrl-C raises KeyboardInterrupt. Returns an :class:`OptimizeResult`.
     """
@@ -338,20 +355,141 @@ def optimize(
         callback,
         float(lipschitz_k),
         boundary_size,
+        _tolerance(boundary_tolerance),
     )
     return OptimizeResult(result, domain)
 
 
-def bounded_voronoi(domain, points, threads=0) -> "BoundedVoronoi":
+def _tolerance(value):
+    if value is None:
+        return None
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
+        raise TypeError(f"boundary_tolerance must be None or a number, not {type(value).__name__}")
+    return float(value)
+
+
+def bounded_voronoi(domain, points, threads=0, *, boundary_tolerance=None) -> "BoundedVoronoi":
     """The bounded Voronoi diagram of the domain's vertices (and generators) and ``points``
     (float array (n, 2) in the domain): each generator's cell is the part of the domain that is
     closer to it than to any other generator it can see (constraints block the view, and cells
-    stop at them). Returns a :class:`BoundedVoronoi`; its ``points`` are every generator, in
-    the diagram's order, which is not the order given.
+    stop at them). Returns a :class:`BoundedVoronoi`; its regions, and its ``points`` (their
+    generators), are in the diagram's order, which is not the order given: as in scipy,
+    ``regions[point_region[i]]`` is the cell of ``points`` row i, and ``point_region[n + j]``
+    that of the domain's own point j; ``input_index`` goes back from regions to rows, and
+    ``duplicates`` says which rows were merged.
+
+    A point on the boundary is a constrained generator. One that lies outside the domain by no
+    more than ``boundary_tolerance`` (a boundary point computed in floating point: an edge's
+    midpoint, a projection) goes onto the boundary as a constrained generator: merged with a
+    boundary vertex within the tolerance, else at its projection onto the nearest boundary
+    edge (rounded; the edge bends through it by a rounding if no rounding lies on it); the
+    result's ``notes`` say which. ``boundary_tolerance`` is a distance >= 0 (0: none), by
+    default 2**-50 of the largest coordinate magnitude of the domain (4 to 8 units in the last
+    place). Points farther out raise DomainError naming how many and the first few rows.
     """
     return BoundedVoronoi(
-        _cvt2.bounded_voronoi(_impl(domain), points, _count(threads, "threads")), domain
+        _cvt2.bounded_voronoi(
+            _impl(domain), points, _count(threads, "threads"), _tolerance(boundary_tolerance)
+        ),
+        domain,
     )
+
+
+def natural_neighbours(domain, nodes, queries, method="sibson", threads=0, *, boundary_tolerance=None):
+    """The natural-neighbour coordinates of ``queries`` on the bounded Voronoi diagram of
+    ``domain`` and ``nodes``, as a sparse matrix ``M``: the shape functions of the constrained
+    natural element method, in which a node that a constraint hides from a query gets no
+    weight, so that ``M @ values`` interpolates values given at the nodes without mixing the
+    two sides of a constraint (a crack, a fault, a wall).
+
+    - ``domain``: a :class:`Domain`; its own points are nodes too;
+    - ``nodes``: float array (n, 2) in the domain, as :func:`bounded_voronoi` takes its points;
+    - ``queries``: float array (q, 2), finite;
+    - ``method``: ``"sibson"`` (the share of the query's cell that each node's cell gives up;
+      reproduces linear functions) or ``"laplace"`` (the length of the edge between the two
+      cells over the distance between the two points);
+    - ``threads``: threads (0: one per core); the result does not depend on it;
+    - ``boundary_tolerance``: as in :func:`bounded_voronoi`, for the nodes.
+
+    Returns a (q, n + d) matrix with ``indptr``, ``indices``, ``data`` and ``shape``: a
+    ``scipy.sparse.csr_matrix`` if scipy can be imported, a :class:`CsrMatrix` otherwise.
+    Row k holds the coordinates of ``queries[k]``, positive and summing to 1, in increasing
+    columns: column i < n is ``nodes[i]``, column n + j the domain's own point j
+    (:attr:`Domain.vertices`, then a WKT or GeoJSON domain's :attr:`Domain.generators`): the
+    rows of :attr:`BoundedVoronoi.point_region`, so ``values`` has one value a column. Rows at
+    one place (a node given twice, or on a vertex of the domain) are one generator, whose
+    weight goes to the first of their columns. A query at a node has that node alone, weight
+    1. A query outside the closed domain gets an empty row, so ``M @ values`` is 0 there:
+    ``M.inside``, bool (q,), says which queries lie in it. The numbers are those of the
+    library's ``natural_neighbor_matrix_2()`` (the ``natural_neighbours`` example prints
+    them), bit for bit.
+
+    Errors: DomainError for a node outside the domain or a query that is not finite, naming
+    its row.
+    """
+    if method not in ("sibson", "laplace"):
+        raise ValueError(f"method must be 'sibson' or 'laplace', not {method!r}")
+    m = _cvt2.natural_neighbours(
+        _impl(domain), nodes, queries, method, _count(threads, "threads"), _tolerance(boundary_tolerance)
+    )
+    try:
+        import scipy.sparse
+    except ImportError:
+        matrix = CsrMatrix(m["data"], m["indices"], m["indptr"], m["shape"])
+    else:
+        matrix = scipy.sparse.csr_matrix((m["data"], m["indices"], m["indptr"]), shape=m["shape"])
+    matrix.inside = m["inside"]
+    return matrix
+
+
+class CsrMatrix:
+    """A sparse matrix in compressed rows, as :func:`natural_neighbours` returns it when scipy
+    is not installed: scipy's ``indptr``, ``indices``, ``data``, ``shape`` and ``nnz`` (row k's
+    columns ``indices[indptr[k]:indptr[k + 1]]``, its values likewise in ``data``), ``M @
+    values`` and ``M.dot(values)`` for ``values`` of shape (columns,) or (columns, m), summed in
+    the order scipy sums them, and ``toarray()``. ``scipy.sparse.csr_matrix((M.data, M.indices,
+    M.indptr), shape=M.shape)`` is the same matrix in scipy."""
+
+    def __init__(self, data, indices, indptr, shape):
+        self.data = np.asarray(data)
+        self.indices = np.asarray(indices)
+        self.indptr = np.asarray(indptr)
+        self.shape = tuple(int(s) for s in shape)
+
+    @property
+    def nnz(self) -> int:
+        return len(self.data)
+
+    def _rows(self):
+        return np.repeat(np.arange(self.shape[0]), np.diff(self.indptr))
+
+    def __matmul__(self, values):
+        values = np.asarray(values)
+        if values.ndim not in (1, 2) or values.shape[0] != self.shape[1]:
+            raise ValueError(
+                f"the matrix has {self.shape[1]} columns: values must have shape "
+                f"({self.shape[1]},) or ({self.shape[1]}, m), not {values.shape}"
+            )
+        rows = self._rows()
+        terms = (self.data if values.ndim == 1 else self.data[:, None]) * values[self.indices]
+        out = np.zeros((self.shape[0],) + values.shape[1:], dtype=terms.dtype)
+        columns = out.reshape(self.shape[0], int(np.prod(values.shape[1:])))  # a view of out
+        if terms.dtype == np.float64:  # bincount adds in order from 0, as scipy, and fast
+            for c, t in enumerate(terms.reshape(len(terms), columns.shape[1]).T):
+                columns[:, c] = np.bincount(rows, weights=t, minlength=self.shape[0])
+        else:
+            np.add.at(out, rows, terms)
+        return out
+
+    dot = __matmul__
+
+    def toarray(self) -> np.ndarray:
+        out = np.zeros(self.shape, dtype=self.data.dtype)
+        out[self._rows(), self.indices] = self.data
+        return out
+
+    def __repr__(self):
+        return f"<cvt2.CsrMatrix {self.shape[0]} x {self.shape[1]}, {self.nnz} stored values>"
 
 
 class OptimizeResult:
@@ -368,7 +506,12 @@ class OptimizeResult:
       or ``"no_free_generator"``;
     - ``energy_history``, ``max_move_ratio_history``, ``mean_move_ratio_history``: one value an
       iteration, the first before any move; ``max_move_ratio``, ``mean_move_ratio``: the last;
-    - ``seconds``: the optimization's time, measured as ``cvt2`` prints ``seconds=``.
+    - ``seconds``: the optimization's time, measured as ``cvt2`` prints ``seconds=``;
+    - ``notes``: the points moved onto the boundary (``boundary_tolerance``), as ``cvt2`` notes
+      them: a list of strings, empty if none was;
+    - ``input_index``: int (N,), for each generator, the row of the ``points`` given that it
+      started from (the first of rows merged as duplicates), or -1 for a generator of the
+      domain's own: ``points[input_index == i]`` is where input row i went.
     """
 
     def __init__(self, impl, domain):
@@ -386,6 +529,8 @@ class OptimizeResult:
         self.max_move_ratio_history = impl.max_move_ratio_history
         self.mean_move_ratio_history = impl.mean_move_ratio_history
         self.seconds = impl.seconds
+        self.notes = impl.notes
+        self.input_index = impl.input_index
 
     @property
     def normalized_energy(self) -> float:
@@ -394,8 +539,15 @@ class OptimizeResult:
 
     def bounded_voronoi(self, threads=0) -> "BoundedVoronoi":
         """The diagram of the optimized triangulation itself: its ``points`` are this result's,
-        in the same order, and its files are those ``cvt2 --geojson/--vtu/--disv`` writes."""
-        return BoundedVoronoi(self._impl.diagram(_count(threads, "threads")), self.domain)
+        in the same order (``point_region`` is ``arange(N)``, ``input_index`` this result's),
+        and its files are those ``cvt2 --geojson/--vtu/--disv`` writes."""
+        n = len(self.points)
+        rows = {
+            "point_region": np.arange(n, dtype=np.int64),
+            "input_index": self.input_index,
+            "duplicates": np.empty((0, 2), dtype=np.int64),
+        }
+        return BoundedVoronoi(self._impl.diagram(_count(threads, "threads")), self.domain, rows)
 
     def __repr__(self):
         return (
@@ -408,8 +560,9 @@ class BoundedVoronoi:
     """A bounded Voronoi diagram as a conforming polygon mesh, with the names of
     ``scipy.spatial.Voronoi`` and no -1 in them (every region is finite, inside the domain):
 
-    - ``points``: float (n, 2), every generator (the domain's vertices included);
-      ``constrained``: bool (n,), whether each is a constrained vertex;
+    - ``points``: float (n, 2), every generator (the domain's vertices included), in the
+      regions' order: ``points[k]`` is region k's generator (for the rows given, see
+      ``point_region``); ``constrained``: bool (n,), whether each is a constrained vertex;
     - ``vertices``: float (V, 2), the cell vertices: circumcenters, points where bisectors meet
       constraints, and constrained generators (a vertex of its own cell); each is shared by the
       cells it bounds, found from the triangulation, not by comparing coordinates;
@@ -418,7 +571,18 @@ class BoundedVoronoi:
       is left out, and a cell of several pieces meeting at its generator (where two holes
       touch) is one ring through the generator; ``cycles`` is the exact boundary, slits walked
       there and back;
-    - ``point_region``: int (n,), the region of each point: region k is point k's;
+    - ``point_region``: int, scipy's: the region of each point given to
+      :func:`bounded_voronoi`, in the order given (``regions[point_region[i]]`` is input row
+      i's cell), then of each of the domain's own points (:attr:`Domain.vertices`, then a WKT
+      or GeoJSON domain's :attr:`Domain.generators`; -1 for one with no cell). Rows at one
+      place (duplicates, or a point on a vertex of the domain) were merged into one generator
+      and name its region; ``duplicates``, int (D, 2), lists them as pairs (i, j): row i
+      shares the generator of the earlier row j, the first there.
+      For :meth:`OptimizeResult.bounded_voronoi`, the rows are the result's ``points``:
+      ``point_region`` is ``arange(n)``;
+    - ``input_index``: int (n,), for each region, the first row given that is its generator,
+      -1 for a generator of the domain's own (``OptimizeResult.input_index`` for an optimized
+      diagram);
     - ``ridge_points``: int (E, 2), the cells on the two sides of each ridge (mesh edge), the
       left one first; a ridge on the domain's boundary, with no cell beyond, names its cell
       twice (``ridge_boundary`` is True for those), as does a slit;
@@ -426,15 +590,22 @@ class BoundedVoronoi:
     - ``ridge_constraint``: int (E,), the input segment each ridge lies on (a row of
       :attr:`Domain.segments`; :attr:`Domain.segment_items` gives its line, feature or
       shapely geometry), or -1 for a bisector ridge;
-    - ``areas``: float (n,), ``centroids``: float (n, 2) (of the cells as uniform polygons).
+    - ``areas``: float (n,), ``centroids``: float (n, 2) (of the cells as uniform polygons);
+    - ``notes``: the points moved onto the boundary (``boundary_tolerance``), a list of
+      strings, empty if none was.
 
     :meth:`to_shapely` gives one valid geometry per generator; :meth:`to_geojson`,
     :meth:`to_vtu`, :meth:`to_disv` write the library's files.
     """
 
-    def __init__(self, impl, domain):
+    def __init__(self, impl, domain, rows=None):
         self._impl = impl
         self.domain = domain
+        self._given_rows = rows  # point_region, input_index, duplicates; else found when asked
+
+    @functools.cached_property
+    def _rows(self):
+        return self._impl.rows() if self._given_rows is None else self._given_rows
 
     @functools.cached_property
     def points(self) -> np.ndarray:
@@ -465,7 +636,15 @@ class BoundedVoronoi:
 
     @functools.cached_property
     def point_region(self) -> np.ndarray:
-        return np.arange(len(self.points), dtype=np.int64)
+        return self._rows["point_region"]
+
+    @functools.cached_property
+    def input_index(self) -> np.ndarray:
+        return self._rows["input_index"]
+
+    @functools.cached_property
+    def duplicates(self) -> np.ndarray:
+        return self._rows["duplicates"]
 
     @functools.cached_property
     def ridge_points(self) -> np.ndarray:
@@ -491,6 +670,10 @@ class BoundedVoronoi:
     @functools.cached_property
     def centroids(self) -> np.ndarray:
         return self._impl.centroids
+
+    @property
+    def notes(self) -> list:
+        return self._impl.notes
 
     def polygons(self) -> list:
         """Cell k as valid rings: a list (one ring per piece, usually one) of int arrays of

@@ -72,8 +72,40 @@ def optimize(
     time_limit: float = ...,
     lipschitz_k: float = ...,
     boundary_size: Optional[float] = ...,
+    boundary_tolerance: Optional[float] = ...,
 ) -> OptimizeResult: ...
-def bounded_voronoi(domain: Domain, points: _Points, threads: int = ...) -> BoundedVoronoi: ...
+def bounded_voronoi(
+    domain: Domain, points: _Points, threads: int = ..., *, boundary_tolerance: Optional[float] = ...
+) -> BoundedVoronoi: ...
+# A scipy.sparse.csr_matrix if scipy is installed, else a CsrMatrix; both with .inside
+def natural_neighbours(
+    domain: Domain,
+    nodes: _Points,
+    queries: _Points,
+    method: Literal["sibson", "laplace"] = ...,
+    threads: int = ...,
+    *,
+    boundary_tolerance: Optional[float] = ...,
+) -> Any: ...
+
+class CsrMatrix:
+    data: np.ndarray  # float (nnz,)
+    indices: np.ndarray  # int (nnz,)
+    indptr: np.ndarray  # int (rows + 1,)
+    shape: tuple[int, int]
+    inside: np.ndarray  # bool (rows,), set by natural_neighbours
+    def __init__(
+        self,
+        data: npt.ArrayLike,
+        indices: npt.ArrayLike,
+        indptr: npt.ArrayLike,
+        shape: tuple[int, int],
+    ) -> None: ...
+    @property
+    def nnz(self) -> int: ...
+    def __matmul__(self, values: npt.ArrayLike) -> np.ndarray: ...
+    def dot(self, values: npt.ArrayLike) -> np.ndarray: ...
+    def toarray(self) -> np.ndarray: ...
 
 class OptimizeResult:
     domain: Domain
@@ -89,6 +121,8 @@ class OptimizeResult:
     max_move_ratio_history: np.ndarray
     mean_move_ratio_history: np.ndarray
     seconds: float
+    notes: list[str]
+    input_index: np.ndarray  # int (N,), the input row of each generator, -1 for the domain's
     @property
     def normalized_energy(self) -> float: ...
     def bounded_voronoi(self, threads: int = ...) -> BoundedVoronoi: ...
@@ -101,13 +135,16 @@ class BoundedVoronoi:
     vertex_kinds: np.ndarray  # uint8 (V,)
     regions: list[list[int]]
     cycles: list[list[int]]
-    point_region: np.ndarray  # int (n,)
+    point_region: np.ndarray  # int: the region of each input row, then of each domain point
+    input_index: np.ndarray  # int (n,), the first input row of each region, -1 for the domain's
+    duplicates: np.ndarray  # int (D, 2), rows (i, j): row i merged into the earlier row j
     ridge_points: np.ndarray  # int (E, 2)
     ridge_vertices: np.ndarray  # int (E, 2)
     ridge_constraint: np.ndarray  # int (E,), -1 for a bisector ridge
     ridge_boundary: np.ndarray  # bool (E,)
     areas: np.ndarray  # float (n,)
     centroids: np.ndarray  # float (n, 2)
+    notes: list[str]
     def polygons(self) -> list[list[np.ndarray]]: ...
     def to_shapely(self) -> list[Any]: ...
     def to_geojson(self, path: _Path) -> None: ...

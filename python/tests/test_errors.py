@@ -148,3 +148,70 @@ def test_bad_domains(tmp_path):
     bowtie = Polygon([(0, 0), (1, 1), (1, 0), (0, 1)])
     with pytest.raises(cvt2.DomainError, match="<shapely>: polygon: this geometry crosses itself"):
         cvt2.Domain.from_shapely(bowtie)
+
+
+@pytest.mark.parametrize(
+    "points, kind",
+    [
+        (None, "None"),
+        (np.ones((3, 2), dtype=bool), "an array of bool"),
+        (np.array([["0.5", "0.5"]]), "an array of <U3"),
+        (np.array([[0.5 + 0j, 0.5]]), "an array of complex128"),
+        (np.array([[0.5, 0.5]], dtype=object), "an array of object"),
+    ],
+)
+def test_points_that_are_no_numbers_are_not_cast(square, points, kind):
+    # numpy would take each of them as doubles without a word: True as 1, "0.5" as 0.5, 0.5+0j
+    # as 0.5 with a warning.
+    message = r"^points must be an array of shape \(n, 2\) of numbers, not " + kind + "$"
+    for call in (cvt2.optimize, cvt2.bounded_voronoi):
+        with pytest.raises(TypeError, match=message):
+            call(square, points)
+
+
+def test_other_arrays_of_no_numbers_are_not_cast(square):
+    with pytest.raises(TypeError, match=r"^vertices must be an array of shape \(n, 2\) of numbers, not an array of bool$"):
+        cvt2.Domain(np.ones((3, 2), dtype=bool), [[0, 1], [1, 2], [2, 0]])
+    with pytest.raises(TypeError, match="^the density must return an array of numbers, not an array of bool$"):
+        cvt2.optimize(square, [[0.5, 0.5]], density=lambda xy: np.ones(len(xy), dtype=bool))
+
+
+def test_counts_out_of_range_get_one_message(square):
+    for n in (-1, 2**63, 2**64, np.uint64(2**63)):
+        with pytest.raises(ValueError, match=rf"^n must be >= 0 and below 2\*\*63, not {n}$"):
+            cvt2.random_points(square, n)
+    with pytest.raises(ValueError, match=r"^max_iterations must be >= 0 and below 2\*\*63, not 9223372036854775808$"):
+        cvt2.optimize(square, [[0.5, 0.5]], max_iterations=2**63)
+    with pytest.raises(ValueError, match=r"^threads must be >= 0 and below 2\*\*63, not 9223372036854775808$"):
+        cvt2.bounded_voronoi(square, [], threads=2**63)
+    # A count the int64 takes, but memory not: a MemoryError of ours, nothing allocated.
+    with pytest.raises(MemoryError, match=r"^not enough memory for n = 4611686018427387904 points$"):
+        cvt2.random_points(square, 2**62)
+    assert cvt2.random_points(square, 2**0).shape == (1, 2)
+
+
+@pytest.mark.parametrize("algorithm", ["lloyd", "lbfgs"])
+def test_the_callback_sees_every_state_once_the_final_one_last(square, algorithm):
+    points = cvt2.random_points(square, 200, seed=3)
+    for options, reason in [
+        (dict(max_iterations=4, move_ratio=0), "max_iterations"),
+        (dict(max_iterations=1000), "converged"),
+        (dict(max_iterations=0), "max_iterations"),
+    ]:
+        seen = []
+        r = cvt2.optimize(square, points, algorithm=algorithm, callback=lambda info: seen.append(info), **options)
+        assert r.stop_reason == reason
+        assert [s["iteration"] for s in seen] == list(range(r.iterations + 1))
+        assert [s["energy"] for s in seen] == list(r.energy_history)
+        last = seen[-1]
+        assert (last["energy"], last["evaluations"], last["max_move_ratio"], last["mean_move_ratio"]) == (
+            r.energy, r.evaluations, r.max_move_ratio, r.mean_move_ratio)
+    # Returning False stops at the state the callback saw: the result, not seen twice.
+    for stop in (lambda info: info["iteration"] < 2, lambda info: np.bool_(info["iteration"] < 2)):
+        seen = []
+        r = cvt2.optimize(square, points, algorithm=algorithm, move_ratio=0,
+                          callback=lambda info: seen.append(info["iteration"]) or stop(info))
+        assert r.stop_reason == "callback" and r.iterations == 2 and seen == [0, 1, 2]
+    for answer in (1, "stop", [False]):
+        with pytest.raises(TypeError, match=rf"^the callback must return None, True or False, not {type(answer).__name__}$"):
+            cvt2.optimize(square, points, algorithm=algorithm, callback=lambda info: answer)

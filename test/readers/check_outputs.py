@@ -32,7 +32,7 @@ def check(condition, what):
 
 def domain_geometry(path):
     """The domain as shapely reads it: the union of the polygons of a .wkt or .geojson file
-    (made valid as GEOS makes them: world_land_110m's Caspian lies in the wrong polygon)."""
+    (made valid as GEOS makes them)."""
     if path.endswith(".wkt"):
         geoms = [shapely_wkt.loads(line) for line in open(path) if line.strip()]
     else:

@@ -64,6 +64,7 @@ struct Options {
   std::string domain;
   std::optional<std::size_t> points;  // -n; by default from the domain file
   std::string points_in;
+  std::optional<double> boundary_tolerance;  // default: insert_generators_2()'s
   std::uint64_t seed = 1;
   std::size_t iterations = 1000;
   double move_ratio = 0.01;
@@ -91,6 +92,9 @@ void print_help(std::ostream& os) {
         "  -n, --points N         N random generators (default 1000 if DOMAIN has none and no\n"
         "                         --points-in is given, else 0)\n"
         "      --points-in FILE   generators from FILE, one 'x y' per line ('#' comments)\n"
+        "      --boundary-tolerance T  a point of FILE outside DOMAIN by at most T goes onto\n"
+        "                         its boundary, a constrained generator (default 2^-50 of the\n"
+        "                         largest coordinate: a rounding; 0: none)\n"
         "      --seed S           seed of the random generators (default 1)\n"
         "Iteration:\n"
         "      --algorithm A      lbfgs | lloyd (default lbfgs: L-BFGS on the CVT energy, which\n"
@@ -169,6 +173,8 @@ const std::map<std::string, Setter>& valued_options() {
   static const std::map<std::string, Setter> table{
       {"--points", [](Options& o, auto& n, auto& v) { o.points = parse_count(n, v); }},
       {"--points-in", [](Options& o, auto&, auto& v) { o.points_in = v; }},
+      {"--boundary-tolerance",
+       [](Options& o, auto& n, auto& v) { o.boundary_tolerance = parse_non_negative(n, v); }},
       {"--seed", [](Options& o, auto& n, auto& v) { o.seed = parse_count(n, v); }},
       {"--algorithm", [](Options& o, auto& n,
                          auto& v) { o.lbfgs = parse_choice(n, v, "lbfgs", "lloyd") == "lbfgs"; }},
@@ -250,6 +256,8 @@ Options parse_command_line(int argc, char* argv[]) {
   o.domain = positional[0];
   if (!o.lipschitz && o.boundary_size)
     throw Usage_error("--boundary-size needs --density lipschitz");
+  if (o.boundary_tolerance && o.points_in.empty())
+    throw Usage_error("--boundary-tolerance needs --points-in");
   return o;
 }
 
@@ -460,7 +468,13 @@ int run(const Options& o) {
       notes.push_back(o.points_in + ":" + std::to_string(line) +
                       ": this point repeats the one on line " + std::to_string(earlier));
     note_repeated(notes);
-    CVT_2::IO::insert_points(cdt, points);
+    const auto moved =
+        o.boundary_tolerance
+            ? CVT_2::IO::insert_points(cdt, points,
+                                       CVT_2::parameters::boundary_tolerance(*o.boundary_tolerance))
+            : CVT_2::IO::insert_points(cdt, points);
+    const std::string note = CVT_2::IO::moved_points_note(points, moved);
+    if (!note.empty()) std::cerr << "cvt2: note: " << note << '\n';
   }
   const std::size_t n =
       o.points ? *o.points : (domain.number_of_generators == 0 && o.points_in.empty() ? 1000 : 0);

@@ -6,6 +6,8 @@
 #include <CVT_2/exceptions.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/internal/line_reader.h>
+#include <CVT_2/internal/snap_to_boundary.h>
+#include <CVT_2/parameters.h>
 
 #include <array>
 #include <cstddef>
@@ -54,17 +56,42 @@ Point_data<Point_2> read_points(const std::string& filename) {
 }
 
 /// \ingroup PkgCvt2IO
-/// Inserts the points as generators (`insert_generators_2()`, which keeps the domain's marking).
-/// \throws Domain_error naming the file and line of a point that is outside the domain.
-template <class CDT>
-void insert_points(CDT& cdt, const Point_data<typename CDT::Point_2>& data) {
+/// Inserts the points as generators (`insert_generators_2()`, which keeps the domain's marking,
+/// and takes its named parameter `boundary_tolerance`).
+/// \returns the points moved onto the boundary (`moved_points_note()` says which).
+/// \throws Domain_error naming the file and line of the points outside the domain (the first
+///         few, with how many).
+template <class CDT, class NP = No_named_parameters>
+Generator_insertion_result<typename CDT::Point_2> insert_points(
+    CDT& cdt, const Point_data<typename CDT::Point_2>& data,
+    const NP& np = parameters::default_values()) {
+  const auto where = [&data](std::size_t k) {
+    return data.source + ":" + std::to_string(data.lines[k]);
+  };
   try {
-    insert_generators_2(cdt, data.points);
+    return insert_generators_2(cdt, data.points, np);
+  } catch (const internal::Generators_outside_error& e) {
+    if (e.index() >= data.lines.size()) throw;
+    throw Domain_error(where(e.index()) + ": " + e.message([&](std::size_t k) {
+      return "line " + std::to_string(data.lines[k]);
+    }),
+                       e.index());
   } catch (const Domain_error& e) {
     if (e.index() >= data.lines.size()) throw;
-    throw Domain_error(data.source + ":" + std::to_string(data.lines[e.index()]) + ": " + e.what(),
-                       e.index());
+    throw Domain_error(where(e.index()) + ": " + e.what(), e.index());
   }
+}
+
+/// \ingroup PkgCvt2IO
+/// The note on the points `insert_points()` moved onto the boundary, naming each by its file and
+/// line (the first in full, how many, the next few); empty if none was.
+template <class Point_2>
+std::string moved_points_note(const Point_data<Point_2>& data,
+                              const Generator_insertion_result<Point_2>& r) {
+  return internal::moved_points_note(
+      r, data.points,
+      [&data](std::size_t k) { return data.source + ":" + std::to_string(data.lines[k]); },
+      [&data](std::size_t k) { return "line " + std::to_string(data.lines[k]); });
 }
 
 }  // namespace IO

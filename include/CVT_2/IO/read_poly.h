@@ -145,7 +145,8 @@ Poly_data<Point_2> read_poly(const std::string& filename) {
 /// \throws Domain_error naming the file and line of the offending item: a segment whose two
 ///         vertices lie at the same point, two segments that cross (with a triangulation that
 ///         does not compute intersections), a free vertex outside the domain, a hole point on a
-///         segment, or an empty domain.
+///         segment or outside the domain (it would remove nothing), or an empty domain. As in
+///         Triangle, a hole removes the segments inside it with the rest.
 template <class CDT>
 void insert_poly(CDT& cdt, const Poly_data<typename CDT::Point_2>& data) {
   const auto where = [&data](std::size_t line) {
@@ -194,7 +195,8 @@ void insert_poly(CDT& cdt, const Poly_data<typename CDT::Point_2>& data) {
   try {
     mark_domain_2(cdt, data.holes);
   } catch (const Domain_error& e) {
-    throw Domain_error(data.source + ": " + e.what());
+    if (e.index() >= data.hole_lines.size()) throw Domain_error(data.source + ": " + e.what());
+    throw Domain_error(where(data.hole_lines[e.index()]) + e.what(), e.index());
   }
   if (!internal::has_domain_face(cdt))
     throw Domain_error(data.source + ": the domain is empty: no region is enclosed by segments");

@@ -6,9 +6,12 @@
 #include <CVT_2/exceptions.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/internal/line_reader.h>
+#include <CVT_2/internal/snap_to_boundary.h>
+#include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/valid_point.h>
 #include <CVT_2/mark_domain_2.h>
 
+#include <CGAL/Bbox_2.h>
 #include <CGAL/IO/WKT.h>
 #include <CGAL/Polygon_with_holes_2.h>
 
@@ -260,14 +263,32 @@ Wkt_data<K> read_wkt(const std::string& filename) {
 /// constraints (a point repeated in a row counts once), the domain marked from the polygons
 /// (`mark_domain_from_polygons_2()`: the union of the polygons minus their holes), then the
 /// points as generators (`insert_generators_2()`; a point on a constraint becomes a constrained
-/// vertex).
-/// \throws Domain_error naming the file and line: a geometry that crosses itself or an earlier
-///         one (with a triangulation that does not compute intersections), an empty domain,
-///         or a point outside the domain.
+/// vertex, one outside by no more than the default boundary tolerance goes onto the boundary).
+/// A linestring that runs out of the domain (through a boundary vertex: it may not cross the
+/// boundary) constrains the cells with its part in the closed domain; the rest has no effect.
+/// \throws Domain_error naming the file and line, and a polygon's ring as `polygon k, ring r`
+///         (from 0 within the line or feature, ring 0 the exterior): a geometry that crosses
+///         itself or an earlier one (with a triangulation that does not compute
+///         intersections), a hole not inside its polygon's exterior or inside another hole (as
+///         GEOS finds the polygon invalid), an empty domain, a linestring wholly outside the
+///         domain (in another coordinate system, or with x and y swapped?), or a point outside
+///         the domain (the first few named, with how many).
 template <class CDT>
 void insert_wkt(CDT& cdt, const Wkt_data<typename CDT::Geom_traits>& w) {
   using Point_2 = typename CDT::Point_2;
   const auto where = [&w](std::size_t line) { return w.where(line); };
+  // Ring r of polygon i: `polygon k, ring r` after its line or feature, k counting the polygons
+  // of that line or feature, r the rings (0 the exterior), from 0 as GeoJSON's arrays and
+  // shapely's geometries count. Shapely's domain, one item named `polygon`, is named by them.
+  const auto where_ring = [&w](std::size_t i, std::size_t r) {
+    const std::size_t n = w.polygon_lines[i];
+    std::size_t k = 0;
+    while (k < i && w.polygon_lines[i - k - 1] == n) ++k;
+    const std::string ring = "polygon " + std::to_string(k) + ", ring " + std::to_string(r) + ": ";
+    if (n >= 1 && n <= w.item_names.size() && w.item_names[n - 1] == "polygon")
+      return w.source + ": " + ring;
+    return w.where(n) + ring;
+  };
   const auto constrain = [&](const auto& points, bool closed, std::size_t line) {
     std::vector<Point_2> p;
     for (const Point_2& q : points)
@@ -287,11 +308,33 @@ void insert_wkt(CDT& cdt, const Wkt_data<typename CDT::Geom_traits>& w) {
   }
   for (std::size_t i = 0; i < w.polylines.size(); ++i)
     constrain(w.polylines[i], false, w.polyline_lines[i]);
+  internal::check_holes_inside(cdt, w.polygons, where_ring);
   mark_domain_from_polygons_2(cdt, w.polygons);
   if (!internal::has_domain_face(cdt))
     throw Domain_error(w.source + ": the domain is empty: no polygon has an area");
+  typename CDT::Face_handle hint;
+  for (std::size_t i = 0; i < w.polylines.size(); ++i) {
+    if (internal::polyline_meets_domain(cdt, w.polylines[i], hint)) continue;
+    CGAL::Bbox_2 box;
+    for (const auto& pwh : w.polygons) box += pwh.outer_boundary().bbox();
+    throw Domain_error(where(w.polyline_lines[i]) + "the line from " +
+                       internal::to_string(w.polylines[i].front()) + " to " +
+                       internal::to_string(w.polylines[i].back()) +
+                       " lies outside the domain, which spans " +
+                       internal::to_string(Point_2(box.xmin(), box.ymin())) + " to " +
+                       internal::to_string(Point_2(box.xmax(), box.ymax())) +
+                       ": it would constrain nothing (coordinates in another system, or x and y "
+                       "swapped?)");
+  }
   try {
     insert_generators_2(cdt, w.points);
+  } catch (const internal::Generators_outside_error& e) {
+    if (e.index() >= w.point_lines.size()) throw;
+    throw Domain_error(where(w.point_lines[e.index()]) + e.message([&](std::size_t k) {
+      const std::size_t n = w.point_lines[k];
+      return n >= 1 && n <= w.item_names.size() ? w.item_names[n - 1] : "line " + std::to_string(n);
+    }),
+                       e.index());
   } catch (const Domain_error& e) {
     if (e.index() >= w.point_lines.size()) throw;
     throw Domain_error(where(w.point_lines[e.index()]) + e.what(), e.index());

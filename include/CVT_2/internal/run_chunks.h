@@ -3,6 +3,8 @@
 #ifndef CVT_2_INTERNAL_RUN_CHUNKS_H
 #define CVT_2_INTERNAL_RUN_CHUNKS_H
 
+#include <CVT_2/internal/Interrupt_scope.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cfenv>
@@ -230,7 +232,8 @@ class Worker_pool::Scope {
 // taking the next chunk from a counter. The caller gives each chunk its own output, so the
 // result does not depend on which thread ran what. If tasks throw, the exception of the lowest
 // failing chunk is rethrown: chunks below it all run, chunks above it may be skipped, so
-// the exception too is the same whatever the threads.
+// the exception too is the same whatever the threads. The calling thread polls its
+// Interrupt_scope before each chunk it runs, as if the chunk had thrown.
 template <class Task>
 void run_chunks(std::size_t n, unsigned threads, const Task& task) {
   if (threads == 0) threads = hardware_threads();
@@ -238,7 +241,10 @@ void run_chunks(std::size_t n, unsigned threads, const Task& task) {
   // thread gets two chunks or more
   threads = static_cast<unsigned>(std::min<std::size_t>(threads, n / 2));
   if (threads <= 1) {
-    for (std::size_t c = 0; c < n; ++c) task(c);
+    for (std::size_t c = 0; c < n; ++c) {
+      Interrupt_scope::poll();
+      task(c);
+    }
     return;
   }
   std::atomic<std::size_t> next{0}, first_failure{n};
@@ -247,6 +253,7 @@ void run_chunks(std::size_t n, unsigned threads, const Task& task) {
     for (std::size_t c; (c = next.fetch_add(1)) < n;) {
       if (c > first_failure.load()) continue;
       try {
+        Interrupt_scope::poll();  // a no-op on the workers, which have no scope
         task(c);
       } catch (...) {
         errors[c] = std::current_exception();

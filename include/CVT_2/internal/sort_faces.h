@@ -3,6 +3,7 @@
 #ifndef CVT_2_INTERNAL_SORT_FACES_H
 #define CVT_2_INTERNAL_SORT_FACES_H
 
+#include <CVT_2/internal/Interrupt_scope.h>
 #include <CVT_2/internal/prefetch.h>
 
 #include <CGAL/Simple_cartesian.h>
@@ -63,6 +64,7 @@ void sort_faces(CDT& cdt) {
     finite.reserve(n);
     Index j = 0;
     for (auto f = faces.begin(); f != faces.end(); ++f, ++j) {
+      poll_interrupt_sometimes();
       if (cdt.is_infinite(f)) {
         infinite.push_back(j);
         continue;
@@ -74,8 +76,8 @@ void sort_faces(CDT& cdt) {
     }
     CGAL::hilbert_sort(
         finite.begin(), finite.end(),
-        CGAL::Spatial_sort_traits_adapter_2<CGAL::Simple_cartesian<float>,
-                                            CGAL::First_of_pair_property_map<Item>>(),
+        Interruptible_sort_traits_2<CGAL::Spatial_sort_traits_adapter_2<
+            CGAL::Simple_cartesian<float>, CGAL::First_of_pair_property_map<Item>>>(),
         CGAL::Hilbert_sort_median_policy());
     where.reserve(n);
     for (const Item& i : finite) where.push_back(i.second);
@@ -85,8 +87,14 @@ void sort_faces(CDT& cdt) {
   std::vector<Face_handle> slot;
   std::vector<Index> rank(n);
   slot.reserve(n);
-  for (auto f = faces.begin(); f != faces.end(); ++f) slot.push_back(f);
-  for (std::size_t k = 0; k < n; ++k) rank[where[k]] = Index(k);
+  for (auto f = faces.begin(); f != faces.end(); ++f) {
+    poll_interrupt_sometimes();
+    slot.push_back(f);
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    poll_interrupt_sometimes();  // the last poll: from here on the faces change
+    rank[where[k]] = Index(k);
+  }
   // The face in slot i goes to slot rank[i]. After the moves, the face that sits in slot j came
   // from the slot i with rank[i] = j; it carries, in its blinding edge's face (a handle free
   // here: blind tags are stale after an insertion, and cleared below), the new place of the
