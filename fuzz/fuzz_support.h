@@ -132,7 +132,9 @@ inline void check_cells_tile_domain(const Bvd& bvd) {
 
 // The mesh of the diagram: a cell for every vertex with one, the same on one and two threads;
 // no cycle stays at one vertex; a bisector edge is walked the other way by the cell beyond it;
-// and on a well-conditioned triangulation the cell areas sum to the domain's.
+// a cell of positive area by the walk keeps three vertices and positive area (merging points a
+// rounding apart never empties a thin cell); and on a well-conditioned triangulation the cell
+// areas sum to the domain's.
 inline void check_mesh(const Bvd& bvd) {
   using Mesh = CVT_2::Bvd_mesh_2<Bvd>;
   const Mesh mesh(bvd, 1), two(bvd, 2);
@@ -162,6 +164,18 @@ inline void check_mesh(const Bvd& bvd) {
       if (mesh.side(k, j).constraint == Mesh::none) walked[{a, b}] = Mesh::Index(k);
     }
   }
+  std::size_t k = 0;
+  bvd.for_each_cell([&](CDT::Vertex_handle, const auto& cell) {
+    double walked = 0, meshed = 0;
+    for (std::size_t i = 1; i + 1 < cell.size(); ++i)
+      walked += area(cell[0].point, cell[i].point, cell[i + 1].point);
+    const auto c = mesh.cell(k);
+    for (std::size_t j = 1; j + 1 < c.size(); ++j)
+      meshed += area(mesh.point(c[0]), mesh.point(c[j]), mesh.point(c[j + 1]));
+    if (walked > 0 && (c.size() < 3 || !(meshed > 0)))
+      violated("a cell of positive area has none in the mesh", walked, double(c.size()));
+    ++k;
+  });
   for (std::size_t k = 0; k < mesh.number_of_cells(); ++k) {
     const auto c = mesh.cell(k);
     for (std::size_t j = 0; j < c.size(); ++j) {

@@ -1,7 +1,8 @@
 #!/bin/sh
 # Builds the libFuzzer targets with clang in build-fuzz and runs each in turn for
 # SECONDS_PER_TARGET (default 60). The corpus grows in build-fuzz/corpus/<target> (seeded from
-# examples/data), findings land in build-fuzz/findings/<target>, logs in build-fuzz/logs.
+# examples/data; for GeoJSON also test/hostile and Kentucky's counties, alone and in fours),
+# findings land in build-fuzz/findings/<target>, logs in build-fuzz/logs.
 # Replay a finding with: build-fuzz/fuzz/<target> FILE
 set -e
 seconds=${1:-60}
@@ -39,18 +40,38 @@ seed() {  # seed TARGET MAX_BYTES FILE...
 seed fuzz_read_poly 1000000 "$data"/*.poly
 seed fuzz_read_wkt 1000000 "$data"/*.wkt
 seed fuzz_read_points 1000000 "$data"/four_clusters_points.txt
-seed fuzz_pipeline 8192 "$data"/*.poly
+# Small GeoJSON seeds: each county of Kentucky alone, and in fours (shared borders become inner
+# constraints); the whole state exceeds the inputs' length.
+mkdir -p "$build/seeds"
+/usr/bin/python3 - "$data/us_kentucky_counties.geojson" "$build/seeds" <<'PY'
+import json, sys
+features = json.load(open(sys.argv[1]))["features"]
+groups = [[f] for f in features] + [features[i:i + 4] for i in range(0, len(features), 4)]
+for i, parts in enumerate(groups):
+    with open(f"{sys.argv[2]}/kentucky_{i:03d}.geojson", "w") as f:
+        json.dump({"type": "FeatureCollection", "features": parts}, f)
+PY
+seed fuzz_read_geojson 1000000 "$data"/*.geojson "$root"/test/hostile/*.geojson "$build"/seeds/*.geojson
+seed fuzz_pipeline 8192 "$data"/*.poly "$data"/*.wkt "$build"/seeds/*.geojson
 
 status=0
 summary=""
-# The WKT target's dictionary adds the format's keywords to the number spellings.
+# The WKT and GeoJSON targets' dictionaries add the format's keywords to the number spellings;
+# the pipeline's has all three formats'.
 cat "$root/fuzz/numbers.dict" "$root/fuzz/wkt.dict" > "$build/wkt_and_numbers.dict"
-for spec in fuzz_read_poly:16384 fuzz_read_wkt:16384 fuzz_read_points:8192 fuzz_pipeline:8192; do
+cat "$root/fuzz/numbers.dict" "$root/fuzz/json.dict" > "$build/json_and_numbers.dict"
+cat "$root/fuzz/numbers.dict" "$root/fuzz/wkt.dict" "$root/fuzz/json.dict" > "$build/all.dict"
+for spec in fuzz_read_poly:16384 fuzz_read_wkt:16384 fuzz_read_geojson:16384 \
+            fuzz_read_points:8192 fuzz_pipeline:8192; do
   target=${spec%%:*} max_len=${spec#*:}
   echo "running $target for $seconds s"
   log="$build/logs/$target.log"
-  dict="$root/fuzz/numbers.dict"
-  [ "$target" = fuzz_read_wkt ] && dict="$build/wkt_and_numbers.dict"
+  case $target in
+    fuzz_read_wkt) dict="$build/wkt_and_numbers.dict" ;;
+    fuzz_read_geojson) dict="$build/json_and_numbers.dict" ;;
+    fuzz_pipeline) dict="$build/all.dict" ;;
+    *) dict="$root/fuzz/numbers.dict" ;;
+  esac
   start=$(date +%s)
   # One process at a time; a hang is an input that takes over 10 s.
   if "$build/fuzz/$target" "$build/corpus/$target" -max_total_time="$seconds" -max_len="$max_len" \
