@@ -1,7 +1,13 @@
 #!/bin/sh
-# Installs the Debian packages the project needs, if any is missing (apt-get; sudo when not root).
+# Installs the Debian packages the project needs, if any is missing (apt-get; sudo when not root),
+# and those named as arguments; with --only, just those named (the main job's few).
 set -e
-packages="libcgal-dev libboost-dev libgmp-dev libmpfr-dev catch2 nlohmann-json3-dev cmake g++ make ccache python3 python3-shapely python3-meshio python3-numpy python3-dev pybind11-dev python3-pytest python3-matplotlib $*"
+packages="libcgal-dev libboost-dev libgmp-dev libmpfr-dev catch2 nlohmann-json3-dev cmake g++ make ccache python3 python3-shapely python3-meshio python3-numpy python3-dev pybind11-dev python3-pytest python3-matplotlib"
+if [ "$1" = --only ]; then
+  shift
+  packages=""
+fi
+packages="$packages $*"
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

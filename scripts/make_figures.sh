@@ -88,12 +88,12 @@ png 1200 fig.svg "$fig/lloyd_world.png"
 combine row fig.svg lloyd_curved_hole_uniform.svg lloyd_curved_hole_adaptive.svg
 png 1200 fig.svg "$fig/lloyd_curved_hole.png"
 
+# What scripts/run_main_job.sh makes (the README's first picture), with this build's cvt2.
 "$build/tools/cvt2/cvt2" "$data/us_kentucky_counties.geojson" -n 6000 --quiet \
   --geojson kentucky.geojson > /dev/null
 /usr/bin/python3 "$root/scripts/plot_geojson_cells.py" kentucky.geojson \
-  "$data/us_kentucky_counties.geojson" kentucky.png \
-  "cvt2 us_kentucky_counties.geojson -n 6000 --geojson: 7135 cells, coloured by county"
-pngquant --force --output "$fig/kentucky_counties.png" 64 kentucky.png
+  "$data/us_kentucky_counties.geojson" "$fig/kentucky_counties.png" \
+  "cvt2 us_kentucky_counties.geojson -n 6000: {cells} cells, coloured by county"
 
 "$ex/crack_interpolation" crack.txt
 /usr/bin/python3 "$root/scripts/plot_crack_interpolation.py" crack.txt crack.png

@@ -6,7 +6,10 @@
     plot_geojson_cells.py CELLS.geojson REGIONS.geojson OUT.png [TITLE]
 
 REGIONS.geojson: one Polygon or MultiPolygon feature per region (us_kentucky_counties.geojson).
-Needs matplotlib and shapely (Debian: python3-matplotlib python3-shapely)."""
+"{cells}" in TITLE becomes the number of cells. The PNG has 128 colours (a fifth of the bytes,
+as the README shows it). Needs matplotlib and shapely (Debian: python3-matplotlib
+python3-shapely)."""
+import io
 import json
 import sys
 
@@ -16,12 +19,13 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from matplotlib.collections import PatchCollection
 from matplotlib.patches import Polygon as Patch
+from PIL import Image
 from shapely.geometry import Point, shape
 from shapely.prepared import prep
 
 cells_file, regions_file, out = sys.argv[1:4]
-title = sys.argv[4] if len(sys.argv) > 4 else ""
 cells = json.load(open(cells_file))["features"]
+title = sys.argv[4].replace("{cells}", str(len(cells))) if len(sys.argv) > 4 else ""
 regions = [shape(f["geometry"]) for f in json.load(open(regions_file))["features"]]
 prepared = [(g.bounds, prep(g)) for g in regions]
 palette = plt.get_cmap("tab20").colors + plt.get_cmap("tab20b").colors
@@ -54,5 +58,8 @@ ax.set_axis_off()
 if title:
     ax.set_title(title, fontsize=10)
 fig.tight_layout()
-fig.savefig(out)
+png = io.BytesIO()
+fig.savefig(png, format="png")
+image = Image.open(png).convert("RGB")
+image.quantize(128, method=Image.Quantize.FASTOCTREE, dither=Image.Dither.NONE).save(out, optimize=True)
 print(f"{out}: {len(cells)} cells in {len(regions)} regions")
