@@ -413,7 +413,7 @@ TEST_CASE("the virtual star is tagged as Algorithm 1 tags q inserted at any scal
     Cdt cdt = triangulate(poly);
     for (Point& p : generators) p = scaled(p, exponent);
     CVT_2::insert_generators_2(cdt, generators);
-    compare_star_tags(cdt, queries(cdt, 24, seed), count);
+    compare_star_tags(cdt, queries(cdt, 40, seed), count);
   }
   // A grid of nodes, cocircular by fours, with constraints along a diagonal and a grid line:
   // queries at the centers of the squares (on four nodes' circle), on the grid lines, on the
@@ -439,6 +439,32 @@ TEST_CASE("the virtual star is tagged as Algorithm 1 tags q inserted at any scal
   for (const double t : {2.25, 3.5, 5.75})
     q.push_back(scaled(Point(t, t), exponent)), q.push_back(scaled(Point(t - 1, 5), exponent));
   compare_star_tags(grid, q, count);
+  // A mirror image about x = 4: nodes in mirror pairs (cocircular by fours) and on the axis,
+  // constraints that end on the axis (two at one node) or run along it, queries on the axis. A
+  // star face on a mirror pair is isosceles: its way runs along the axis, through the nodes
+  // there, exactly.
+  CVT_2::IO::Poly_data<Point> mirror;
+  add_ring(mirror, {Point(0, 0), Point(8, 0), Point(8, 8), Point(0, 8)});
+  mirror.vertices.insert(mirror.vertices.end(),
+                         {Point(4, 2.5), Point(6, 3), Point(2, 3), Point(4, 5.5), Point(5.5, 7),
+                          Point(4, 6.5), Point(4, 7.5)});
+  for (const std::size_t end : {5, 6}) mirror.segments.push_back({4, end});
+  mirror.segments.push_back({7, 8});
+  mirror.segments.push_back({9, 10});
+  transform(mirror, std::ldexp(1.0, exponent), 0, 0);
+  Cdt symmetric = triangulate(mirror);
+  std::mt19937_64 rng(5);
+  const auto grid64 = [&rng](int lo, int hi) { return support::uniform_int(rng, lo, hi) / 64.0; };
+  nodes.clear(), q.clear();
+  for (int k = 0; k < 40; ++k) {
+    const double x = grid64(16, 255), y = grid64(16, 496);
+    nodes.push_back(scaled(Point(x, y), exponent));
+    nodes.push_back(scaled(Point(8 - x, y), exponent));
+  }
+  for (const double y : {1.0, 4.0, 5.0, 7.0}) nodes.push_back(scaled(Point(4, y), exponent));
+  CVT_2::insert_generators_2(symmetric, nodes);
+  for (int k = 0; k < 60; ++k) q.push_back(scaled(Point(4, grid64(8, 504) + 1 / 128.0), exponent));
+  compare_star_tags(symmetric, q, count);
   INFO("star faces " << count.faces << ", blind " << count.blind << ", ties " << count.ties);
   CHECK(count.blind > count.faces / 20);
 }

@@ -4,6 +4,7 @@
 #ifndef CVT_2_INTERNAL_VIRTUAL_INSERTION_H
 #define CVT_2_INTERNAL_VIRTUAL_INSERTION_H
 
+#include <CVT_2/internal/circumcenter_filters.h>
 #include <CVT_2/internal/construct_cell.h>
 #include <CVT_2/internal/tag_blind_faces.h>
 #include <CVT_2/mark_domain_2.h>
@@ -14,8 +15,9 @@
 #include <boost/container/small_vector.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace CVT_2 {
@@ -142,15 +144,20 @@ class Virtual_insertion {
     }
   }
   bool build_star();
-  void tag_star_face(Star_face& f) const;
-  [[gnu::noinline]] CGAL::Sign exact_side(const Point_2& p, const Point_2& q, const Point_2& r,
-                                          const Point_2& x) const {
-    return m_traits.construct_dual_segment_2_object()(p, q, r).side_of_point(x);
-  }
-  [[gnu::noinline]] CGAL::Sign exact_beyond(const Point_2& p, const Point_2& q, const Point_2& r,
-                                            const Point_2& a, const Point_2& b) const {
-    return m_traits.construct_dual_segment_2_object()(p, q, r).side_of_circumcenter(a, b);
-  }
+  // Algorithm 1 on the star (tag_star_face()) and its steps.
+  class Way;
+  struct Triangle;
+  void tag_star_face(Star_face& face) const;
+  bool sees_circumcenter_nearby(const Star_face& face) const;
+  void walk_to_circumcenter(Star_face& face) const;
+  int exit_edge(const Triangle& t, int entered, const Way& way,
+                std::optional<Vertex_handle>& through) const;
+  Triangle star_triangle(int k) const;
+  Triangle real_triangle(Face_handle f) const;
+  bool is_constrained(const Triangle& t, int i) const;
+  Constraint constraint(const Triangle& t, int i) const;
+  Triangle across(const Triangle& t, int i) const;
+  bool constraint_at(Vertex_handle x, Constraint& out) const;
 
   const CDT* m_cdt;
   Traits m_traits;
@@ -320,270 +327,227 @@ bool Virtual_insertion<Diagram>::build_star() {
   return true;
 }
 
-// The way [g, c) of triangle pqr in floating point, c the circumcenter as the traits build it
-// (off by at most 2^-30 of pqr's shortest side, then rounded), with a bound on the error of each
-// orientation: a sign beyond its bound is exact; the others are left to the exact predicates.
-// The walk of tag_star_face() uses it for the few star faces its tests on the points leave.
-template <class Point_2>
-class Approximate_way {
- public:
-  Approximate_way(const Point_2& p, const Point_2& q, const Point_2& r, const Point_2& c)
-      : m_cx(CGAL::to_double(c.x())), m_cy(CGAL::to_double(c.y())) {
-    const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(q.x()), CGAL::to_double(r.x())};
-    const double y[3] = {CGAL::to_double(p.y()), CGAL::to_double(q.y()), CGAL::to_double(r.y())};
-    m_gx = (x[0] + x[1] + x[2]) / 3, m_gy = (y[0] + y[1] + y[2]) / 3;
-    double shortest = HUGE_VAL, size = 0;
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3;
-      shortest = std::min(shortest, std::abs(x[j] - x[i]) + std::abs(y[j] - y[i]));
-      size += std::abs(x[i]) + std::abs(y[i]);
-    }
-    m_ec = 0x1.0p-29 * shortest + 0x1.0p-51 * (std::abs(m_cx) + std::abs(m_cy));
-    m_eg = 0x1.0p-50 * size;
-  }
-  // The sign of orientation(a, b, c), if sure.
-  bool beyond(const Point_2& a, const Point_2& b, CGAL::Sign& sign) const {
-    const double ax = CGAL::to_double(a.x()), ay = CGAL::to_double(a.y());
-    const double ux = CGAL::to_double(b.x()) - ax, uy = CGAL::to_double(b.y()) - ay;
-    const double wx = m_cx - ax, wy = m_cy - ay;
-    const double o = ux * wy - uy * wx;
-    const double bound = 2 * (std::abs(ux) + std::abs(uy)) * m_ec +
-                         0x1.0p-50 * (std::abs(ux * wy) + std::abs(uy * wx)) + tiny;
-    return sure(o, bound, sign);
-  }
-  // The sign of orientation(g, c, x), if sure.
-  bool side(const Point_2& x, CGAL::Sign& sign) const {
-    const double dx = m_cx - m_gx, dy = m_cy - m_gy;
-    const double ex = CGAL::to_double(x.x()) - m_gx, ey = CGAL::to_double(x.y()) - m_gy;
-    const double o = dx * ey - dy * ex;
-    const double bound =
-        2 * ((std::abs(ex) + std::abs(ey)) * (m_ec + m_eg) + (std::abs(dx) + std::abs(dy)) * m_eg) +
-        0x1.0p-50 * (std::abs(dx * ey) + std::abs(dy * ex)) + tiny;
-    return sure(o, bound, sign);
-  }
-
- private:
-  static constexpr double tiny = 0x1.0p-1000;  // rounding below the normal range
-  static bool sure(double o, double bound, CGAL::Sign& sign) {
-    if (!(std::abs(o) > bound) || !(bound < HUGE_VAL)) return false;  // NaN and overflow too
-    sign = o > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
-    return true;
-  }
-  double m_cx, m_cy, m_gx, m_gy, m_ec, m_eg;
-};
-
-// The signs of the angles of triangle pqr at p, q and r, if sure in floating point: negative
-// where the angle is obtuse, that is where the circumcenter lies strictly beyond the opposite
-// edge. From u = q - p and v = r - p: the dot products u.v, |u|² - u.v and |v|² - u.v.
-template <class Point_2>
-bool angle_signs(const Point_2& p, const Point_2& q, const Point_2& r, CGAL::Sign sign[3]) {
-  const double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y());
-  const double ux = CGAL::to_double(q.x()) - px, uy = CGAL::to_double(q.y()) - py;
-  const double vx = CGAL::to_double(r.x()) - px, vy = CGAL::to_double(r.y()) - py;
-  const double xx = ux * vx, yy = uy * vy, uu = ux * ux + uy * uy, vv = vx * vx + vy * vy;
-  const double dot = xx + yy, cross = std::abs(xx) + std::abs(yy);
-  const double value[3] = {dot, uu - dot, vv - dot};
-  const double bound[3] = {0x1.0p-50 * cross + 0x1.0p-1000, 0x1.0p-50 * (uu + cross) + 0x1.0p-1000,
-                           0x1.0p-50 * (vv + cross) + 0x1.0p-1000};
-  for (int i = 0; i < 3; ++i) {
-    if (!(std::abs(value[i]) > bound[i]) || !(bound[i] < HUGE_VAL)) return false;  // NaN too
-    sign[i] = value[i] > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE;
-  }
-  return true;
-}
-
-// Whether the circumcenter c of the triangle (a, b, w), counterclockwise, lies surely (in
-// floating point) on the left of a -> x: the sign of orientation(a, x, c) is that of
-// |v|² (e.u) - |u|² (e.v), u = b - a, v = w - a, e = x - a, with no circumcenter built. Called
-// from a and from b (then the sign of orientation(x, b, c), as (b, a, w) is clockwise), it says
-// whether c, beyond ab, is in the triangle (b, a, x) across it.
-template <class Point_2>
-bool center_across(const Point_2& a, const Point_2& b, const Point_2& w, const Point_2& x) {
-  const double ox = CGAL::to_double(a.x()), oy = CGAL::to_double(a.y());
-  const double ux = CGAL::to_double(b.x()) - ox, uy = CGAL::to_double(b.y()) - oy;
-  const double vx = CGAL::to_double(w.x()) - ox, vy = CGAL::to_double(w.y()) - oy;
-  const double ex = CGAL::to_double(x.x()) - ox, ey = CGAL::to_double(x.y()) - oy;
-  const double uu = ux * ux + uy * uy, vv = vx * vx + vy * vy;
-  const double value = vv * (ex * ux + ey * uy) - uu * (ex * vx + ey * vy);
-  // Products below the normal range err by 2^-1075 each, then scaled by |u|², |v|²: at most
-  // 2^-1000 unless these exceed 2^70 (the term is built only then, as a subnormal product
-  // would be slow).
-  const double spread = vv + uu;
-  const double bound = 0x1.0p-48 * (vv * (std::abs(ex * ux) + std::abs(ey * uy)) +
-                                    uu * (std::abs(ex * vx) + std::abs(ey * vy))) +
-                       (spread > 0x1.0p70 ? 0x1.0p-1070 * spread : 0x1.0p-1000) + 0x1.0p-1000;
-  return value > bound && bound < HUGE_VAL;
-}
-
-// Algorithm 1 for one face of the star: the first constraint that its way from the centroid g
-// to the circumcenter c meets, found by walking along [g, c) through the triangles it crosses:
-// those of the star, then those of the triangulation around it. A triangle's exit is the edge
-// c lies beyond and the way crosses (by the side of the vertex between two such edges); where
-// the way goes through a vertex, a constraint there meets it (the segments are closed).
+// Algorithm 1 for one face of the star: the first constraint that its way [g, c), from the
+// centroid to the circumcenter, meets (the paper's P, as Bvd_traits_2::Is_blinded_2 asks it of
+// one constraint; the first, as Compare_blinding_distance_2 orders two). Tagging the whole
+// triangulation, tag_blind_faces() starts from each constraint; for one face, a walk along the
+// way through the triangles it crosses finds the first constraint directly (the tests compare
+// the two on q inserted). Most faces need no walk: their circumcenter is in them or just across
+// an open edge.
 template <class Diagram>
 void Virtual_insertion<Diagram>::tag_star_face(Star_face& face) const {
+  face.blind = false;
+  if (!sees_circumcenter_nearby(face)) walk_to_circumcenter(face);
+}
+
+// The common cases, sure in floating point from the points alone: c in the face (no angle
+// obtuse); or c in the triangle across one unconstrained edge, a star face or one of the
+// triangulation: with one angle obtuse (at most one is) and the others acute, the centroid and
+// the circumcenter project into the edge opposite it, so the way crosses that open edge.
+template <class Diagram>
+bool Virtual_insertion<Diagram>::sees_circumcenter_nearby(const Star_face& face) const {
   const Point_2& p0 = m_q;
   const Point_2& p1 = point(face.s);
   const Point_2& p2 = point(face.t);
-  face.blind = false;
-  // The common cases, sure in floating point from the points alone: c in the face (no angle
-  // obtuse); or c in the triangle across one unconstrained edge, a star face or one of the
-  // triangulation.
   CGAL::Sign angle[3];  // at q, s, t: c beyond the rim edge, (t, q), (q, s) if negative
-  if (angle_signs(p0, p1, p2, angle)) {
-    const CGAL::Sign rim = angle[0], after = angle[1], before = angle[2];
-    const int exits =
-        (rim == CGAL::NEGATIVE) + (after == CGAL::NEGATIVE) + (before == CGAL::NEGATIVE);
-    if (exits == 0) return;
-    // The exit edge (a, b) (the face on its left, w its third vertex) and x, the third vertex
-    // of the triangle across it. With one angle obtuse and the others acute, the way crosses
-    // that open edge (the centroid and the circumcenter project into it).
-    const std::size_t n = m_star.size(), k = std::size_t(&face - m_star.data());
-    const Point_2 *a = nullptr, *b = nullptr, *w = nullptr, *x = nullptr;
-    if (after == CGAL::NEGATIVE) {
-      const Star_face& next = m_star[(k + 1) % n];
-      if (!face.constrained_after && next.s == face.t)
-        a = &p2, b = &p0, w = &p1, x = &point(next.t);
-    } else if (before == CGAL::NEGATIVE) {
-      const Star_face& previous = m_star[(k + n - 1) % n];
-      if (!face.constrained_before && previous.t == face.s)
-        a = &p0, b = &p1, w = &p2, x = &point(previous.s);
-    } else if (!face.rim_constrained) {
-      const Face_handle out = face.inner->neighbor(face.index);
-      if (!m_cdt->is_infinite(out) && out->is_inside_domain())
-        a = &p1, b = &p2, w = &p0, x = &out->vertex(out->index(face.inner))->point();
-    }
-    if (exits == 1 && a != nullptr && center_across(*a, *b, *w, *x) &&
-        center_across(*b, *a, *w, *x))
-      return;
+  if (!angle_signs(p0, p1, p2, angle)) return false;
+  // The exit edge (a, b) (the face on its left, w its third vertex) and x, the third vertex of
+  // the triangle across it, if that edge is not constrained.
+  const std::size_t n = m_star.size(), k = std::size_t(&face - m_star.data());
+  const Point_2 *a = nullptr, *b = nullptr, *w = nullptr, *x = nullptr;
+  if (angle[1] == CGAL::NEGATIVE) {
+    const Star_face& next = m_star[(k + 1) % n];
+    if (!face.constrained_after && next.s == face.t) a = &p2, b = &p0, w = &p1, x = &point(next.t);
+  } else if (angle[2] == CGAL::NEGATIVE) {
+    const Star_face& previous = m_star[(k + n - 1) % n];
+    if (!face.constrained_before && previous.t == face.s)
+      a = &p0, b = &p1, w = &p2, x = &point(previous.s);
+  } else if (angle[0] == CGAL::NEGATIVE) {
+    if (face.rim_constrained) return false;
+    const Face_handle out = face.inner->neighbor(face.index);
+    if (!m_cdt->is_infinite(out) && out->is_inside_domain())
+      a = &p1, b = &p2, w = &p0, x = &out->vertex(out->index(face.inner))->point();
+  } else {
+    return true;  // c in the face
   }
-  const Approximate_way<Point_2> approximate(p0, p1, p2, face.center);
-  // where floating point cannot tell, the exact predicates (rare: out of line)
-  const auto side = [&](const Point_2& x) {
-    CGAL::Sign s;
-    return approximate.side(x, s) ? s : exact_side(p0, p1, p2, x);
-  };
-  const auto beyond = [&](const Point_2& a, const Point_2& b) {
-    CGAL::Sign s;
-    return approximate.beyond(a, b, s) ? s : exact_beyond(p0, p1, p2, a, b);
-  };
-  // A triangle the way crosses: a face of the star or of the triangulation, its vertices
-  // counterclockwise (the null handle is q); what lies across each edge is found when asked.
-  struct Triangle {
-    Vertex_handle v[3];
-    int star;  // the face of the star, or -1
-    Face_handle real;
-  };
-  const auto star_triangle = [&](int k) {
-    const Star_face& s = m_star[std::size_t(k)];
-    return Triangle{{Vertex_handle(), s.s, s.t}, k, Face_handle()};
-  };
-  const auto real_triangle = [&](Face_handle f) {
-    return Triangle{{f->vertex(0), f->vertex(1), f->vertex(2)}, -1, f};
-  };
-  // Edge i of a star face: 0 the rim edge, 1 (t, q), 2 (q, s).
-  const auto constrained = [&](const Triangle& t, int i) {
-    if (t.star < 0) return t.real->is_constrained(i);
-    const Star_face& s = m_star[std::size_t(t.star)];
-    return i == 0 ? s.rim_constrained : i == 1 ? s.constrained_after : s.constrained_before;
-  };
-  const auto constraint = [&](const Triangle& t, int i) {
-    if (t.star < 0) return real_constraint(Edge(t.real, i));
-    const Star_face& s = m_star[std::size_t(t.star)];
-    return i == 0 ? real_constraint(Edge(s.inner, s.index)) : half(i == 1 ? s.t : s.s);
-  };
-  const auto across = [&](const Triangle& t, int i) {
-    const int n = int(m_star.size());
-    if (t.star >= 0) {
-      const Star_face& s = m_star[std::size_t(t.star)];
-      if (i == 0) return real_triangle(s.inner->neighbor(s.index));
-      return star_triangle(i == 1 ? (t.star + 1) % n : (t.star + n - 1) % n);
-    }
-    const Face_handle f = t.real->neighbor(i);
-    if (!t.real->is_constrained(i) && in_conflict(f)) {  // into the star: the face of that edge
-      const Vertex_handle a = t.real->vertex(CDT::cw(i)), b = t.real->vertex(CDT::ccw(i));
-      for (int k = 0; k < n; ++k)
-        if (m_star[std::size_t(k)].s == a && m_star[std::size_t(k)].t == b) return star_triangle(k);
-    }
-    return real_triangle(f);
-  };
-  // Which constraint ends at vertex x, in the triangulation with q: the halves at q or at an end
-  // of the split constraint, the others as they are (a tie at x: the first by its far end).
-  const auto constraint_at = [&](Vertex_handle x, Constraint& out) {
-    bool found = false;
-    const auto consider = [&](const Constraint& c, Vertex_handle far) {
-      if (!found ||
-          CGAL::compare_xy(point(far), point(out.a == x ? out.b : out.a)) == CGAL::SMALLER)
-        out = c, found = true;
-    };
-    if (x == Vertex_handle()) {
-      if (m_split_a != Vertex_handle())
-        consider(half(m_split_a), m_split_a), consider(half(m_split_b), m_split_b);
-      return found;
-    }
-    if (x == m_split_a || x == m_split_b) consider(half(x), Vertex_handle());
-    auto ec = m_cdt->incident_edges(x), done = ec;
-    do {
-      const Edge e = *ec;
-      if (!m_cdt->is_constrained(e)) continue;
-      const Constraint c = real_constraint(e);
-      if (ends_equal(c.a, c.b, m_split_a, m_split_b)) continue;  // split: its halves count
-      consider(c, c.a == x ? c.b : c.a);
-    } while (++ec != done);
-    return found;
-  };
+  // c, beyond (a, b), in the triangle (b, a, x): left of a -> x, right of b -> x ((b, a, w) is
+  // clockwise)
+  return a != nullptr && is_circumcenter_surely_left(*a, *b, *w, *x) &&
+         is_circumcenter_surely_left(*b, *a, *w, *x);
+}
 
+// The way [g, c) of a star face, as the walk asks it: Approximate_dual_segment_2 from the
+// circumcenter already built; where it is unsure (rarely), the traits' Dual_segment_2, built at
+// the first such question.
+template <class Diagram>
+class Virtual_insertion<Diagram>::Way {
+ public:
+  Way(const Traits& traits, const Point_2& p, const Point_2& q, const Point_2& r, const Point_2& c)
+      : m_traits(traits), m_p0(p), m_p1(q), m_p2(r), m_approximate(p, q, r, c) {}
+  // The sign of orientation(a, b, c): negative where c lies beyond the directed edge (a, b).
+  CGAL::Sign side_of_circumcenter(const Point_2& a, const Point_2& b) const {
+    CGAL::Sign s;
+    return m_approximate.side_of_circumcenter(a, b, s) ? s : exact().side_of_circumcenter(a, b);
+  }
+  // The sign of orientation(g, c, x): where x lies from the way.
+  CGAL::Sign side_of_point(const Point_2& x) const {
+    CGAL::Sign s;
+    return m_approximate.side_of_point(x, s) ? s : exact().side_of_point(x);
+  }
+
+ private:
+  using Dual_segment = decltype(std::declval<const Traits&>().construct_dual_segment_2_object()(
+      std::declval<const Point_2&>(), std::declval<const Point_2&>(),
+      std::declval<const Point_2&>()));
+  [[gnu::noinline]] const Dual_segment& exact() const {
+    if (!m_exact) m_exact.emplace(m_traits.construct_dual_segment_2_object()(m_p0, m_p1, m_p2));
+    return *m_exact;
+  }
+  const Traits& m_traits;
+  const Point_2 &m_p0, &m_p1, &m_p2;
+  Approximate_dual_segment_2<Point_2> m_approximate;
+  mutable std::optional<Dual_segment> m_exact;
+};
+
+// A triangle the way crosses: a face of the star or of the triangulation, its vertices
+// counterclockwise (the null handle is q). Its edge i is opposite v[i]; for a star face, edge 0
+// is the rim edge, 1 is (t, q), 2 is (q, s).
+template <class Diagram>
+struct Virtual_insertion<Diagram>::Triangle {
+  Vertex_handle v[3];
+  int star;  // the face of the star, or -1
+  Face_handle real;
+};
+
+template <class Diagram>
+auto Virtual_insertion<Diagram>::star_triangle(int k) const -> Triangle {
+  const Star_face& s = m_star[std::size_t(k)];
+  return Triangle{{Vertex_handle(), s.s, s.t}, k, Face_handle()};
+}
+
+template <class Diagram>
+auto Virtual_insertion<Diagram>::real_triangle(Face_handle f) const -> Triangle {
+  return Triangle{{f->vertex(0), f->vertex(1), f->vertex(2)}, -1, f};
+}
+
+template <class Diagram>
+bool Virtual_insertion<Diagram>::is_constrained(const Triangle& t, int i) const {
+  if (t.star < 0) return t.real->is_constrained(i);
+  const Star_face& s = m_star[std::size_t(t.star)];
+  return i == 0 ? s.rim_constrained : i == 1 ? s.constrained_after : s.constrained_before;
+}
+
+// \pre is_constrained(t, i)
+template <class Diagram>
+auto Virtual_insertion<Diagram>::constraint(const Triangle& t, int i) const -> Constraint {
+  if (t.star < 0) return real_constraint(Edge(t.real, i));
+  const Star_face& s = m_star[std::size_t(t.star)];
+  return i == 0 ? real_constraint(Edge(s.inner, s.index)) : half(i == 1 ? s.t : s.s);
+}
+
+// The triangle across edge i of t, in the triangulation with q: a face of the zone is replaced
+// by the face of the star on the same edge.
+template <class Diagram>
+auto Virtual_insertion<Diagram>::across(const Triangle& t, int i) const -> Triangle {
+  const int n = int(m_star.size());
+  if (t.star >= 0) {
+    const Star_face& s = m_star[std::size_t(t.star)];
+    if (i == 0) return real_triangle(s.inner->neighbor(s.index));
+    return star_triangle(i == 1 ? (t.star + 1) % n : (t.star + n - 1) % n);
+  }
+  const Face_handle f = t.real->neighbor(i);
+  if (!t.real->is_constrained(i) && in_conflict(f)) {
+    const Vertex_handle a = t.real->vertex(CDT::cw(i)), b = t.real->vertex(CDT::ccw(i));
+    for (int k = 0; k < n; ++k)
+      if (m_star[std::size_t(k)].s == a && m_star[std::size_t(k)].t == b) return star_triangle(k);
+  }
+  return real_triangle(f);
+}
+
+// Which constraint ends at vertex x, in the triangulation with q: the halves at q or at an end of
+// the split constraint, the others as they are (a tie at x: the first by its far end); false if
+// none does.
+template <class Diagram>
+bool Virtual_insertion<Diagram>::constraint_at(Vertex_handle x, Constraint& out) const {
+  bool found = false;
+  const auto consider = [&](const Constraint& c, Vertex_handle far) {
+    if (!found || CGAL::compare_xy(point(far), point(out.a == x ? out.b : out.a)) == CGAL::SMALLER)
+      out = c, found = true;
+  };
+  if (x == Vertex_handle()) {
+    if (m_split_a != Vertex_handle())
+      consider(half(m_split_a), m_split_a), consider(half(m_split_b), m_split_b);
+    return found;
+  }
+  if (x == m_split_a || x == m_split_b) consider(half(x), Vertex_handle());
+  auto ec = m_cdt->incident_edges(x), done = ec;
+  do {
+    const Edge e = *ec;
+    if (!m_cdt->is_constrained(e)) continue;
+    const Constraint c = real_constraint(e);
+    if (ends_equal(c.a, c.b, m_split_a, m_split_b)) continue;  // split: its halves count
+    consider(c, c.a == x ? c.b : c.a);
+  } while (++ec != done);
+  return found;
+}
+
+// Where the way leaves triangle t, not by the edge it `entered` by (-1: none): the edge c lies
+// beyond that the way crosses (between two such edges, the side of the vertex they share says
+// which), and into `through` a vertex of that edge the way goes through, if it does; -1 if c is
+// in t or on its boundary (seen).
+template <class Diagram>
+int Virtual_insertion<Diagram>::exit_edge(const Triangle& t, int entered, const Way& way,
+                                          std::optional<Vertex_handle>& through) const {
+  through.reset();
+  int candidates[2], n = 0;
+  for (int i = 0; i < 3; ++i)
+    if (i != entered && way.side_of_circumcenter(point(t.v[(i + 1) % 3]),
+                                                 point(t.v[(i + 2) % 3])) == CGAL::NEGATIVE)
+      candidates[n++] = i;
+  if (n == 0) return -1;
+  int exit = candidates[0];
+  if (n == 2) {  // c beyond the vertex x the two edges share
+    const int i = candidates[0], j = candidates[1], x = 3 - i - j;
+    // The edge opposite i runs v[i+1] -> v[i+2]; the way leaves through the one whose first end
+    // is on its left and second on its right.
+    const auto leaves = [&](int e) {
+      return way.side_of_point(point(t.v[(e + 1) % 3])) != CGAL::NEGATIVE &&
+             way.side_of_point(point(t.v[(e + 2) % 3])) != CGAL::POSITIVE;
+    };
+    if (way.side_of_point(point(t.v[x])) == CGAL::ZERO) through = t.v[x];
+    exit = leaves(i) ? i : j;
+  }
+  if (!through)
+    for (const int e : {(exit + 1) % 3, (exit + 2) % 3})
+      if (way.side_of_point(point(t.v[e])) == CGAL::ZERO) through = t.v[e];
+  return exit;
+}
+
+// The walk along the way of a star face, from the face itself, until c is reached (seen) or a
+// constraint is met: one crossed, or one that ends at a vertex the way goes through (the
+// segments are closed, as for Is_blinded_2). On a constrained Delaunay triangulation the way
+// meets no vertex before a constraint (each point of [g, c) is strictly inside the face's
+// circumcircle, where the face sees no vertex), nor comes back into the star.
+template <class Diagram>
+void Virtual_insertion<Diagram>::walk_to_circumcenter(Star_face& face) const {
+  const Way way(m_traits, m_q, point(face.s), point(face.t), face.center);
   Triangle t = star_triangle(int(&face - m_star.data()));
   int entered = -1;
   // a bound against a loop that cannot be (the TDS counts its faces; Triangulation_2 would
   // circulate the hull to leave the infinite ones out)
   const std::size_t most = 4 * (m_cdt->tds().number_of_faces() + m_star.size()) + 16;
+  std::optional<Vertex_handle> through;
   for (std::size_t steps = 0; steps < most; ++steps) {
-    int exit = -1;
-    Vertex_handle through = Vertex_handle();
-    bool through_vertex = false;
-    int candidates[2], n = 0;
-    for (int i = 0; i < 3; ++i) {
-      if (i == entered) continue;
-      const Point_2& a = point(t.v[(i + 1) % 3]);
-      const Point_2& b = point(t.v[(i + 2) % 3]);
-      if (beyond(a, b) == CGAL::NEGATIVE) candidates[n++] = i;
-    }
-    if (n == 0) return;  // c inside the triangle or on its boundary: seen
-    if (n == 1) {
-      exit = candidates[0];
-    } else {  // c beyond the vertex x the two edges share: the side of x says which
-      const int i = candidates[0], j = candidates[1];
-      const int x = 3 - i - j;  // the vertex shared by the edges opposite i and j
-      const CGAL::Sign sx = side(point(t.v[x]));
-      // The edge opposite i runs v[i+1] -> v[i+2]; the way leaves through the one whose first
-      // end is on its left and second on its right.
-      const auto leaves = [&](int e) {
-        return side(point(t.v[(e + 1) % 3])) != CGAL::NEGATIVE &&
-               side(point(t.v[(e + 2) % 3])) != CGAL::POSITIVE;
-      };
-      if (sx == CGAL::ZERO) {
-        through_vertex = true;
-        through = t.v[x];
-      }
-      exit = leaves(i) ? i : j;
-    }
-    // The way may go through an end of the exit edge.
-    if (!through_vertex)
-      for (const int e : {(exit + 1) % 3, (exit + 2) % 3})
-        if (side(point(t.v[e])) == CGAL::ZERO) through_vertex = true, through = t.v[e];
-    if (constrained(t, exit)) {
+    const int exit = exit_edge(t, entered, way, through);
+    if (exit < 0) return;
+    if (is_constrained(t, exit)) {
       face.blind = true;
       face.blinding = constraint(t, exit);
       return;
     }
-    if (through_vertex) {
-      Constraint c;
-      if (constraint_at(through, c)) {
-        face.blind = true;
-        face.blinding = c;
-        return;
-      }
+    if (through && constraint_at(*through, face.blinding)) {
+      face.blind = true;
+      return;
     }
     // Into the triangle across the exit edge, entered through its edge of the same two ends.
     const Vertex_handle ea = t.v[(exit + 1) % 3], eb = t.v[(exit + 2) % 3];
