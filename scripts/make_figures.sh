@@ -1,12 +1,13 @@
 #!/bin/sh
-# Rebuilds the README's figures (doc/fig/*.png) from the examples, each run with its defaults;
-# needs rsvg-convert (Debian: librsvg2-bin), pngquant and python3. Takes about 2 minutes once
-# built. CVT_2_BUILD_DIR: the build directory (default build); JOBS: parallel compile jobs (2).
-# CVT_2_CONVERGENCE_CSV: the CSV the L-BFGS benchmark writes (see the README), drawn as
-# doc/fig/convergence.png by scripts/plot_convergence.py; `make_figures.sh convergence` draws
-# only that one. CVT_2_SPEED_DIR: a directory holding the printed outputs of the speed runs the
-# README lists (lloyd.txt, scaling.txt, scaling_1_thread.txt), drawn as doc/fig/speed.png by
-# scripts/plot_speed.py; `make_figures.sh speed` draws only that one.
+# Rebuilds the figures of the README, the manual and benchmarks/README.md (doc/fig/*.png) from
+# the examples, each run with its defaults; needs rsvg-convert (Debian: librsvg2-bin), pngquant
+# and python3. Takes about 2 minutes once built. CVT_2_BUILD_DIR: the build directory (default
+# build); JOBS: parallel compile jobs (2). CVT_2_CONVERGENCE_CSV: the CSV the L-BFGS benchmark
+# writes (see benchmarks/README.md), drawn as doc/fig/convergence.png by
+# scripts/plot_convergence.py; `make_figures.sh convergence` draws only that one.
+# CVT_2_SPEED_DIR: a directory holding the printed outputs of the speed runs that
+# benchmarks/README.md lists (lloyd.txt, scaling.txt, scaling_1_thread.txt), drawn as
+# doc/fig/speed.png by scripts/plot_speed.py; `make_figures.sh speed` draws only that one.
 set -e
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${CVT_2_BUILD_DIR:-$root/build}
@@ -92,8 +93,7 @@ png 1200 fig.svg "$fig/lloyd_curved_hole.png"
 "$build/tools/cvt2/cvt2" "$data/us_kentucky_counties.geojson" -n 6000 --quiet \
   --geojson kentucky.geojson > /dev/null
 /usr/bin/python3 "$root/scripts/plot_geojson_cells.py" kentucky.geojson \
-  "$data/us_kentucky_counties.geojson" "$fig/kentucky_counties.png" \
-  "cvt2 us_kentucky_counties.geojson -n 6000: {cells} cells, coloured by county"
+  "$data/us_kentucky_counties.geojson" "$fig/kentucky_counties.png"
 
 "$ex/crack_interpolation" crack.txt
 /usr/bin/python3 "$root/scripts/plot_crack_interpolation.py" crack.txt crack.png

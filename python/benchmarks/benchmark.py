@@ -1,6 +1,6 @@
 # Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-"""Benchmark of the Python module cvt2 (not a test): prints the figures of the README's Python
-section, each a median of --runs runs, ratios within one run.
+"""Benchmark of the Python module cvt2 (not a test): prints the figures of the Python
+section of benchmarks/README.md, each a median of --runs runs, ratios within one run.
 
 1. optimize() against the cvt2 program on the same run: 10^5 generators, uniform density, Lloyd,
    20 iterations; the optimization's time as the program prints it (seconds=) and as
