@@ -4,6 +4,7 @@
 #include "support/optimization.h"
 #include "support/support.h"
 
+#include <CVT_2/Cvt_energy_2.h>
 #include <CVT_2/Exact_quadrature_2.h>
 #include <CVT_2/Lbfgs_optimizer_2.h>
 #include <CVT_2/internal/Face_chunks.h>
@@ -132,13 +133,13 @@ TEST_CASE("the gradient 2 m (x - c) equals central differences of the energy", "
     Domain e;
     load_domain(e, "square_inner_constraints.poly");
     CVT_2::insert_generators_2(e.cdt, p);
-    return CVT_2::Lloyd_optimizer_2<Cdt>(e.cdt).evaluate(1).energy;
+    return CVT_2::Cvt_energy_2<Cdt>(e.cdt).evaluate(1).energy;
   };
   CVT_2::insert_generators_2(d.cdt, points);
-  CVT_2::Lloyd_optimizer_2<Cdt> lloyd(d.cdt);
-  lloyd.evaluate(1);
-  std::map<Point, CVT_2::Lloyd_optimizer_2<Cdt>::Free_generator> by_point;
-  for (const auto& g : lloyd.free_generators()) by_point.emplace(g.vertex->point(), g);
+  CVT_2::Cvt_energy_2<Cdt> energy_at_points(d.cdt);
+  energy_at_points.evaluate(1);
+  std::map<Point, CVT_2::Cvt_energy_2<Cdt>::Free_generator> by_point;
+  for (const auto& g : energy_at_points.free_generators()) by_point.emplace(g.vertex->point(), g);
   const double h = 1e-6;
   double largest_error = 0, largest_gradient = 0;
   for (std::size_t j = 0; j < points.size(); j += 10) {

@@ -3,7 +3,9 @@
 #ifndef CVT_2_LBFGS_OPTIMIZER_2_H
 #define CVT_2_LBFGS_OPTIMIZER_2_H
 
-#include <CVT_2/Lloyd_optimizer_2.h>
+#include <CVT_2/Bvd_traits_2.h>
+#include <CVT_2/Cvt_energy_2.h>
+#include <CVT_2/Uniform_density_2.h>
 #include <CVT_2/internal/Lbfgs_history.h>
 #include <CVT_2/internal/move_generators.h>
 #include <CVT_2/internal/run_chunks.h>
@@ -34,7 +36,7 @@ constexpr std::size_t default_lbfgs_memory = 7;  // curvature pairs kept
 /// The energy \f$E(x) = \sum_i \int_{V_i} \rho(y)\|y - x_i\|^2 dy\f$ of the bounded Voronoi
 /// diagram is \f$C^2\f$ almost everywhere, and its gradient for a free generator is
 /// \f$\nabla_i E = 2\,m_i\,(x_i - x_i^*)\f$, with \f$m_i\f$ the mass and \f$x_i^*\f$ the
-/// centroid of its cell: one `Lloyd_optimizer_2::evaluate()` gives both. Constrained
+/// centroid of its cell: one `Cvt_energy_2::evaluate()` gives both. Constrained
 /// generators are fixed. The quasi-Newton direction comes from the last `memory` pairs of
 /// position and gradient differences, with the Lloyd step as preconditioner: the initial
 /// inverse Hessian is \f$\mathrm{diag}(1/(2m_i))\f$, so a step without memory (the first, and
@@ -80,10 +82,10 @@ class Lbfgs_optimizer_2 {
   using Vertex_handle = typename CDT::Vertex_handle;  ///< a generator
   using Density_function = Density;                   ///< the density policy
   using Cell_quadrature = Quadrature;                 ///< the quadrature policy
-  /// the evaluator of energy, centroids and move ratios
-  using Lloyd_optimizer = Lloyd_optimizer_2<CDT, Density, Quadrature, Traits>;
-  using Evaluation = typename Lloyd_optimizer::Evaluation;  ///< what an evaluation found
-  using Diagram = typename Lloyd_optimizer::Diagram;        ///< the diagram it iterates on
+  /// the evaluator of energy, gradient and move ratios
+  using Energy = Cvt_energy_2<CDT, Density, Quadrature, Traits>;
+  using Evaluation = typename Energy::Evaluation;  ///< what an evaluation found
+  using Diagram = typename Energy::Diagram;        ///< the diagram it iterates on
 
   /// Prepares the optimization of `cdt` with at most `memory` curvature pairs (0: every step is
   /// a Lloyd step). Nothing is computed yet.
@@ -91,14 +93,14 @@ class Lbfgs_optimizer_2 {
                              const Quadrature& quadrature = Quadrature(),
                              std::size_t memory = internal::default_lbfgs_memory,
                              const Traits& traits = Traits())
-      : m_cdt(cdt), m_lloyd(cdt, rho, quadrature, traits), m_history(memory) {}
+      : m_cdt(cdt), m_energy(cdt, rho, quadrature, traits), m_history(memory) {}
 
   /// Evaluates the generators where they are (diagram, energy, centroids, move ratios, and so
   /// the gradient), with `resolution` sub-triangles a cell. The memory is kept if they are where
   /// the last `evaluate()` or `step()` left them (a new evaluation at a higher resolution, say),
-  /// and cleared otherwise. \throws Domain_error as `Lloyd_optimizer_2::evaluate()`.
+  /// and cleared otherwise. \throws Domain_error as `Cvt_energy_2::evaluate()`.
   const Evaluation& evaluate(std::size_t resolution) {
-    m_lloyd.evaluate(resolution);
+    m_energy.evaluate(resolution);
     if (!gather(m_trial)) {  // other generators than before: number them again
       number_generators();
       gather(m_trial);
@@ -137,15 +139,15 @@ class Lbfgs_optimizer_2 {
   /// check the moved faces, flip most edges and update the history on; 0 (the default) means one
   /// per core. The results are the same, bit for bit, whatever the number.
   void set_number_of_threads(unsigned n) {
-    m_lloyd.set_number_of_threads(n);
+    m_energy.set_number_of_threads(n);
     m_history.set_number_of_threads(n);
   }
-  unsigned number_of_threads() const { return m_lloyd.number_of_threads(); }  ///< as set
+  unsigned number_of_threads() const { return m_energy.number_of_threads(); }  ///< as set
 
   /// the evaluation of the current point
   const Evaluation& last_evaluation() const { return m_current.evaluation; }
   /// evaluations done so far
-  std::size_t number_of_evaluations() const { return m_lloyd.number_of_evaluations(); }
+  std::size_t number_of_evaluations() const { return m_energy.number_of_evaluations(); }
   std::size_t number_of_steps() const { return m_steps; }  ///< done so far
   /// the steps whose line search failed and that were Lloyd steps instead
   std::size_t number_of_fallbacks() const { return m_fallbacks; }
@@ -154,7 +156,8 @@ class Lbfgs_optimizer_2 {
   std::size_t number_of_restarts() const { return m_restarts; }
   std::size_t memory() const { return m_history.capacity(); }  ///< the most curvature pairs kept
   std::size_t number_of_curvature_pairs() const { return m_history.size(); }  ///< kept now
-  const Diagram& diagram() const { return m_lloyd.diagram(); }                ///< as last evaluated
+  const Energy& energy() const { return m_energy; }                           ///< the evaluator
+  const Diagram& diagram() const { return m_energy.diagram(); }               ///< as last evaluated
   const CDT& triangulation() const { return m_cdt; }                          ///< the triangulation
 
  private:
@@ -191,12 +194,12 @@ class Lbfgs_optimizer_2 {
   void number_generators() {
     m_vertices.clear();
     m_order.clear();
-    const std::size_t n = m_lloyd.free_generators().size();
+    const std::size_t n = m_energy.free_generators().size();
     if (n > std::numeric_limits<std::uint32_t>::max())
       throw std::length_error("L-BFGS numbers its generators in 32 bits: " + std::to_string(n) +
                               " generators are too many");
     m_vertices.reserve(n);
-    for (const auto& f : m_lloyd.free_generators()) m_vertices.push_back(f.vertex);
+    for (const auto& f : m_energy.free_generators()) m_vertices.push_back(f.vertex);
     m_numbers_by_address.resize(n);
     for (std::size_t i = 0; i < n; ++i) m_numbers_by_address[i] = std::uint32_t(i);
     std::sort(m_numbers_by_address.begin(), m_numbers_by_address.end(),
@@ -214,7 +217,7 @@ class Lbfgs_optimizer_2 {
   bool quasi_newton_direction() {
     std::vector<double> d;
     if (!m_history.direction(m_current.g, m_h, d)) return false;
-    const unsigned threads = m_lloyd.number_of_threads();
+    const unsigned threads = m_energy.number_of_threads();
     const double largest = internal::max_of_blocks(d.size(), threads, m_partial,
                                                    [&](std::size_t first, std::size_t last) {
                                                      double l = 0;
@@ -234,7 +237,7 @@ class Lbfgs_optimizer_2 {
   }
 
   // A mass that underflowed to 0 would make the preconditioner infinite.
-  static double mass(const typename Lloyd_optimizer::Free_generator& f) {
+  static double mass(const typename Energy::Free_generator& f) {
     return std::max(CGAL::to_double(f.mass), std::numeric_limits<double>::min());
   }
 
@@ -242,9 +245,9 @@ class Lbfgs_optimizer_2 {
   // index of its first one, on the evaluator's threads: pieces may be visited at once.
   template <class Visit>
   void for_each_piece_of_free_generators(const Visit& visit) const {
-    const auto& generators = m_lloyd.free_generators();
+    const auto& generators = m_energy.free_generators();
     internal::run_chunks(
-        generators.number_of_chunks(), m_lloyd.number_of_threads(),
+        generators.number_of_chunks(), m_energy.number_of_threads(),
         [&](std::size_t c) { visit(generators.chunk_begin(c), generators.chunk(c)); });
   }
 
@@ -252,7 +255,7 @@ class Lbfgs_optimizer_2 {
   // Records the visit order, the order of the next moves.
   bool gather(Iterate& it) {
     const std::size_t n = m_vertices.size();
-    if (m_lloyd.free_generators().size() != n) return false;
+    if (m_energy.free_generators().size() != n) return false;
     if constexpr (!positions_in_x) it.points.resize(n);
     it.x.resize(2 * n);
     it.g.resize(2 * n);
@@ -263,7 +266,7 @@ class Lbfgs_optimizer_2 {
     const bool has_previous = m_previous_order.size() == n;
     m_position.resize(n);
     if (has_previous)
-      internal::for_each_block(n, m_lloyd.number_of_threads(),
+      internal::for_each_block(n, m_energy.number_of_threads(),
                                [&](std::size_t, std::size_t first, std::size_t last) {
                                  for (std::size_t k = first; k < last; ++k)
                                    m_position[m_previous_order[k]] = std::uint32_t(k);
@@ -304,7 +307,7 @@ class Lbfgs_optimizer_2 {
       }
     });
     if (!all_numbered) return false;
-    it.evaluation = m_lloyd.last_evaluation();
+    it.evaluation = m_energy.last_evaluation();
     return true;
   }
 
@@ -323,14 +326,14 @@ class Lbfgs_optimizer_2 {
         m_h[i] = 1 / (2 * mass(f));
       }
     });
-    m_lloyd.m_moves.clear();
+    m_energy.release_free_generators();
   }
   // Frees the trial point (at most one point and the evaluator's list are held besides the
   // current point: a million generators take 32 MB each).
   void drop_trial() { m_trial = Iterate(); }
 
   void evaluate_trial(std::size_t resolution) {
-    m_lloyd.evaluate(resolution);
+    m_energy.evaluate(resolution);
     const bool same = gather(m_trial);  // moves neither add nor remove generators
     CGAL_assertion(same);
     CGAL_USE(same);
@@ -365,9 +368,9 @@ class Lbfgs_optimizer_2 {
   template <class Target>
   std::size_t move_to_targets(const Target& target, std::size_t passes) {
     drop_trial();
-    m_lloyd.m_moves.clear();
+    m_energy.release_free_generators();
     return internal::move_free_vertices(
-        m_cdt, m_lloyd.face_chunks(), m_lloyd.number_of_threads(), m_order,
+        m_cdt, m_energy.face_chunks(), m_energy.number_of_threads(), m_order,
         [this](std::size_t i) { return m_vertices[i]; }, target, passes, m_buffers);
   }
 
@@ -388,7 +391,7 @@ class Lbfgs_optimizer_2 {
       evaluate_trial(resolution);
       // g . s, with the displacement done
       const double slope = internal::sum_of_blocks(
-          2 * n, m_lloyd.number_of_threads(), m_partial, [&](std::size_t first, std::size_t last) {
+          2 * n, m_energy.number_of_threads(), m_partial, [&](std::size_t first, std::size_t last) {
             double acc = 0;
             for (std::size_t j = first; j < last; ++j)
               acc += m_current.g[j] * (m_trial.x[j] - m_current.x[j]);
@@ -403,7 +406,7 @@ class Lbfgs_optimizer_2 {
   }
 
   CDT& m_cdt;
-  Lloyd_optimizer m_lloyd;
+  Energy m_energy;
   internal::Lbfgs_history<float> m_history;
   std::vector<Vertex_handle> m_vertices;            // the free generators, by number
   std::vector<Vertex_handle> m_by_address;          // the same, by_address

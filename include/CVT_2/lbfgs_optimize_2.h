@@ -46,14 +46,15 @@ namespace CVT_2 {
 ///         density is not positive and finite at a point where it is evaluated.
 template <class CDT, class NP = No_named_parameters>
 Optimization_result lbfgs_optimize_2(CDT& cdt, const NP& np = parameters::default_values()) {
-  using Parameters = internal::Optimization_parameters<CDT, NP>;
-  using Optimizer = Lbfgs_optimizer_2<CDT, typename Parameters::Density,
-                                      typename Parameters::Quadrature, typename Parameters::Traits>;
-  const Parameters p(np);
-  internal::lay_out_faces(cdt, p.options);
-  Optimizer lbfgs(cdt, p.density, p.quadrature, p.options.lbfgs_memory, p.traits);
-  lbfgs.set_number_of_threads(p.options.threads);
-  return internal::run_optimization(lbfgs, p.options, "lbfgs");
+  using Policies = internal::Energy_parameters<CDT, NP>;
+  using Optimizer = Lbfgs_optimizer_2<CDT, typename Policies::Density,
+                                      typename Policies::Quadrature, typename Policies::Traits>;
+  const internal::Run_options options = internal::read_run_options(np);
+  const Policies p(np);
+  internal::lay_out_faces(cdt, options);
+  Optimizer lbfgs(cdt, p.density, p.quadrature, options.lbfgs_memory, p.traits);
+  lbfgs.set_number_of_threads(options.threads);
+  return internal::run_optimization(lbfgs, options, "lbfgs");
 }
 
 }  // namespace CVT_2

@@ -277,6 +277,31 @@ void run_chunks(std::size_t n, unsigned threads, const Task& task) {
   if (first_failure.load() < n) std::rethrow_exception(errors[first_failure.load()]);
 }
 
+// Buffers lent to the threads of a pass, one each, and kept for the next pass: big ones are
+// not allocated (and their pages faulted in) again for each chunk. A copy starts empty.
+template <class Buffers>
+class Buffer_pool {
+ public:
+  Buffer_pool() = default;
+  Buffer_pool(const Buffer_pool&) {}
+  Buffer_pool& operator=(const Buffer_pool&) { return *this; }
+  std::unique_ptr<Buffers> take() const {
+    const std::lock_guard<std::mutex> lock(m_mutex);
+    if (m_free.empty()) return std::make_unique<Buffers>();
+    std::unique_ptr<Buffers> b = std::move(m_free.back());
+    m_free.pop_back();
+    return b;
+  }
+  void give_back(std::unique_ptr<Buffers>& b) const {
+    const std::lock_guard<std::mutex> lock(m_mutex);
+    m_free.push_back(std::move(b));
+  }
+
+ private:
+  mutable std::mutex m_mutex;
+  mutable std::vector<std::unique_ptr<Buffers>> m_free;
+};
+
 }  // namespace internal
 }  // namespace CVT_2
 

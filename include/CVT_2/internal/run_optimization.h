@@ -3,11 +3,7 @@
 #ifndef CVT_2_INTERNAL_RUN_OPTIMIZATION_H
 #define CVT_2_INTERNAL_RUN_OPTIMIZATION_H
 
-#include <CVT_2/Bvd_traits_2.h>
-#include <CVT_2/Lloyd_optimizer_2.h>
 #include <CVT_2/Optimization_result.h>
-#include <CVT_2/Sizing_field_density_2.h>
-#include <CVT_2/Uniform_density_2.h>
 #include <CVT_2/internal/run_chunks.h>
 #include <CVT_2/internal/sort_faces.h>
 #include <CVT_2/parameters.h>
@@ -97,45 +93,6 @@ Run_options read_run_options(const NP& np) {
   return o;
 }
 
-// The density of `np`: `density`, or `sizing_field` as 1/mu^4, or uniform.
-template <class K, class NP>
-auto read_density(const NP& np) {
-  using namespace internal_np;
-  static_assert(!(has_parameter<NP, density_t> && has_parameter<NP, sizing_field_t>),
-                "give either density() or sizing_field(), not both");
-  if constexpr (has_parameter<NP, sizing_field_t>)
-    return make_sizing_field_density_2<K>(get_parameter(np, sizing_field_t()));
-  else
-    return choose_parameter(get_parameter(np, density_t()), Uniform_density_2<K>());
-}
-
-// What both optimizers take from their named parameters: the policies, with their types, and
-// the options.
-template <class CDT, class NP>
-struct Optimization_parameters {
-  using K = typename CDT::Geom_traits;
-  using Density = decltype(read_density<K>(std::declval<const NP&>()));
-  using Quadrature = std::decay_t<decltype(internal_np::choose_parameter(
-      internal_np::get_parameter(std::declval<const NP&>(), internal_np::quadrature_t()),
-      Default_quadrature<K, Density>()))>;
-  using Traits = std::decay_t<decltype(internal_np::choose_parameter(
-      internal_np::get_parameter(std::declval<const NP&>(), internal_np::geom_traits_t()),
-      Bvd_traits_2<K>()))>;
-
-  explicit Optimization_parameters(const NP& np)
-      : options(read_run_options(np)),
-        density(read_density<K>(np)),
-        quadrature(internal_np::choose_parameter(
-            internal_np::get_parameter(np, internal_np::quadrature_t()), Quadrature())),
-        traits(internal_np::choose_parameter(
-            internal_np::get_parameter(np, internal_np::geom_traits_t()), Traits())) {}
-
-  Run_options options;
-  Density density;
-  Quadrature quadrature;
-  Traits traits;
-};
-
 // Lays out the faces of a big triangulation that CGAL's own insertion left scattered in
 // memory (insert_generators_2() lays out its own), before a run that may repay it: at 10^6
 // generators an iteration then takes about 3/4 of the time, and the layout costs about three
@@ -195,7 +152,7 @@ void record(const Evaluation& e, std::size_t evaluations, const Run_options& o, 
 
 // The loop both optimizers run. `Optimizer` has evaluate(resolution), which evaluates the
 // generators where they are, and step(resolution), which moves them and evaluates them there;
-// both return a Lloyd_optimizer_2 Evaluation; number_of_evaluations() counts them. It stops by
+// both return a Cvt_energy_2 Evaluation; number_of_evaluations() counts them. It stops by
 // the paper's rule (every move ratio of the last evaluation below the bound, confirmed at the
 // highest resolution) or a limit, and returns the figures of the final points.
 template <class Optimizer>
