@@ -6,7 +6,7 @@
 #include <CVT_2/Cvt_triangulation_2.h>
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/insert_generators_2.h>
-#include <CVT_2/internal/Face_chunks.h>
+#include <CVT_2/internal/parallel/Face_chunks.h>
 #include <CVT_2/mark_domain_2.h>
 
 #include <CGAL/Bbox_2.h>

@@ -11,13 +11,13 @@
 #include <CVT_2/Cvt_triangulation_2.h>
 #include <CVT_2/IO/read_domain.h>
 #include <CVT_2/IO/read_points.h>
-#include <CVT_2/internal/write_number.h>
 #include <CVT_2/natural_neighbor_coordinates_2.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
 #include <cstdlib>
+#include <iomanip>
 #include <iostream>
 #include <string>
 #include <tuple>
@@ -48,10 +48,8 @@ int main(int argc, char* argv[]) {
     const auto m = CVT_2::natural_neighbor_matrix_2(
         bvd, queries, CVT_2::parameters::natural_neighbor_method(method));
 
-    const auto number = [](double x) {
-      CVT_2::internal::write_number(std::cout, x);
-      std::cout << ' ';
-    };
+    std::cout << std::setprecision(17);  // reads back as the same doubles
+    const auto number = [](double x) { std::cout << x << ' '; };
     std::vector<std::tuple<double, double, double>> row;
     for (std::size_t k = 0; k < queries.size(); ++k) {
       row.clear();
@@ -67,7 +65,7 @@ int main(int argc, char* argv[]) {
         std::cout << ' ';
         number(x);
         number(y);
-        CVT_2::internal::write_number(std::cout, w);
+        std::cout << w;
       }
       std::cout << '\n';
     }

@@ -11,9 +11,10 @@
 #include <CVT_2/IO/write_disv.h>
 #include <CVT_2/IO/write_geojson.h>
 #include <CVT_2/IO/write_vtu.h>
+#include <CVT_2/IO/write_wkb.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/insert_generators_2.h>
-#include <CVT_2/internal/Interrupt_scope.h>
+#include <CVT_2/internal/parallel/Interrupt_scope.h>
 #include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/valid_point.h>
 #include <CVT_2/lbfgs_optimize_2.h>
@@ -36,7 +37,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -46,6 +46,7 @@
 #include <numeric>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -769,39 +770,14 @@ struct Diagram {
     return out;
   }
 
-  // The cells as one WKB GeometryCollection (little-endian), each a Polygon of polygons(k) or a
-  // MultiPolygon: what shapely reads in one call, far faster than a Polygon at a time.
+  // The cells as one WKB GeometryCollection: what shapely reads in one call.
   py::bytes wkb() const {
-    std::string out;
-    const auto u32 = [&out](std::uint32_t x) {
-      for (int i = 0; i < 4; ++i) out.push_back(char((x >> (8 * i)) & 0xff));
-    };
-    const auto f64 = [&out](double x) {
-      std::uint64_t bits;
-      std::memcpy(&bits, &x, sizeof bits);
-      for (int i = 0; i < 8; ++i) out.push_back(char((bits >> (8 * i)) & 0xff));
-    };
-    const auto polygon = [&](const std::vector<Index>& ring) {
-      out.push_back(1), u32(3), u32(1), u32(std::uint32_t(ring.size() + 1));
-      for (std::size_t j = 0; j <= ring.size(); ++j) {
-        const Point_2& p = mesh->point(ring[j % ring.size()]);
-        f64(p.x()), f64(p.y());
-      }
-    };
+    std::ostringstream os(std::ios::binary);
     {
       py::gil_scoped_release release;
-      out.push_back(1), u32(7), u32(std::uint32_t(mesh->number_of_cells()));
-      for (std::size_t k = 0; k < mesh->number_of_cells(); ++k) {
-        const auto rings = mesh->polygons(k);
-        if (rings.size() == 1) {
-          polygon(rings[0]);
-          continue;
-        }
-        out.push_back(1), u32(6), u32(std::uint32_t(rings.size()));
-        for (const auto& ring : rings) polygon(ring);
-      }
+      CVT_2::IO::write_wkb(os, *mesh);
     }
-    return py::bytes(out);
+    return py::bytes(os.str());
   }
 
   template <class Writer>

@@ -6,8 +6,8 @@
 
 #include <CVT_2/Cvt_triangulation_2.h>
 #include <CVT_2/Lloyd_optimizer_2.h>
-#include <CVT_2/internal/Face_chunks.h>
-#include <CVT_2/internal/sort_faces.h>
+#include <CVT_2/internal/layout/sort_faces.h>
+#include <CVT_2/internal/parallel/Face_chunks.h>
 
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>

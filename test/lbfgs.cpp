@@ -7,9 +7,9 @@
 #include <CVT_2/Cvt_energy_2.h>
 #include <CVT_2/Exact_quadrature_2.h>
 #include <CVT_2/Lbfgs_optimizer_2.h>
-#include <CVT_2/internal/Face_chunks.h>
 #include <CVT_2/internal/Lbfgs_history.h>
 #include <CVT_2/internal/move_generators.h>
+#include <CVT_2/internal/parallel/Face_chunks.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/random_points_in_domain_2.h>

@@ -6,9 +6,9 @@
 #include "support/support.h"
 
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
-#include <CVT_2/internal/Chunked_list.h>
-#include <CVT_2/internal/Face_chunks.h>
-#include <CVT_2/internal/sort_faces.h>
+#include <CVT_2/internal/layout/sort_faces.h>
+#include <CVT_2/internal/parallel/Chunked_list.h>
+#include <CVT_2/internal/parallel/Face_chunks.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/random_points_in_domain_2.h>

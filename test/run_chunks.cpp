@@ -2,7 +2,7 @@
 // Tests of run_chunks() and the workers a Worker_pool::Scope keeps between passes: every chunk
 // once, the lowest failing chunk's exception, nested and concurrent passes, the caller's
 // floating-point environment, a fork()'s child.
-#include <CVT_2/internal/run_chunks.h>
+#include <CVT_2/internal/parallel/run_chunks.h>
 
 #include <catch2/catch.hpp>
 

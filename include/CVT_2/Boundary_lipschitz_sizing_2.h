@@ -12,7 +12,7 @@
 #include <CGAL/squared_distance_2.h>
 #include <CVT_2/Concepts/BvdFaceBase_2.h>
 #include <CVT_2/exceptions.h>
-#include <CVT_2/internal/double_pair.h>
+#include <CVT_2/internal/layout/double_pair.h>
 #include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/valid_point.h>
 #include <CVT_2/mark_domain_2.h>

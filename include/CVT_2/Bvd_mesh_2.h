@@ -6,7 +6,7 @@
 
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/internal/Bvd_mesh_builder_2.h>
-#include <CVT_2/internal/Handle_numbering.h>
+#include <CVT_2/internal/layout/Handle_numbering.h>
 
 #include <CGAL/number_utils.h>
 

@@ -15,11 +15,11 @@
 #include <CVT_2/Sizing_field_density_2.h>
 #include <CVT_2/Uniform_density_2.h>
 #include <CVT_2/exceptions.h>
-#include <CVT_2/internal/Chunked_list.h>
-#include <CVT_2/internal/Face_chunks.h>
 #include <CVT_2/internal/density_evaluation.h>
 #include <CVT_2/internal/for_each_cell_in_faces.h>
-#include <CVT_2/internal/run_chunks.h>
+#include <CVT_2/internal/parallel/Chunked_list.h>
+#include <CVT_2/internal/parallel/Face_chunks.h>
+#include <CVT_2/internal/parallel/run_chunks.h>
 #include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/valid_point.h>
 #include <CVT_2/parameters.h>

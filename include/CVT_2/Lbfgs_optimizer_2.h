@@ -8,7 +8,7 @@
 #include <CVT_2/Uniform_density_2.h>
 #include <CVT_2/internal/Lbfgs_history.h>
 #include <CVT_2/internal/move_generators.h>
-#include <CVT_2/internal/run_chunks.h>
+#include <CVT_2/internal/parallel/run_chunks.h>
 
 #include <algorithm>
 #include <atomic>

@@ -5,9 +5,9 @@
 #define CVT_2_INSERT_GENERATORS_2_H
 
 #include <CVT_2/exceptions.h>
-#include <CVT_2/internal/Interrupt_scope.h>
+#include <CVT_2/internal/layout/sort_faces.h>
+#include <CVT_2/internal/parallel/Interrupt_scope.h>
 #include <CVT_2/internal/snap_to_boundary.h>
-#include <CVT_2/internal/sort_faces.h>
 #include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/valid_point.h>
 #include <CVT_2/mark_domain_2.h>

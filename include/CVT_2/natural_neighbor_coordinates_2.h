@@ -8,7 +8,7 @@
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/internal/Virtual_insertion.h>
 #include <CVT_2/internal/construct_cell.h>
-#include <CVT_2/internal/run_chunks.h>
+#include <CVT_2/internal/parallel/run_chunks.h>
 #include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/valid_point.h>
 #include <CVT_2/parameters.h>

@@ -5,7 +5,7 @@
 
 #include <CVT_2/Concepts/DensityFunction_2.h>
 #include <CVT_2/exceptions.h>
-#include <CVT_2/internal/Interrupt_scope.h>
+#include <CVT_2/internal/parallel/Interrupt_scope.h>
 #include <CVT_2/parameters.h>
 
 #include <CGAL/Kernel/global_functions.h>

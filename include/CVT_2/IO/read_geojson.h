@@ -3,9 +3,9 @@
 #ifndef CVT_2_IO_READ_GEOJSON_H
 #define CVT_2_IO_READ_GEOJSON_H
 
+#include <CVT_2/IO/internal/line_reader.h>
 #include <CVT_2/IO/read_wkt.h>
 #include <CVT_2/exceptions.h>
-#include <CVT_2/internal/line_reader.h>
 #include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/valid_point.h>
 

@@ -3,7 +3,7 @@
 #ifndef CVT_2_IO_WRITE_GEOJSON_H
 #define CVT_2_IO_WRITE_GEOJSON_H
 
-#include <CVT_2/internal/write_number.h>
+#include <CVT_2/IO/internal/write_number.h>
 
 #include <cstddef>
 #include <fstream>

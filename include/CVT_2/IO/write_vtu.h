@@ -3,8 +3,8 @@
 #ifndef CVT_2_IO_WRITE_VTU_H
 #define CVT_2_IO_WRITE_VTU_H
 
-#include <CVT_2/internal/mesh_outlines.h>
-#include <CVT_2/internal/write_number.h>
+#include <CVT_2/IO/internal/mesh_outlines.h>
+#include <CVT_2/IO/internal/write_number.h>
 
 #include <cstddef>
 #include <fstream>

@@ -5,11 +5,11 @@
 #ifndef CVT_2_INTERNAL_BVD_MESH_BUILDER_2_H
 #define CVT_2_INTERNAL_BVD_MESH_BUILDER_2_H
 
-#include <CVT_2/internal/Face_chunks.h>
-#include <CVT_2/internal/Handle_numbering.h>
 #include <CVT_2/internal/construct_cell.h>
-#include <CVT_2/internal/prefetch.h>
-#include <CVT_2/internal/run_chunks.h>
+#include <CVT_2/internal/layout/Handle_numbering.h>
+#include <CVT_2/internal/layout/prefetch.h>
+#include <CVT_2/internal/parallel/Face_chunks.h>
+#include <CVT_2/internal/parallel/run_chunks.h>
 #include <CVT_2/mark_domain_2.h>
 
 #include <CGAL/number_utils.h>

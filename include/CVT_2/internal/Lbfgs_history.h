@@ -3,7 +3,7 @@
 #ifndef CVT_2_INTERNAL_LBFGS_HISTORY_H
 #define CVT_2_INTERNAL_LBFGS_HISTORY_H
 
-#include <CVT_2/internal/run_chunks.h>
+#include <CVT_2/internal/parallel/run_chunks.h>
 
 #include <algorithm>
 #include <cmath>

@@ -3,8 +3,8 @@
 #ifndef CVT_2_INTERNAL_DELAUNAY_FLIPS_H
 #define CVT_2_INTERNAL_DELAUNAY_FLIPS_H
 
-#include <CVT_2/internal/Face_chunks.h>
-#include <CVT_2/internal/prefetch.h>
+#include <CVT_2/internal/layout/prefetch.h>
+#include <CVT_2/internal/parallel/Face_chunks.h>
 
 #include <CGAL/assertions.h>
 

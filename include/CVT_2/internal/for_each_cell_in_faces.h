@@ -3,7 +3,7 @@
 #ifndef CVT_2_INTERNAL_FOR_EACH_CELL_IN_FACES_H
 #define CVT_2_INTERNAL_FOR_EACH_CELL_IN_FACES_H
 
-#include <CVT_2/internal/prefetch.h>
+#include <CVT_2/internal/layout/prefetch.h>
 
 #include <vector>
 

@@ -3,11 +3,11 @@
 #ifndef CVT_2_INTERNAL_MOVE_GENERATORS_H
 #define CVT_2_INTERNAL_MOVE_GENERATORS_H
 
-#include <CVT_2/internal/Face_chunks.h>
 #include <CVT_2/internal/delaunay_flips.h>
+#include <CVT_2/internal/layout/prefetch.h>
 #include <CVT_2/internal/move_vertex.h>
-#include <CVT_2/internal/prefetch.h>
-#include <CVT_2/internal/run_chunks.h>
+#include <CVT_2/internal/parallel/Face_chunks.h>
+#include <CVT_2/internal/parallel/run_chunks.h>
 
 #include <CGAL/enum.h>
 

@@ -4,8 +4,8 @@
 #define CVT_2_INTERNAL_RUN_OPTIMIZATION_H
 
 #include <CVT_2/Optimization_result.h>
-#include <CVT_2/internal/run_chunks.h>
-#include <CVT_2/internal/sort_faces.h>
+#include <CVT_2/internal/layout/sort_faces.h>
+#include <CVT_2/internal/parallel/run_chunks.h>
 #include <CVT_2/parameters.h>
 
 #include <algorithm>

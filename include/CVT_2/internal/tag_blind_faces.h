@@ -3,7 +3,7 @@
 #ifndef CVT_2_INTERNAL_TAG_BLIND_FACES_H
 #define CVT_2_INTERNAL_TAG_BLIND_FACES_H
 
-#include <CVT_2/internal/Face_chunks.h>
+#include <CVT_2/internal/parallel/Face_chunks.h>
 
 #include <CGAL/enum.h>
 

@@ -4,7 +4,7 @@
 #ifndef CVT_2_INTERNAL_VALID_POINT_H
 #define CVT_2_INTERNAL_VALID_POINT_H
 
-#include <CVT_2/internal/double_pair.h>
+#include <CVT_2/internal/layout/double_pair.h>
 #include <CVT_2/internal/to_string.h>
 
 #include <CGAL/number_utils.h>

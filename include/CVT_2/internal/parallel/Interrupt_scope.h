@@ -1,8 +1,8 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // Interrupt_scope: a check that the long loops call every few milliseconds, so that their caller
 // can stop them by throwing from it (the Python module's Ctrl-C).
-#ifndef CVT_2_INTERNAL_INTERRUPT_SCOPE_H
-#define CVT_2_INTERNAL_INTERRUPT_SCOPE_H
+#ifndef CVT_2_INTERNAL_PARALLEL_INTERRUPT_SCOPE_H
+#define CVT_2_INTERNAL_PARALLEL_INTERRUPT_SCOPE_H
 
 #include <cstdint>
 #include <functional>
@@ -73,4 +73,4 @@ struct Interruptible_sort_traits_2 : Traits {
 }  // namespace internal
 }  // namespace CVT_2
 
-#endif  // CVT_2_INTERNAL_INTERRUPT_SCOPE_H
+#endif  // CVT_2_INTERNAL_PARALLEL_INTERRUPT_SCOPE_H

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // Prefetching walks: the passes over large triangulations are bound by memory latency, so the
 // records a step will read are fetched some steps ahead.
-#ifndef CVT_2_INTERNAL_PREFETCH_H
-#define CVT_2_INTERNAL_PREFETCH_H
+#ifndef CVT_2_INTERNAL_LAYOUT_PREFETCH_H
+#define CVT_2_INTERNAL_LAYOUT_PREFETCH_H
 
 #include <cstddef>
 
@@ -74,4 +74,4 @@ void for_each_star_prefetched(std::size_t n, const VertexAt& vertex, const Visit
 }  // namespace internal
 }  // namespace CVT_2
 
-#endif  // CVT_2_INTERNAL_PREFETCH_H
+#endif  // CVT_2_INTERNAL_LAYOUT_PREFETCH_H

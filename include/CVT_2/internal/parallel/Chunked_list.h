@@ -1,9 +1,9 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // Chunked_list: what the chunks of a parallel pass found, read as one list without a copy.
-#ifndef CVT_2_INTERNAL_CHUNKED_LIST_H
-#define CVT_2_INTERNAL_CHUNKED_LIST_H
+#ifndef CVT_2_INTERNAL_PARALLEL_CHUNKED_LIST_H
+#define CVT_2_INTERNAL_PARALLEL_CHUNKED_LIST_H
 
-#include <CVT_2/internal/run_chunks.h>
+#include <CVT_2/internal/parallel/run_chunks.h>
 
 #include <CGAL/assertions.h>
 
@@ -123,4 +123,4 @@ class Chunked_list {
 }  // namespace internal
 }  // namespace CVT_2
 
-#endif  // CVT_2_INTERNAL_CHUNKED_LIST_H
+#endif  // CVT_2_INTERNAL_PARALLEL_CHUNKED_LIST_H

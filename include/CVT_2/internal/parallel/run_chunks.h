@@ -1,9 +1,9 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // run_chunks: numbered pieces of work on several threads, with a deterministic outcome.
-#ifndef CVT_2_INTERNAL_RUN_CHUNKS_H
-#define CVT_2_INTERNAL_RUN_CHUNKS_H
+#ifndef CVT_2_INTERNAL_PARALLEL_RUN_CHUNKS_H
+#define CVT_2_INTERNAL_PARALLEL_RUN_CHUNKS_H
 
-#include <CVT_2/internal/Interrupt_scope.h>
+#include <CVT_2/internal/parallel/Interrupt_scope.h>
 
 #include <algorithm>
 #include <atomic>
@@ -305,4 +305,4 @@ class Buffer_pool {
 }  // namespace internal
 }  // namespace CVT_2
 
-#endif  // CVT_2_INTERNAL_RUN_CHUNKS_H
+#endif  // CVT_2_INTERNAL_PARALLEL_RUN_CHUNKS_H

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // Numbers in output files: the shortest decimal that reads back as the same double.
-#ifndef CVT_2_INTERNAL_WRITE_NUMBER_H
-#define CVT_2_INTERNAL_WRITE_NUMBER_H
+#ifndef CVT_2_IO_INTERNAL_WRITE_NUMBER_H
+#define CVT_2_IO_INTERNAL_WRITE_NUMBER_H
 
 #include <CGAL/number_utils.h>
 
@@ -23,4 +23,4 @@ void write_number(std::ostream& os, const NT& value) {
 }  // namespace internal
 }  // namespace CVT_2
 
-#endif  // CVT_2_INTERNAL_WRITE_NUMBER_H
+#endif  // CVT_2_IO_INTERNAL_WRITE_NUMBER_H

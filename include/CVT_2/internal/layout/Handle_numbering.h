@@ -1,7 +1,7 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // Handle_numbering: a number for each vertex or face, kept in the record itself when it has room.
-#ifndef CVT_2_INTERNAL_HANDLE_NUMBERING_H
-#define CVT_2_INTERNAL_HANDLE_NUMBERING_H
+#ifndef CVT_2_INTERNAL_LAYOUT_HANDLE_NUMBERING_H
+#define CVT_2_INTERNAL_LAYOUT_HANDLE_NUMBERING_H
 
 #include <cstddef>
 #include <type_traits>
@@ -60,4 +60,4 @@ class Handle_numbering {
 }  // namespace internal
 }  // namespace CVT_2
 
-#endif  // CVT_2_INTERNAL_HANDLE_NUMBERING_H
+#endif  // CVT_2_INTERNAL_LAYOUT_HANDLE_NUMBERING_H

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // A line-by-line tokenizer for the text readers: '#' comments, numbers checked in full.
-#ifndef CVT_2_INTERNAL_LINE_READER_H
-#define CVT_2_INTERNAL_LINE_READER_H
+#ifndef CVT_2_IO_INTERNAL_LINE_READER_H
+#define CVT_2_IO_INTERNAL_LINE_READER_H
 
 #include <CVT_2/exceptions.h>
 
@@ -117,4 +117,4 @@ std::vector<std::array<std::size_t, 2>> repeated_points(const std::vector<Point_
 }  // namespace internal
 }  // namespace CVT_2
 
-#endif  // CVT_2_INTERNAL_LINE_READER_H
+#endif  // CVT_2_IO_INTERNAL_LINE_READER_H

@@ -1,10 +1,10 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // The faces of a triangulation laid out in memory along a Hilbert curve.
-#ifndef CVT_2_INTERNAL_SORT_FACES_H
-#define CVT_2_INTERNAL_SORT_FACES_H
+#ifndef CVT_2_INTERNAL_LAYOUT_SORT_FACES_H
+#define CVT_2_INTERNAL_LAYOUT_SORT_FACES_H
 
-#include <CVT_2/internal/Interrupt_scope.h>
-#include <CVT_2/internal/prefetch.h>
+#include <CVT_2/internal/layout/prefetch.h>
+#include <CVT_2/internal/parallel/Interrupt_scope.h>
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Spatial_sort_traits_adapter_2.h>
@@ -152,4 +152,4 @@ bool faces_are_scattered(const CDT& cdt, std::size_t sample = std::size_t(1) << 
 }  // namespace internal
 }  // namespace CVT_2
 
-#endif  // CVT_2_INTERNAL_SORT_FACES_H
+#endif  // CVT_2_INTERNAL_LAYOUT_SORT_FACES_H

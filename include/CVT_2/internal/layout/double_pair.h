@@ -1,7 +1,7 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // Double_pair: two doubles at once, for the loops over many quadrature points.
-#ifndef CVT_2_INTERNAL_DOUBLE_PAIR_H
-#define CVT_2_INTERNAL_DOUBLE_PAIR_H
+#ifndef CVT_2_INTERNAL_LAYOUT_DOUBLE_PAIR_H
+#define CVT_2_INTERNAL_LAYOUT_DOUBLE_PAIR_H
 
 #include <algorithm>
 #include <cmath>
@@ -108,4 +108,4 @@ inline bool all_positive_finite(const double* v, std::size_t n) {
 }  // namespace internal
 }  // namespace CVT_2
 
-#endif  // CVT_2_INTERNAL_DOUBLE_PAIR_H
+#endif  // CVT_2_INTERNAL_LAYOUT_DOUBLE_PAIR_H

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // The outlines of all cells of a mesh, with the vertices they use numbered anew: what the
 // writers of one-vertex-list-per-cell formats (VTU, DISV) write.
-#ifndef CVT_2_INTERNAL_MESH_OUTLINES_H
-#define CVT_2_INTERNAL_MESH_OUTLINES_H
+#ifndef CVT_2_IO_INTERNAL_MESH_OUTLINES_H
+#define CVT_2_IO_INTERNAL_MESH_OUTLINES_H
 
 #include <cstddef>
 #include <vector>
@@ -33,4 +33,4 @@ struct Mesh_outlines {
 }  // namespace internal
 }  // namespace CVT_2
 
-#endif  // CVT_2_INTERNAL_MESH_OUTLINES_H
+#endif  // CVT_2_IO_INTERNAL_MESH_OUTLINES_H

@@ -1,9 +1,9 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // Face_chunks: the faces of a triangulation cut into runs, in memory order, for parallel passes.
-#ifndef CVT_2_INTERNAL_FACE_CHUNKS_H
-#define CVT_2_INTERNAL_FACE_CHUNKS_H
+#ifndef CVT_2_INTERNAL_PARALLEL_FACE_CHUNKS_H
+#define CVT_2_INTERNAL_PARALLEL_FACE_CHUNKS_H
 
-#include <CVT_2/internal/run_chunks.h>
+#include <CVT_2/internal/parallel/run_chunks.h>
 
 #include <CGAL/assertions.h>
 
@@ -124,4 +124,4 @@ class alignas(cache_line) Face_runs {
 }  // namespace internal
 }  // namespace CVT_2
 
-#endif  // CVT_2_INTERNAL_FACE_CHUNKS_H
+#endif  // CVT_2_INTERNAL_PARALLEL_FACE_CHUNKS_H
