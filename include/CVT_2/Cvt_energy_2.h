@@ -525,16 +525,15 @@ struct Energy_parameters {
       internal_np::get_parameter(std::declval<const NP&>(), internal_np::geom_traits_t()),
       Bvd_traits_2<K>()))>;
 
-  explicit Energy_parameters(const NP& np)
-      : density(read_density<K>(np)),
-        quadrature(internal_np::choose_parameter(
-            internal_np::get_parameter(np, internal_np::quadrature_t()), Quadrature())),
-        traits(internal_np::choose_parameter(
-            internal_np::get_parameter(np, internal_np::geom_traits_t()), Traits())) {}
-
-  Density density;
-  Quadrature quadrature;
-  Traits traits;
+  static Density density(const NP& np) { return read_density<K>(np); }
+  static Quadrature quadrature(const NP& np) {
+    return internal_np::choose_parameter(
+        internal_np::get_parameter(np, internal_np::quadrature_t()), Quadrature());
+  }
+  static Traits traits(const NP& np) {
+    return internal_np::choose_parameter(
+        internal_np::get_parameter(np, internal_np::geom_traits_t()), Traits());
+  }
 };
 
 }  // namespace internal

@@ -50,9 +50,10 @@ Optimization_result lbfgs_optimize_2(CDT& cdt, const NP& np = parameters::defaul
   using Optimizer = Lbfgs_optimizer_2<CDT, typename Policies::Density,
                                       typename Policies::Quadrature, typename Policies::Traits>;
   const internal::Run_options options = internal::read_run_options(np);
-  const Policies p(np);
+  const typename Policies::Density density = Policies::density(np);  // before the layout: may throw
   internal::lay_out_faces(cdt, options);
-  Optimizer lbfgs(cdt, p.density, p.quadrature, options.lbfgs_memory, p.traits);
+  Optimizer lbfgs(cdt, density, Policies::quadrature(np), options.lbfgs_memory,
+                  Policies::traits(np));
   lbfgs.set_number_of_threads(options.threads);
   return internal::run_optimization(lbfgs, options, "lbfgs");
 }

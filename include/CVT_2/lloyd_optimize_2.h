@@ -53,9 +53,9 @@ Optimization_result lloyd_optimize_2(CDT& cdt, const NP& np = parameters::defaul
   using Optimizer = Lloyd_optimizer_2<CDT, typename Policies::Density,
                                       typename Policies::Quadrature, typename Policies::Traits>;
   const internal::Run_options options = internal::read_run_options(np);
-  const Policies p(np);
+  const typename Policies::Density density = Policies::density(np);  // before the layout: may throw
   internal::lay_out_faces(cdt, options);
-  Optimizer lloyd(cdt, p.density, p.quadrature, p.traits);
+  Optimizer lloyd(cdt, density, Policies::quadrature(np), Policies::traits(np));
   lloyd.set_number_of_threads(options.threads);
   return internal::run_optimization(internal::Lloyd_steps<Optimizer>{lloyd}, options, "lloyd");
 }
