@@ -12,6 +12,7 @@
 #include <CVT_2/IO/write_geojson.h>
 #include <CVT_2/IO/write_vtu.h>
 #include <CVT_2/IO/write_wkb.h>
+#include <CVT_2/density_response_2.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/internal/parallel/Interrupt_scope.h>
@@ -39,6 +40,7 @@
 #include <cstdint>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -892,7 +894,8 @@ struct Optimization {
   std::vector<Point_2> points;
   std::vector<std::uint8_t> constrained;
   std::vector<std::int64_t> input_index;  // of each generator: its first input row, or -1
-  std::vector<std::string> notes;         // the points moved onto the boundary
+  std::vector<std::string> notes;         // the points moved onto the boundary, ...
+  double density_response = std::numeric_limits<double>::quiet_NaN();  // density_response_2()
 
   std::shared_ptr<Diagram> diagram(std::int64_t threads) {
     const unsigned t = unsigned(checked_count(threads, "threads"));
@@ -986,6 +989,14 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
       const auto it = row.find(&*v);
       out->input_index.push_back(it == row.end() ? -1 : it->second);
     });
+    if (choice.kind == Density_choice::LIPSCHITZ)
+      out->density_response =
+          CVT_2::density_response_2(bvd, CVT_2::make_sizing_field_density_2<K>(*sizing));
+    else if (choice.kind == Density_choice::CALLABLE)
+      out->density_response =
+          CVT_2::density_response_2(bvd, Python_density{choice.function, false});
+    const std::string note = CVT_2::internal::density_response_note(out->density_response);
+    if (!note.empty()) out->notes.push_back(note);
     out->cdt = std::move(cdt);
   }
   // The final state, which the callback has not seen unless it stopped the run there.
@@ -1114,6 +1125,8 @@ PYBIND11_MODULE(_cvt2, m) {
       .def_property_readonly("input_index",
                              [](const Optimization& o) { return to_array(o.input_index); })
       .def_property_readonly("notes", [](const Optimization& o) { return o.notes; })
+      .def_property_readonly("density_response",
+                             [](const Optimization& o) { return o.density_response; })
       .def("diagram", &Optimization::diagram, py::arg("threads") = 0);
 
   m.def("random_points", &random_points, py::arg("domain"), py::arg("n"), py::arg("seed"),

@@ -5,6 +5,8 @@
 #include <CVT_2/Concepts/SizingField_2.h>
 #include <CVT_2/Sizing_field_density_2.h>
 #include <CVT_2/Uniform_density_2.h>
+#include <CVT_2/density_response_2.h>
+#include <CVT_2/insert_generators_2.h>
 
 #include <algorithm>
 #include <array>
@@ -567,4 +569,52 @@ TEST_CASE("the boundary sizing rejects a bad k or size, no segment, degenerate s
   std::vector<Segment> not_finite = square;
   not_finite.emplace_back(Point(0, 0), Point(not_a_number, 1));
   CHECK_THROWS_AS(Sizing(not_finite, 0.1, 1.0), CVT_2::Domain_error);
+}
+
+TEST_CASE("the density response is the slope of log(area) on log(density): 0, -1/2, NaN, errors",
+          "[density]") {
+  // Generators on grids of the unit square, whose free cells' areas are known: squares of
+  // side 1/m, and of side 1/(2m) on the right half.
+  const auto grid = [](int m, bool finer_right) {
+    std::vector<Point> p;
+    for (int i = 0; i < 2 * m; ++i)
+      for (int j = 0; j < 2 * m; ++j) {
+        const double x = (i + 0.5) / (2 * m), y = (j + 0.5) / (2 * m);
+        if (x > 0.5 && finer_right) p.emplace_back(x, y);
+        if (i % 2 == 0 && j % 2 == 0 && x < 0.5) p.emplace_back(x + 0.25 / m, y + 0.25 / m);
+        if (i % 2 == 0 && j % 2 == 0 && x > 0.5 && !finer_right)
+          p.emplace_back(x + 0.25 / m, y + 0.25 / m);
+      }
+    return p;
+  };
+  const auto response = [](const std::vector<Point>& points, const auto& rho) {
+    Domain d;
+    load_square(d);
+    CVT_2::insert_generators_2(d.cdt, points);
+    return CVT_2::density_response_2(Bvd(d.cdt), rho);
+  };
+  const auto step = [](const Point& p) { return p.x() > 0.5 ? 16.0 : 1.0; };
+  // Cells of one size: no response, whatever the density.
+  CHECK(std::abs(response(grid(10, false), step)) < 0.02);
+  CHECK(std::abs(response(grid(10, false), [](const Point& p) { return std::exp(3 * p.x()); })) <
+        0.02);
+  // A quarter of the area where the density is 16 times larger: -1/2, a CVT's response (to
+  // the cells along the seam, which are neither: about 1/m of them).
+  CHECK(response(grid(20, true), step) == Approx(-0.5).margin(0.02));
+  // The batch member is used, and gives the same.
+  CHECK(response(grid(20, true), CVT_2::make_sizing_field_density_2<K>([](const Point& p) {
+                   return p.x() > 0.5 ? 0.5 : 1.0;
+                 })) == Approx(-0.5).margin(0.02));
+  // Too little variation, or too few cells, to measure.
+  CHECK(std::isnan(response(grid(10, true), [](const Point& p) { return 1 + 0.5 * p.x(); })));
+  CHECK(std::isnan(response({Point(0.3, 0.3), Point(0.6, 0.6)}, step)));
+  // A bad value names its point.
+  CHECK_THROWS_WITH(
+      response(grid(2, false), [](const Point& p) { return p.x() > 0.5 ? -1.0 : 1.0; }),
+      Catch::Contains("the density is -1") && Catch::Contains("at ("));
+  // The note speaks up only for a response above -1/4.
+  CHECK(CVT_2::internal::density_response_note(-0.3).empty());
+  CHECK(CVT_2::internal::density_response_note(not_a_number).empty());
+  CHECK_THAT(CVT_2::internal::density_response_note(-0.03),
+             Catch::Contains("density^-0.03") && Catch::Contains("do not follow the density"));
 }

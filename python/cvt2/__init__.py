@@ -508,7 +508,13 @@ class OptimizeResult:
       iteration, the first before any move; ``max_move_ratio``, ``mean_move_ratio``: the last;
     - ``seconds``: the optimization's time, measured as ``cvt2`` prints ``seconds=``;
     - ``notes``: the points moved onto the boundary (``boundary_tolerance``), as ``cvt2`` notes
-      them: a list of strings, empty if none was;
+      them, and, with a density, a note if the cells do not follow it (``density_response``
+      above -0.25): a list of strings, empty if none;
+    - ``density_response``: with a density, the least-squares slope of log(cell area) against
+      log(density at the generator) over the free generators: about -0.5 for a centroidal
+      tessellation of the density (cell size ~ density**-1/4), 0 for cells of one size, as a
+      uniform start keeps them long after every move ratio is below 1%; NaN without a density
+      or where it varies by less than a factor 2;
     - ``input_index``: int (N,), for each generator, the row of the ``points`` given that it
       started from (the first of rows merged as duplicates), or -1 for a generator of the
       domain's own: ``points[input_index == i]`` is where input row i went.
@@ -530,6 +536,7 @@ class OptimizeResult:
         self.mean_move_ratio_history = impl.mean_move_ratio_history
         self.seconds = impl.seconds
         self.notes = impl.notes
+        self.density_response = impl.density_response
         self.input_index = impl.input_index
 
     @property

@@ -122,6 +122,7 @@ class OptimizeResult:
     mean_move_ratio_history: np.ndarray
     seconds: float
     notes: list[str]
+    density_response: float  # slope of log(area) on log(density): -0.5 at a CVT, NaN uniform
     input_index: np.ndarray  # int (N,), the input row of each generator, -1 for the domain's
     @property
     def normalized_energy(self) -> float: ...

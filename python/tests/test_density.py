@@ -44,8 +44,10 @@ def test_the_density_is_called_with_batches(data):
     assert result.evaluations == 4
     # One call a chunk of cells an evaluation (up to 1024 faces under a quadrature rule): tens of
     # calls, each with the quadrature points of hundreds of cells (about 42 a cell: 7 a fan
-    # triangle, 6 fan triangles a cell on average), the last chunk's fewer.
-    calls_per_evaluation = len(rho.sizes) / result.evaluations
+    # triangle, 6 fan triangles a cell on average), the last chunk's fewer; and one at the end,
+    # at the free generators, for the density response.
+    assert rho.sizes[-1] == np.count_nonzero(~result.constrained)
+    calls_per_evaluation = (len(rho.sizes) - 1) / result.evaluations
     assert calls_per_evaluation == int(calls_per_evaluation) and 10 <= calls_per_evaluation <= 100
     assert sorted(rho.sizes)[len(rho.sizes) // 2] >= 30 * 400
     assert sum(rho.sizes) >= 30 * len(result.points) * result.evaluations
@@ -113,3 +115,37 @@ def test_callback_sees_each_iteration_and_can_stop(square):
         stop.set()
         t.join()
     assert len(ticks) > 10
+
+
+def step(xy):
+    """The issue's step density: 16 on the right half of the 2 x 1 rectangle, 1 on the left."""
+    return np.where(xy[:, 0] > 1.0, 16.0, 1.0)
+
+
+@pytest.fixture
+def rectangle():
+    return cvt2.Domain([[0, 0], [2, 0], [2, 1], [0, 1]], [[0, 1], [1, 2], [2, 3], [3, 0]])
+
+
+def test_cells_that_do_not_follow_the_density_say_so(rectangle):
+    # From uniform points, every move ratio falls below 1% long before the right half has its
+    # share (about 4 times as many cells as the left at a CVT: areas ~ density^-1/2): the
+    # result says "converged", and its density response and a note say what it is.
+    uniform = cvt2.random_points(rectangle, 600, seed=4)
+    result = cvt2.optimize(rectangle, uniform, density=step)
+    assert result.stop_reason == "converged"
+    assert result.density_response > -0.25
+    assert any("do not follow the density" in note for note in result.notes)
+    # From points drawn from the density, the cells follow it: no note, a slope near -1/2.
+    drawn = cvt2.random_points(rectangle, 600, seed=4, density=step)
+    result = cvt2.optimize(rectangle, drawn, density=step)
+    assert result.stop_reason == "converged"
+    assert -0.65 < result.density_response < -0.35
+    assert not any("density" in note for note in result.notes)
+    # Uniform density has no response to measure. The automatic sizing's cells follow it even
+    # from uniform points: its variation is local, within reach of the iteration's moves.
+    assert np.isnan(cvt2.optimize(rectangle, drawn, max_iterations=2).density_response)
+    sizing = dict(density="lipschitz", boundary_size=0.05, lipschitz_k=0.3)
+    lipschitz = cvt2.optimize(rectangle, cvt2.random_points(rectangle, 600), **sizing)
+    assert -0.6 < lipschitz.density_response < -0.4
+    assert not any("density" in note for note in lipschitz.notes)

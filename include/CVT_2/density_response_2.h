@@ -1,0 +1,97 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// density_response_2(): whether the cells of a diagram follow a density, as a centroidal
+// tessellation's do, or still have the sizes of the points they started from.
+#ifndef CVT_2_DENSITY_RESPONSE_2_H
+#define CVT_2_DENSITY_RESPONSE_2_H
+
+#include <CVT_2/Concepts/DensityFunction_2.h>
+#include <CVT_2/internal/density_evaluation.h>
+
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CVT_2 {
+
+/// \ingroup PkgCvt2Ref
+/// How the cells of the free generators of `bvd` follow the density `rho`: the least-squares
+/// slope of log(area of the cell) against log(rho at its generator). The cells of a centroidal
+/// Voronoi tessellation of a density have areas proportional to \f$\rho^{-1/2}\f$ (Gersho's
+/// asymptotics, exact in 2D: their size scales as \f$\rho^{-1/4}\f$), so its slope is about
+/// -1/2; cells of one size have 0. Lloyd iteration and L-BFGS move points across the domain
+/// slowly: from points that do not follow the density (uniform ones under a density of range
+/// 16, say), every move ratio falls below 1% long before the cells have the sizes the density
+/// asks for, and the slope says so. `random_points_in_domain_2()` draws points that follow it.
+///
+/// Returns NaN if fewer than 3 free generators have a cell, or if rho varies by less than a
+/// factor 2 over them (too little to measure). \throws Domain_error if a value of rho is not
+/// positive and finite, naming the point.
+/// \tparam Diagram a `Bounded_voronoi_diagram_2`.
+/// \tparam Density a model of `DensityFunction_2` (one with the batch member is called once).
+template <class Diagram, class Density>
+double density_response_2(const Diagram& bvd, const Density& rho) {
+  using K = typename Diagram::Triangulation::Geom_traits;
+  using Point_2 = typename K::Point_2;
+  using FT = typename K::FT;
+  std::vector<Point_2> generators;
+  std::vector<double> log_areas;
+  bvd.for_each_cell([&](auto v, const auto& cell) {
+    if (!bvd.is_free(v)) return;
+    double twice_area = 0;
+    for (std::size_t i = 0; i < cell.size(); ++i) {
+      const Point_2 &p = cell[i].point, &q = cell[(i + 1) % cell.size()].point;
+      twice_area += CGAL::to_double(p.x() * q.y() - p.y() * q.x());
+    }
+    if (!(twice_area > 0)) return;  // a cell that underflows says nothing
+    generators.push_back(v->point());
+    log_areas.push_back(std::log(twice_area / 2));
+  });
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  if (generators.size() < 3) return none;
+  std::vector<FT> values;
+  if constexpr (has_batch_evaluation_v<Density, K>) {
+    internal::evaluate_in_batch(rho, generators, values);
+  } else {
+    const internal::Checked_density<Density, Point_2> checked{rho};
+    for (const Point_2& p : generators) values.push_back(checked(p));
+  }
+  std::vector<double> log_rho(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) log_rho[i] = std::log(CGAL::to_double(values[i]));
+  const auto [lo, hi] = std::minmax_element(log_rho.begin(), log_rho.end());
+  if (*hi - *lo < std::log(2.0)) return none;
+  const double n = double(log_rho.size());
+  double mean_x = 0, mean_y = 0;
+  for (std::size_t i = 0; i < log_rho.size(); ++i) mean_x += log_rho[i], mean_y += log_areas[i];
+  mean_x /= n, mean_y /= n;
+  double sxy = 0, sxx = 0;
+  for (std::size_t i = 0; i < log_rho.size(); ++i) {
+    sxy += (log_rho[i] - mean_x) * (log_areas[i] - mean_y);
+    sxx += (log_rho[i] - mean_x) * (log_rho[i] - mean_x);
+  }
+  return sxy / sxx;
+}
+
+namespace internal {
+
+// A note for a result whose cells do not follow the density (a slope of density_response_2()
+// above -1/4, half a centroidal tessellation's), empty otherwise.
+inline std::string density_response_note(double slope) {
+  if (!(slope > -0.25)) return {};
+  char s[32];
+  std::snprintf(s, sizeof s, "%.2f", slope);
+  return std::string("the cells do not follow the density: their areas scale as density^") + s +
+         ", a centroidal tessellation's as density^-0.50. The points started far from the "
+         "density's distribution and the iteration moves them across the domain slowly; start "
+         "from points drawn from the density (random_points with the same density)";
+}
+
+}  // namespace internal
+}  // namespace CVT_2
+
+#endif  // CVT_2_DENSITY_RESPONSE_2_H
