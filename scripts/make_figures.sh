@@ -95,6 +95,10 @@ png 1200 fig.svg "$fig/lloyd_curved_hole.png"
 /usr/bin/python3 "$root/scripts/plot_geojson_cells.py" kentucky.geojson \
   "$data/us_kentucky_counties.geojson" "$fig/kentucky_counties.png"
 
+PYTHONPATH="$build/python" /usr/bin/python3 "$root/python/examples/density_response.py" \
+  density_response.png
+pngquant --force --output "$fig/density_response.png" 64 density_response.png
+
 "$ex/crack_interpolation" crack.txt
 /usr/bin/python3 "$root/scripts/plot_crack_interpolation.py" crack.txt crack.png
 pngquant --force --output "$fig/crack_interpolation.png" 64 crack.png
