@@ -237,7 +237,7 @@ def test_bad_input():
     with pytest.raises(cvt2.DomainError, match=r"queries\[1\]: query \(nan, 0.5\) is not finite") as e:
         cvt2.natural_neighbours(domain, nodes, [[0.1, 0.1], [np.nan, 0.5]])
     assert e.value.index == 1
-    with pytest.raises(cvt2.DomainError, match=r"nodes\[1\]: generator \(2, 0\.29*\d*\) lies outside"):
+    with pytest.raises(cvt2.DomainError, match=r"nodes\[1\]: generator \(2, 0\.3\) lies outside"):
         cvt2.natural_neighbours(domain, [[0.5, 0.5], [2, 0.3]], [[0.1, 0.1]])
     with pytest.raises(ValueError, match="method must be 'sibson' or 'laplace', not 'linear'"):
         cvt2.natural_neighbours(domain, nodes, [[0.1, 0.1]], method="linear")
