@@ -580,10 +580,10 @@ TEST_CASE("the density response is the slope of log(area) on log(density): 0, -1
     for (int i = 0; i < 2 * m; ++i)
       for (int j = 0; j < 2 * m; ++j) {
         const double x = (i + 0.5) / (2 * m), y = (j + 0.5) / (2 * m);
-        if (x > 0.5 && finer_right) p.emplace_back(x, y);
-        if (i % 2 == 0 && j % 2 == 0 && x < 0.5) p.emplace_back(x + 0.25 / m, y + 0.25 / m);
-        if (i % 2 == 0 && j % 2 == 0 && x > 0.5 && !finer_right)
-          p.emplace_back(x + 0.25 / m, y + 0.25 / m);
+        if (x > 0.5 && finer_right)
+          p.emplace_back(x, y);  // a fine cell
+        else if (i % 2 == 0 && j % 2 == 0)
+          p.emplace_back(x + 0.25 / m, y + 0.25 / m);  // a coarse one, of four fine ones' place
       }
     return p;
   };

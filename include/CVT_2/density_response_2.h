@@ -7,6 +7,7 @@
 #include <CVT_2/Concepts/DensityFunction_2.h>
 #include <CVT_2/internal/density_evaluation.h>
 
+#include <CGAL/Kernel/global_functions_2.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -43,14 +44,14 @@ double density_response_2(const Diagram& bvd, const Density& rho) {
   std::vector<double> log_areas;
   bvd.for_each_cell([&](auto v, const auto& cell) {
     if (!bvd.is_free(v)) return;
-    double twice_area = 0;
-    for (std::size_t i = 0; i < cell.size(); ++i) {
-      const Point_2 &p = cell[i].point, &q = cell[(i + 1) % cell.size()].point;
-      twice_area += CGAL::to_double(p.x() * q.y() - p.y() * q.x());
-    }
-    if (!(twice_area > 0)) return;  // a cell that underflows says nothing
+    // the fan from the generator, as Bvd_mesh_2::area(): no cancellation far from the origin
+    double area = 0;
+    for (std::size_t i = 0; i < cell.size(); ++i)
+      area +=
+          CGAL::to_double(CGAL::area(v->point(), cell[i].point, cell[(i + 1) % cell.size()].point));
+    if (!(area > 0)) return;  // a cell that underflows says nothing
     generators.push_back(v->point());
-    log_areas.push_back(std::log(twice_area / 2));
+    log_areas.push_back(std::log(area));
   });
   const double none = std::numeric_limits<double>::quiet_NaN();
   if (generators.size() < 3) return none;
