@@ -141,8 +141,8 @@ class Cvt_energy_2 {
   void release_free_generators() { m_moves.clear(); }
   const Diagram& diagram() const { return m_diagram; }  ///< the diagram, as last evaluated
   const CDT& triangulation() const { return m_cdt; }    ///< the triangulation
-  /// \cond internal
-  /// The chunks of faces the last evaluation visited: moves run by the same chunks.
+  /// \cond SKIP_IN_MANUAL
+  // The chunks of faces the last evaluation visited: moves run by the same chunks.
   const internal::Face_chunks<CDT>& face_chunks() const { return m_chunks; }
   /// \endcond
 

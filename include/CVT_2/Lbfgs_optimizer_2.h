@@ -65,7 +65,9 @@ constexpr std::size_t default_lbfgs_memory = 7;  // curvature pairs kept
 /// input gives the same bits.
 ///
 /// \tparam CDT as for `Bounded_voronoi_diagram_2`, with its domain marked.
-/// \tparam Density, Quadrature, Traits the policies of the energy: see `Cvt_energy_2`.
+/// \tparam Density a model of `DensityFunction_2`: the energy's, see `Cvt_energy_2`.
+/// \tparam Quadrature a model of `CellQuadrature_2`: the energy's, see `Cvt_energy_2`.
+/// \tparam Traits a model of `BvdTraits_2`: the energy's, see `Cvt_energy_2`.
 /// \sa `lbfgs_optimize_2()`, which drives it with the paper's stopping rule; `Lloyd_optimizer_2`.
 template <class CDT, class Density = Uniform_density_2<typename CDT::Geom_traits>,
           class Quadrature = internal::Default_quadrature<typename CDT::Geom_traits, Density>,
