@@ -10,6 +10,7 @@
 #include <CVT_2/IO/read_domain.h>
 #include <CVT_2/IO/write_disv.h>
 #include <CVT_2/IO/write_geojson.h>
+#include <CVT_2/IO/write_poly.h>
 #include <CVT_2/IO/write_vtu.h>
 #include <CVT_2/IO/write_wkb.h>
 #include <CVT_2/density_response_2.h>
@@ -23,6 +24,7 @@
 #include <CVT_2/mark_domain_2.h>
 #include <CVT_2/natural_neighbor_coordinates_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
+#include <CVT_2/resample_constraints_2.h>
 #include <CVT_2/version.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -246,6 +248,7 @@ struct Domain {
   std::vector<std::int64_t> segment_items;
   double area = 0;
   std::array<double, 4> bounds{};
+  std::size_t own_cells = 0;  // the vertices of the triangulation with a cell: on the domain
 
   std::unique_ptr<CDT> triangulation() const {
     auto cdt = std::make_unique<CDT>();
@@ -285,6 +288,8 @@ struct Domain {
         add(w.polylines[i], false, w.polyline_lines[i]);
     }
     const auto cdt = triangulation();
+    for (auto v = cdt->finite_vertices_begin(); v != cdt->finite_vertices_end(); ++v)
+      own_cells += CVT_2::internal::has_domain_face(*cdt, v) ? 1 : 0;
     bounds = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     for (auto f = cdt->finite_faces_begin(); f != cdt->finite_faces_end(); ++f) {
       if (!f->is_inside_domain()) continue;
@@ -440,6 +445,69 @@ py::dict domain_arrays(const Domain& d) {
   out["holes"] = to_array(holes);
   out["generators"] = to_array(generators);
   return out;
+}
+
+// The domain with its constraints resampled (resample_constraints_2()) to the size h, or to
+// the size that gives `cells` cells: a new domain described as Triangle's arrays, and what the
+// resampling did.
+py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
+                          std::optional<double> size, std::optional<double> deviation_bound,
+                          double corner_angle, py::handle fixed) {
+  if (cells.has_value() == size.has_value()) throw py::value_error("give one of cells and size");
+  if (cells && *cells == 0) throw py::value_error("cells must be positive, not 0");
+  if (size && !(*size > 0 && std::isfinite(*size)))
+    throw py::value_error("size must be a positive number, not " +
+                          CVT_2::internal::number_to_string(*size));
+  if (deviation_bound && !(*deviation_bound >= 0 && std::isfinite(*deviation_bound)))
+    throw py::value_error("deviation_bound must be a number >= 0, not " +
+                          CVT_2::internal::number_to_string(*deviation_bound));
+  if (!(corner_angle >= 0 && std::isfinite(corner_angle)))
+    throw py::value_error("corner_angle must be a number >= 0, not " +
+                          CVT_2::internal::number_to_string(corner_angle));
+  const std::vector<Point_2> fixed_points =
+      fixed.is_none() ? std::vector<Point_2>() : to_points(fixed, "fixed_points");
+  auto out = std::make_shared<Domain>();
+  CVT_2::Resampling_report r;
+  double h = 0;
+  {
+    py::gil_scoped_release release;
+    const auto cdt = d.triangulation();
+    h = size ? *size : CVT_2::cell_size_for_cells_2(*cdt, *cells);
+    auto np = CVT_2::parameters::corner_angle(corner_angle).fixed_points(fixed_points);
+    r = deviation_bound
+            ? CVT_2::resample_constraints_2(*cdt, h, np.deviation_bound(*deviation_bound))
+            : CVT_2::resample_constraints_2(*cdt, h, np);
+    out->data.description = CVT_2::IO::domain_poly_data(*cdt, "<arrays>");
+    out->data.file.source = d.data.file.source + " (resampled)";
+    out->data.file.format = out->format = "arrays";
+    const auto& poly = std::get<0>(out->data.description);
+    std::vector<bool> on_segment(poly.vertices.size(), false);
+    for (const auto& s : poly.segments) on_segment[s[0]] = on_segment[s[1]] = true;
+    for (const bool b : on_segment) out->data.file.number_of_generators += b ? 0 : 1;
+    out->finish();
+  }
+  py::dict report;
+  report["size"] = h;
+  report["input_vertices"] = r.input_vertices;
+  report["output_vertices"] = r.output_vertices;
+  report["features"] = r.features;
+  report["corners"] = r.corners;
+  report["runs"] = r.runs;
+  report["kept_for_deviation"] = r.kept_for_deviation;
+  report["kept_for_topology"] = r.kept_for_topology;
+  report["max_deviation"] = r.max_deviation;
+  report["area_before"] = r.area_before;
+  report["area_after"] = r.area_after;
+  return py::make_tuple(out, report);
+}
+
+// The number of cells that the size h gives the domain (cells_for_cell_size_2()).
+double domain_cells_for_size(const Domain& d, double h) {
+  if (!(h > 0 && std::isfinite(h)))
+    throw py::value_error("size must be a positive number, not " +
+                          CVT_2::internal::number_to_string(h));
+  py::gil_scoped_release release;
+  return CVT_2::cells_for_cell_size_2(*d.triangulation(), h);
 }
 
 // The description's own points, numbered in Python after the points a call is given:
@@ -1051,13 +1119,17 @@ PYBIND11_MODULE(_cvt2, m) {
       .def_property_readonly("format", [](const Domain& d) { return d.format; })
       .def_property_readonly("source", [](const Domain& d) { return d.data.file.source; })
       .def_property_readonly("area", [](const Domain& d) { return d.area; })
+      .def_property_readonly("own_cells", [](const Domain& d) { return d.own_cells; })
       .def_property_readonly("bounds",
                              [](const Domain& d) {
                                return py::make_tuple(d.bounds[0], d.bounds[1], d.bounds[2],
                                                      d.bounds[3]);
                              })
       .def_property_readonly("notes", [](const Domain& d) { return d.data.file.repeated; })
-      .def("arrays", &domain_arrays);
+      .def("arrays", &domain_arrays)
+      .def("resample", &domain_resample, py::arg("cells"), py::arg("size"),
+           py::arg("deviation_bound"), py::arg("corner_angle"), py::arg("fixed_points"))
+      .def("cells_for_size", &domain_cells_for_size, py::arg("size"));
 
   py::class_<Diagram, std::shared_ptr<Diagram>>(m, "Diagram")
       .def_property_readonly("points", [](const Diagram& d) { return to_array(d.points, 2); })

@@ -1,5 +1,6 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// The conforming mesh of the diagram and the readers and writers around it.
+// The conforming mesh of the diagram and the readers and writers around it; the domain's
+// constraints resampled before it.
 #include "support/random_domain.h"
 #include "support/support.h"
 
@@ -9,15 +10,21 @@
 #include <CVT_2/IO/read_geojson.h>
 #include <CVT_2/IO/write_disv.h>
 #include <CVT_2/IO/write_geojson.h>
+#include <CVT_2/IO/write_poly.h>
 #include <CVT_2/IO/write_triangle.h>
 #include <CVT_2/IO/write_vtu.h>
+#include <CVT_2/resample_constraints_2.h>
 
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
+#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -631,4 +638,189 @@ TEST_CASE("the writers: DISV counts and clockwise cells, VTU cells, Triangle's e
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
     triangles += f->is_inside_domain() ? 1 : 0;
   CHECK_THAT(ele.str(), Catch::StartsWith(std::to_string(triangles) + " 3 0\n"));
+}
+
+// --- the domain's constraints resampled to a cell size --------------------------------------
+
+namespace {
+
+struct Input_polylines {
+  std::vector<Segment> segments;  // the constrained edges
+  std::vector<Point> vertices;    // their vertices
+  std::set<Point> junctions;      // vertices of one or of three or more edges
+  std::vector<Point> generators;  // vertices on no constraint
+};
+
+Input_polylines input_polylines(const Cdt_ids& cdt) {
+  Input_polylines in;
+  std::map<Point, int> degree;
+  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
+    if (cdt.is_constrained(*e)) {
+      in.segments.push_back(cdt.segment(*e));
+      ++degree[in.segments.back().source()], ++degree[in.segments.back().target()];
+    }
+  for (const auto& [p, d] : degree) {
+    in.vertices.push_back(p);
+    if (d != 2) in.junctions.insert(p);
+  }
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    if (degree.count(v->point()) == 0) in.generators.push_back(v->point());
+  return in;
+}
+
+double distance_to(const Point& p, const std::vector<Segment>& segments) {
+  double d = std::numeric_limits<double>::infinity();
+  for (const Segment& s : segments) d = std::min(d, CGAL::squared_distance(p, s));
+  return std::sqrt(d);
+}
+
+bool in_domain(const Cdt_ids& cdt, const Point& p) {
+  const auto f = cdt.locate(p);
+  return !cdt.is_infinite(f) && f->is_inside_domain();
+}
+
+// Every property resample_constraints_2() promises, against the triangulation before it: the new
+// constrained vertices on the input polylines (to rounding), the junctions and ends kept, every
+// input vertex within the bound of the new polylines, the generators kept, and every point
+// farther than the bound from the input on the same side as before.
+void check_resampling(const Cdt_ids& before, const Cdt_ids& after, double h, double bound,
+                      const CVT_2::Resampling_report& r) {
+  const Input_polylines in = input_polylines(before), out = input_polylines(after);
+  const CGAL::Bbox_2 box = domain_bbox(before);
+  const double scale = std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+  std::size_t off_input = 0, lost_junctions = 0, too_far = 0, lost_generators = 0;
+  for (const Point& p : out.vertices) off_input += distance_to(p, in.segments) > 1e-14 * scale;
+  for (const Point& p : in.junctions)
+    lost_junctions += !std::binary_search(out.vertices.begin(), out.vertices.end(), p);
+  double deviation = 0;
+  for (const Point& p : in.vertices) deviation = std::max(deviation, distance_to(p, out.segments));
+  too_far += deviation > bound * (1 + 1e-12);
+  for (const Point& g : in.generators)
+    lost_generators +=
+        std::find(out.generators.begin(), out.generators.end(), g) == out.generators.end() ||
+        in_domain(before, g) != in_domain(after, g);
+  CHECK(off_input == 0);
+  CHECK(lost_junctions == 0);
+  CHECK(too_far == 0);
+  CHECK(deviation <= r.max_deviation + 1e-12 * scale);
+  CHECK(lost_generators == 0);
+  CHECK(r.input_vertices == in.vertices.size());
+  CHECK(r.output_vertices == out.vertices.size());
+  CHECK(r.area_before == Approx(domain_area(before)));
+  CHECK(r.area_after == Approx(domain_area(after)));
+  // Points clear of the input by more than the bound keep their side.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> x(box.xmin(), box.xmax()), y(box.ymin(), box.ymax());
+  std::size_t sampled = 0, changed = 0;
+  while (sampled < 400) {
+    const Point p(x(rng), y(rng));
+    if (distance_to(p, in.segments) <= bound * (1 + 1e-9)) continue;
+    ++sampled;
+    changed += in_domain(before, p) != in_domain(after, p);
+  }
+  CHECK(changed == 0);
+  (void)h;
+}
+
+}  // namespace
+
+TEST_CASE("resampled constraints lie on the input, keep its junctions, bound and sides",
+          "[resample]") {
+  for (const std::string file :
+       {"france_mainland.poly", "world_land_110m.wkt", "us_kentucky_counties.wkt",
+        "us_massachusetts_counties.wkt", "earcut_dude.poly", "four_clusters.poly"})
+    for (const std::size_t cells : {300, 3000}) {
+      INFO(file << " at " << cells << " cells");
+      Cdt_ids before;
+      CVT_2::IO::read_domain(data_path(file), before);
+      const double h = CVT_2::cell_size_for_cells_2(before, cells);
+      Cdt_ids after = before;
+      const auto r = CVT_2::resample_constraints_2(after, h);
+      check_resampling(before, after, h, h / 4, r);
+      CHECK(r.output_vertices <= r.input_vertices);
+      // Its description read back (Triangle's rule, hole points) marks the same domain.
+      auto poly = CVT_2::IO::domain_poly_data(after);
+      const Cdt_ids described = triangulate(poly);
+      CHECK(domain_area(described) == Approx(domain_area(after)).epsilon(1e-12));
+      CHECK(described.number_of_vertices() == after.number_of_vertices());
+      std::size_t differ = 0;
+      for (auto f = after.finite_faces_begin(); f != after.finite_faces_end(); ++f)
+        differ += in_domain(described, CGAL::centroid(after.triangle(f))) != f->is_inside_domain();
+      CHECK(differ == 0);
+      // The cells of the resampled domain tile it.
+      CVT_2::insert_generators_2(
+          after, CVT_2::random_points_in_domain_2(after, 200, CVT_2::parameters::random_seed(3)));
+      check_invariants(after, snapshot_marks(after), 100);
+    }
+}
+
+TEST_CASE(
+    "resampling drops a coastline's jags, keeps its corners, islands and the sides of "
+    "points in a bay",
+    "[resample]") {
+  // A square whose bottom edge is a saw of 400 teeth 1e-3 high, a cape on its top edge lower
+  // than the deviation bound with a generator in it, a tiny square island with a tinier one in
+  // it, a wavy crack, and a pinned vertex on it.
+  CVT_2::IO::Poly_data<Point> poly;
+  std::vector<Point> outer;
+  for (int i = 0; i <= 400; ++i) outer.emplace_back(i / 400.0, (i % 2) * 1e-3);
+  outer.insert(outer.end(),
+               {Point(1, 1), Point(0.55, 1), Point(0.5, 1.02), Point(0.45, 1), Point(0, 1)});
+  add_ring(poly, outer);
+  add_ring(poly, {Point(0.3, 0.3), Point(0.301, 0.3), Point(0.301, 0.301), Point(0.3, 0.301)});
+  add_ring(poly, {Point(0.3005, 0.3004), Point(0.3006, 0.3005), Point(0.3005, 0.3006)});  // in it
+  const std::size_t crack = poly.vertices.size();
+  for (int i = 0; i <= 40; ++i)
+    poly.vertices.emplace_back(0.6 + i * 0.005, 0.5 + 0.01 * std::sin(i));
+  for (std::size_t i = crack; i + 1 < poly.vertices.size(); ++i)
+    poly.segments.push_back({i, i + 1});
+  poly.vertices.emplace_back(0.5, 1.01);  // a generator in the cape
+  Cdt_ids before = triangulate(poly);
+  const Point pinned = poly.vertices[crack + 20];
+  const double h = 0.1;
+  Cdt_ids after = before;
+  const auto r = CVT_2::resample_constraints_2(
+      after, h, CVT_2::parameters::fixed_points(std::vector<Point>{pinned}));
+  check_resampling(before, after, h, h / 4, r);
+  const Input_polylines out = input_polylines(after);
+  const auto kept = [&](const Point& p) {
+    return std::binary_search(out.vertices.begin(), out.vertices.end(), p);
+  };
+  CHECK(kept(Point(1, 1)));  // corners
+  CHECK(kept(Point(0, 1)));
+  CHECK(kept(Point(0, 0)));
+  CHECK(kept(Point(1, 0)));
+  CHECK(kept(pinned));
+  CHECK(kept(poly.vertices[crack]));  // the crack's ends
+  CHECK(kept(poly.vertices[crack + 40]));
+  // The saw keeps about one point a cell size, not its 401 vertices; the islands three each.
+  CHECK(r.output_vertices < 60);
+  std::size_t island = 0;
+  for (const Point& p : out.vertices)
+    island += p.x() > 0.29 && p.x() < 0.31 && p.y() > 0.29 && p.y() < 0.31;
+  CHECK(island >= 6);
+  CHECK(r.max_deviation <= h / 4);
+  // Nothing is kept a second time: resampling what was resampled changes nothing.
+  Cdt_ids again = after;
+  const auto r2 = CVT_2::resample_constraints_2(
+      again, h, CVT_2::parameters::fixed_points(std::vector<Point>{pinned}));
+  CHECK(r2.output_vertices == r.output_vertices);
+}
+
+TEST_CASE("a size from a number of cells, and back", "[resample]") {
+  Cdt_ids cdt;
+  CVT_2::IO::read_domain(data_path("france_mainland.poly"), cdt);
+  for (const std::size_t n : {100, 2000, 50000}) {
+    const double h = CVT_2::cell_size_for_cells_2(cdt, n);
+    CHECK(CVT_2::cells_for_cell_size_2(cdt, h) == Approx(double(n)).epsilon(1e-12));
+  }
+  // The unit square: A / (sqrt(3)/2 h^2) + 4 / (2 h) cells.
+  CVT_2::IO::Poly_data<Point> unit;
+  add_ring(unit, {{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  Cdt_ids square = triangulate(unit);
+  const double h = 0.05;
+  CHECK(CVT_2::cells_for_cell_size_2(square, h) ==
+        Approx(1 / (std::sqrt(3.0) / 2 * h * h) + 2 / h));
+  CHECK_THROWS_AS(CVT_2::cell_size_for_cells_2(square, 0), CVT_2::Domain_error);
+  CHECK_THROWS_AS(CVT_2::resample_constraints_2(square, -1.0), CVT_2::Domain_error);
 }

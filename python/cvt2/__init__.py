@@ -242,6 +242,58 @@ class Domain:
         WKT and GeoJSON points), which every call inserts before the points it is given."""
         return self._arrays["generators"]
 
+    @property
+    def own_cells(self) -> int:
+        """How many cells the domain's own vertices and generators have (those on or in the
+        domain): what :func:`random_points` subtracts from ``cells``."""
+        return self._impl.own_cells
+
+    #: What :meth:`resample` did (a dict), or None for a domain it did not make.
+    resampling = None
+
+    def resample(
+        self, *, cells=None, size=None, deviation_bound=None, corner_angle=30.0, fixed_points=None
+    ) -> "Domain":
+        """A new domain, its polylines resampled to a cell size, so that a finely digitised
+        boundary does not give a speck of a cell at each of its vertices (``cvt2 --boundary
+        resample``). Each polyline (rings, holes, inner constraints) is cut at its features,
+        which stay: junctions, ends of open lines, ``fixed_points``, and corners (a turn of more
+        than ``corner_angle`` degrees seen a cell size away on either side); between them its
+        vertices are replaced by points on it about a cell size apart, never more points than
+        it had. An input vertex is kept where a chord would leave the input by more than
+        ``deviation_bound`` (default a quarter of the size) or change the topology (cross a
+        line, cut off a point or a generator). Generators and the domain's marks stay.
+
+        - ``size``: the cell size ``H``, the spacing of a hexagonal tiling (a cell of area
+          ``sqrt(3)/2 H**2``); or
+        - ``cells``: how many cells in all: the size ``H`` that solves
+          ``area / (sqrt(3)/2 H**2) + boundary_length / (2 H) = cells``; then
+          ``random_points(d, cells=cells)`` fills the domain up to that count.
+
+        The new domain is described by arrays (:attr:`vertices`, :attr:`segments`,
+        :attr:`holes`); its ``resampling`` is a dict: ``size``, ``input_vertices``,
+        ``output_vertices``, ``features``, ``corners``, ``runs``, ``kept_for_deviation``,
+        ``kept_for_topology``, ``max_deviation`` (the largest distance from an input vertex to
+        the new polylines), ``area_before``, ``area_after``.
+        """
+        if (cells is None) == (size is None):
+            raise TypeError("give one of cells and size")
+        impl, report = self._impl.resample(
+            None if cells is None else _count(cells, "cells"),
+            None if size is None else float(size),
+            None if deviation_bound is None else float(deviation_bound),
+            float(corner_angle),
+            fixed_points,
+        )
+        d = Domain._wrap(impl)
+        d.resampling = report
+        return d
+
+    def cells_for_size(self, size) -> float:
+        """How many cells the cell size ``size`` gives this domain once resampled to it:
+        ``area / (sqrt(3)/2 size**2) + boundary_length / (2 size)``, not rounded."""
+        return self._impl.cells_for_size(float(size))
+
     def __repr__(self):
         return (
             f"<cvt2.Domain {self.format} {self.source!r}: area {self.area:.6g}, "
@@ -266,12 +318,17 @@ def _count(value, name, below=2**63):
     return int(value)
 
 
-def random_points(domain, n, seed=1, density=None, *, lipschitz_k=0.1, boundary_size=None):
+def random_points(
+    domain, n=None, seed=1, density=None, *, lipschitz_k=0.1, boundary_size=None, cells=None
+):
     """``n`` random points in ``domain``: the same bits as ``cvt2 DOMAIN -n N --seed S`` draws
     them (with ``--density lipschitz`` for ``density="lipschitz"``).
 
     - ``domain``: a :class:`Domain`;
-    - ``n``: how many points (an integer >= 0);
+    - ``n``: how many points (an integer >= 0); or
+    - ``cells``: how many cells in all, the domain's own vertices' included: ``n`` is
+      ``cells - domain.own_cells`` (``cvt2 --cells``; with :meth:`Domain.resample`, cells of
+      the size asked for);
     - ``seed``: the seed (an integer, 0 to 2**64 - 1): the same seed gives the same points on
       every platform;
     - ``density``: the density the points will be optimized under (:func:`optimize`'s
@@ -283,6 +340,16 @@ def random_points(domain, n, seed=1, density=None, *, lipschitz_k=0.1, boundary_
 
     Returns a float64 array (n, 2).
     """
+    if (n is None) == (cells is None):
+        raise TypeError("give one of n and cells")
+    if cells is not None:
+        cells = _count(cells, "cells")
+        if cells < domain.own_cells:
+            raise ValueError(
+                f"cells={cells} is fewer than the {domain.own_cells} cells of the domain's own "
+                "vertices (Domain.resample spaces them to a cell size)"
+            )
+        n = cells - domain.own_cells
     n = _count(n, "n")
     seed = _count(seed, "seed", below=None)
     if seed >= 2**64:

@@ -49,15 +49,29 @@ class Domain:
     def holes(self) -> np.ndarray: ...  # float (H, 2)
     @property
     def generators(self) -> np.ndarray: ...  # float (G, 2)
+    @property
+    def own_cells(self) -> int: ...
+    resampling: Optional[dict[str, Any]]
+    def resample(
+        self,
+        *,
+        cells: Optional[int] = ...,
+        size: Optional[float] = ...,
+        deviation_bound: Optional[float] = ...,
+        corner_angle: float = ...,
+        fixed_points: Optional[_Points] = ...,
+    ) -> Domain: ...
+    def cells_for_size(self, size: float) -> float: ...
 
 def random_points(
     domain: Domain,
-    n: int,
+    n: Optional[int] = ...,
     seed: int = ...,
     density: _Density = ...,
     *,
     lipschitz_k: float = ...,
     boundary_size: Optional[float] = ...,
+    cells: Optional[int] = ...,
 ) -> np.ndarray: ...  # float (n, 2)
 def optimize(
     domain: Domain,

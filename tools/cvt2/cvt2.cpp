@@ -11,12 +11,14 @@
 #include <CVT_2/IO/write_cells.h>
 #include <CVT_2/IO/write_disv.h>
 #include <CVT_2/IO/write_geojson.h>
+#include <CVT_2/IO/write_poly.h>
 #include <CVT_2/IO/write_svg.h>
 #include <CVT_2/IO/write_triangle.h>
 #include <CVT_2/IO/write_vtu.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
+#include <CVT_2/resample_constraints_2.h>
 #include <CVT_2/version.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -63,6 +65,11 @@ struct Usage_error : std::runtime_error {
 struct Options {
   std::string domain;
   std::optional<std::size_t> points;  // -n; by default from the domain file
+  std::optional<std::size_t> cells;   // --cells: in all, the domain's vertices included
+  std::optional<double> size;         // --size: the spacing of a hexagonal tiling
+  bool resample = false;              // --boundary resample
+  std::optional<double> deviation_bound;
+  double corner_angle = 30;
   std::string points_in;
   std::optional<double> boundary_tolerance;  // default: insert_generators_2()'s
   std::uint64_t seed = 1;
@@ -96,6 +103,18 @@ void print_help(std::ostream& os) {
         "                         its boundary, a constrained generator (default 2^-50 of the\n"
         "                         largest coordinate: a rounding; 0: none)\n"
         "      --seed S           seed of the random generators (default 1)\n"
+        "      --cells N          N cells in all, the domain's vertices included (instead of -n)\n"
+        "      --size H           cells of spacing H: H apart in a hexagonal tiling, a cell of\n"
+        "                         area sqrt(3)/2 H^2 (instead of -n)\n"
+        "Boundary:\n"
+        "      --boundary B       keep | resample (default keep). keep: every vertex of DOMAIN\n"
+        "                         is a generator. resample: the polylines are cut at junctions,\n"
+        "                         ends and corners and resampled between them to the cell size\n"
+        "                         (from --size, --cells or -n), on the input to rounding\n"
+        "      --deviation-bound D  resample: a chord leaves the input by at most D (default a\n"
+        "                         quarter of the cell size)\n"
+        "      --corner-angle A   resample: a vertex where the polyline turns by more than A\n"
+        "                         degrees, seen a cell size away on either side, stays (30)\n"
         "Iteration:\n"
         "      --algorithm A      lbfgs | lloyd (default lbfgs: L-BFGS on the CVT energy, which\n"
         "                         starts with and falls back to Lloyd steps, and reaches the\n"
@@ -173,6 +192,24 @@ const std::map<std::string, Setter>& valued_options() {
   static const std::map<std::string, Setter> table{
       {"--points", [](Options& o, auto& n, auto& v) { o.points = parse_count(n, v); }},
       {"--points-in", [](Options& o, auto&, auto& v) { o.points_in = v; }},
+      {"--cells",
+       [](Options& o, auto& n, auto& v) {
+         o.cells = parse_count(n, v);
+         if (*o.cells == 0) throw Usage_error(n + " must be positive, not '" + v + "'");
+       }},
+      {"--size", [](Options& o, auto& n, auto& v) { o.size = parse_positive(n, v); }},
+      {"--boundary",
+       [](Options& o, auto& n, auto& v) {
+         if (v == "slide")
+           throw Usage_error(n +
+                             " slide (vertices that slide along the boundary) is not built "
+                             "yet: use --boundary resample");
+         o.resample = parse_choice(n, v, "keep", "resample") == "resample";
+       }},
+      {"--corner-angle",
+       [](Options& o, auto& n, auto& v) { o.corner_angle = parse_non_negative(n, v); }},
+      {"--deviation-bound",
+       [](Options& o, auto& n, auto& v) { o.deviation_bound = parse_non_negative(n, v); }},
       {"--boundary-tolerance",
        [](Options& o, auto& n, auto& v) { o.boundary_tolerance = parse_non_negative(n, v); }},
       {"--seed", [](Options& o, auto& n, auto& v) { o.seed = parse_count(n, v); }},
@@ -256,6 +293,10 @@ Options parse_command_line(int argc, char* argv[]) {
   o.domain = positional[0];
   if (!o.lipschitz && o.boundary_size)
     throw Usage_error("--boundary-size needs --density lipschitz");
+  if (int(o.points.has_value()) + int(o.cells.has_value()) + int(o.size.has_value()) > 1)
+    throw Usage_error("give one of -n, --cells and --size");
+  if (o.deviation_bound && !o.resample)
+    throw Usage_error("--deviation-bound needs --boundary resample");
   if (o.boundary_tolerance && o.points_in.empty())
     throw Usage_error("--boundary-tolerance needs --points-in");
   return o;
@@ -448,13 +489,59 @@ void print_summary(const Options& o, const CVT_2::Optimization_result& r, const 
             << '\n';
 }
 
+// The vertices with the domain on a side: each has a cell in the outputs.
+std::size_t vertices_in_domain(const CDT& cdt) {
+  std::size_t n = 0;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    auto f = cdt.incident_faces(v), done = f;
+    do
+      if (!cdt.is_infinite(f) && f->is_inside_domain()) {
+        ++n;
+        break;
+      }
+    while (++f != done);
+  }
+  return n;
+}
+
+// --boundary resample: the constraints resampled to the cell size that --size, --cells or the
+// number of free generators asks for; a note of what changed on standard error.
+void resample(const Options& o, std::size_t free_generators, CDT& cdt) {
+  const double area = domain_area(cdt);
+  const double h =
+      o.size    ? *o.size
+      : o.cells ? CVT_2::cell_size_for_cells_2(cdt, *o.cells)
+                : std::sqrt(2 * area /
+                            (std::sqrt(3.0) * double(std::max<std::size_t>(free_generators, 1))));
+  const auto np = CVT_2::parameters::corner_angle(o.corner_angle);
+  const auto r = o.deviation_bound
+                     ? CVT_2::resample_constraints_2(cdt, h, np.deviation_bound(*o.deviation_bound))
+                     : CVT_2::resample_constraints_2(cdt, h, np);
+  // As the Python module holds a resampled domain, as Triangle's description: its triangulation
+  // from that, so that both draw the same random points.
+  CDT described;
+  CVT_2::IO::insert_poly(described, CVT_2::IO::domain_poly_data(cdt));
+  cdt.swap(described);
+  if (o.quiet) return;
+  std::cerr << std::setprecision(4) << "cvt2: boundary resampled to the cell size " << h << ": "
+            << r.input_vertices << " vertices on constraints -> " << r.output_vertices << " ("
+            << r.features << " features, " << r.corners << " of them corners; kept "
+            << r.kept_for_deviation << " for the deviation bound, " << r.kept_for_topology
+            << " for the topology); largest deviation " << r.max_deviation << ", area "
+            << r.area_before << " -> " << r.area_after << '\n';
+}
+
 int run(const Options& o) {
   if (!std::ifstream(o.domain))
     throw std::runtime_error("cannot open the domain file '" + o.domain + "'");
   CDT cdt;
   const CVT_2::IO::Domain_file domain = CVT_2::IO::read_domain(o.domain, cdt);
   note_repeated(domain.repeated);
-  // The sizing's default sizes are the boundary edges of the input, before generators split any.
+  const bool counted = o.cells || o.size;
+  const std::size_t default_n =
+      o.points ? *o.points : (domain.number_of_generators == 0 && o.points_in.empty() ? 1000 : 0);
+  if (o.resample) resample(o, default_n, cdt);
+  // The sizing's default sizes are the boundary edges, before generators split any.
   std::optional<Sizing> sizing;
   if (o.lipschitz)
     sizing.emplace(cdt, o.lipschitz_k,
@@ -476,8 +563,21 @@ int run(const Options& o) {
     const std::string note = CVT_2::IO::moved_points_note(points, moved);
     if (!note.empty()) std::cerr << "cvt2: note: " << note << '\n';
   }
-  const std::size_t n =
-      o.points ? *o.points : (domain.number_of_generators == 0 && o.points_in.empty() ? 1000 : 0);
+  const std::size_t present = vertices_in_domain(cdt);
+  std::size_t n = default_n;
+  if (counted) {
+    const double wanted =
+        o.cells ? double(*o.cells) : std::round(CVT_2::cells_for_cell_size_2(cdt, *o.size));
+    if (wanted < double(present))
+      throw Usage_error(std::string(o.cells ? "--cells" : "--size") + " asks for " +
+                        std::to_string(static_cast<long long>(wanted)) + " cells, fewer than the " +
+                        std::to_string(present) + " vertices of the domain and the points" +
+                        (o.resample ? "" : " (--boundary resample spaces the domain's vertices)"));
+    n = static_cast<std::size_t>(wanted) - present;
+  }
+  if (!o.resample && present > n / 10 && present > 100)
+    std::cerr << "cvt2: note: the domain's " << present << " vertices are generators too, "
+              << present + n << " cells in all; --boundary resample spaces them to the cell size\n";
   insert_random_points(n, o, sizing, cdt);
   const CVT_2::Optimization_result r = optimize(cdt, o, sizing);
   const BVD bvd(cdt);

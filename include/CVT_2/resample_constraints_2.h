@@ -1,0 +1,163 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// resample_constraints_2(): the constraints of a marked triangulation resampled to a cell size,
+// so that a finely digitised boundary does not pin a speck of a cell at every input vertex;
+// cell_size_for_cells_2(): the size that gives a number of cells.
+#ifndef CVT_2_RESAMPLE_CONSTRAINTS_2_H
+#define CVT_2_RESAMPLE_CONSTRAINTS_2_H
+
+#include <CVT_2/exceptions.h>
+#include <CVT_2/internal/resample_runs.h>
+#include <CVT_2/parameters.h>
+
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <numeric>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CVT_2 {
+
+/// \ingroup PkgCvt2Ref
+/// What `resample_constraints_2()` did.
+struct Resampling_report {
+  std::size_t input_vertices = 0;   ///< vertices on constraints before
+  std::size_t output_vertices = 0;  ///< vertices on constraints after
+  std::size_t features = 0;         ///< kept as they were: junctions, ends, fixed points, corners
+  std::size_t corners = 0;          ///< of the features, the corners at the scale of a cell
+  std::size_t runs = 0;             ///< pieces of polyline between features, each resampled
+  /// input vertices kept beyond the size's count: where a chord would leave the input by more
+  /// than the bound, or cross or cut off another constraint or a generator
+  std::size_t kept_for_deviation = 0, kept_for_topology = 0;
+  /// the largest distance from an input vertex to the chord that replaced it (the one-sided
+  /// Hausdorff distance from the input polylines to the resampled ones)
+  double max_deviation = 0;
+  double area_before = 0, area_after = 0;  ///< of the domain
+};
+
+/// \ingroup PkgCvt2Ref
+/// Resamples the constraints of `cdt` to the cell size `h`: each input polyline (outer rings,
+/// holes, inner constraints) is cut at its *features*, which stay: junctions (vertices of three
+/// or more constrained edges, or of one: the ends of open polylines), `fixed_points`, and
+/// corners, where the polyline turns by more than `corner_angle` between the chords to the
+/// points at distance `h` before and after (so that a coastline jagged far below a cell has
+/// none, and a square has four). Between two features, the *run* is replaced by points on it
+/// spaced by about `h` (the chords of a divider walk, evened out so that the last one ends at the
+/// feature; at least three points on a ring). An input vertex is kept too where a chord would
+/// leave the input by more than `deviation_bound`, or cross another constraint, or sweep over a
+/// vertex or generator (topology is kept: no ring disappears, nothing changes side).
+///
+/// Rebuilds `cdt` with the new points, the chords as constraints, its generators (vertices on
+/// no constraint) and the domain marked as before: each chord's sides inherit the marks of its
+/// run. Constraints with the domain on neither side are kept as they are.
+///
+/// New points are computed on their input segment in double precision: on the input polyline
+/// to rounding. Its vertices get new handles.
+///
+/// \tparam CDT a constrained Delaunay triangulation whose faces model `BvdFaceBase_2`, marked.
+/// \param cdt the triangulation.
+/// \param h the cell size, the spacing of neighbouring generators in a hexagonal tiling.
+/// \param np named parameters:
+///   - `deviation_bound(d)`: how far a chord may leave the input (default `h / 4`);
+///   - `corner_angle(a)`: the turn, in degrees, above which a vertex is a corner (default 30);
+///   - `fixed_points(r)`: a range of points: constrained vertices there are features.
+/// \throws Domain_error for a size or bound that is not a positive number.
+template <class CDT, class NP = No_named_parameters>
+Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()) {
+  using Point_2 = typename CDT::Point_2;
+  using Vertex_handle = typename CDT::Vertex_handle;
+  using internal_np::choose_parameter;
+  using internal_np::get_parameter;
+  if (!(h > 0) || !std::isfinite(h))
+    throw Domain_error("the cell size must be a positive number, not " + std::to_string(h));
+  const double bound = choose_parameter(get_parameter(np, internal_np::deviation_bound_t()), h / 4);
+  if (!(bound >= 0) || !std::isfinite(bound))
+    throw Domain_error("the deviation bound must be a non-negative number, not " +
+                       std::to_string(bound));
+  const double corner =
+      choose_parameter(get_parameter(np, internal_np::corner_angle_t()), 30.0) * CGAL_PI / 180;
+  std::vector<Point_2> fixed;
+  if constexpr (internal_np::has_parameter<NP, internal_np::fixed_points_t>)
+    for (const auto& p : get_parameter(np, internal_np::fixed_points_t())) fixed.push_back(p);
+
+  internal::Run_resampler<CDT> resampler(cdt, h, bound, corner, fixed);
+  resampler.resample();
+  Resampling_report report;
+  report.input_vertices = resampler.input_vertices;
+  report.output_vertices = resampler.output_vertices;
+  report.features = resampler.features;
+  report.corners = resampler.corners;
+  report.runs = resampler.runs;
+  report.kept_for_deviation = resampler.kept_for_deviation;
+  report.kept_for_topology = resampler.kept_for_topology;
+  report.max_deviation = resampler.max_deviation;
+  report.area_before = internal::Run_resampler<CDT>::domain_area(cdt);
+
+  // The new triangulation: generators and points in spatial order, then the chords.
+  const std::vector<Point_2>& points = resampler.points();
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  using Map = CGAL::Pointer_property_map<Point_2>;
+  CGAL::spatial_sort(
+      order.begin(), order.end(),
+      CGAL::Spatial_sort_traits_adapter_2<typename CDT::Geom_traits, typename Map::const_type>(
+          CGAL::make_property_map(points)));
+  CDT out(cdt.geom_traits());
+  std::vector<Vertex_handle> handle(points.size());
+  typename CDT::Face_handle hint;
+  for (const std::size_t i : order) {
+    handle[i] = out.insert(points[i], hint);
+    hint = handle[i]->face();
+  }
+  // The domain's side of each chord, by its vertices, both ways: true if inside on the left.
+  std::map<std::pair<const void*, const void*>, bool> left_inside;
+  for (const auto& c : resampler.chords()) {
+    out.insert_constraint(handle[c.a], handle[c.b]);
+    left_inside[{&*handle[c.a], &*handle[c.b]}] = c.left_inside;
+    left_inside[{&*handle[c.b], &*handle[c.a]}] = c.right_inside;
+  }
+  internal::mark_by_sides(out, left_inside);
+  cdt.swap(out);
+  report.area_after = internal::Run_resampler<CDT>::domain_area(cdt);
+  return report;
+}
+
+/// \ingroup PkgCvt2Ref
+/// The cell size (the spacing `H` of a hexagonal tiling, a cell of area `sqrt(3)/2 H^2`) at which
+/// `cells` cells fill the domain of `cdt` when the constraints are resampled to it: the domain's
+/// area `A` holds `A / (sqrt(3)/2 H^2)` cells, and a generator on the domain's boundary has a
+/// half cell, so that the boundary of length `L` adds `L / (2 H)`; `H` solves
+/// `A / (sqrt(3)/2 H^2) + L / (2 H) = cells`. Inner constraints, with the domain on both sides,
+/// add nothing.
+/// \throws Domain_error if the domain is empty or `cells` is 0.
+template <class CDT>
+double cell_size_for_cells_2(const CDT& cdt, std::size_t cells) {
+  const double area = internal::Run_resampler<CDT>::domain_area(cdt);
+  const double length = internal::Run_resampler<CDT>::boundary_length(cdt);
+  if (!(area > 0)) throw Domain_error("the domain is empty: no cell size gives cells in it");
+  if (cells == 0) throw Domain_error("a cell size for 0 cells does not exist");
+  // In u = 1/H: (2A/sqrt3) u^2 + (L/2) u - cells = 0, the positive root.
+  const double a = 2 * area / std::sqrt(3.0), b = length / 2, c = -double(cells);
+  const double u = 2 * -c / (b + std::sqrt(b * b - 4 * a * c));  // no cancellation
+  return 1 / u;
+}
+
+/// \ingroup PkgCvt2Ref
+/// The number of cells that the cell size `h` gives the domain of `cdt`, the inverse of
+/// `cell_size_for_cells_2()`: `A / (sqrt(3)/2 h^2) + L / (2 h)`, not rounded.
+template <class CDT>
+double cells_for_cell_size_2(const CDT& cdt, double h) {
+  const double area = internal::Run_resampler<CDT>::domain_area(cdt);
+  const double length = internal::Run_resampler<CDT>::boundary_length(cdt);
+  return area / (std::sqrt(3.0) / 2 * h * h) + length / (2 * h);
+}
+
+}  // namespace CVT_2
+
+#endif  // CVT_2_RESAMPLE_CONSTRAINTS_2_H

@@ -1,0 +1,112 @@
+# Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+# Constraints resampled to a cell size (Domain.resample, cvt2 --boundary resample): the count
+# asked for delivered, specks gone, the outputs valid, the same bits as the program.
+import json
+
+import numpy as np
+import pytest
+from shapely.geometry import shape
+from shapely.ops import unary_union
+
+import cvt2
+from conftest import run_program
+
+REAL = ["france_mainland.poly", "world_land_110m.wkt", "us_kentucky_counties.geojson",
+        "us_massachusetts_counties.wkt", "earcut_dude.poly"]
+
+
+@pytest.mark.parametrize("name", REAL)
+def test_program_delivers_the_cells_asked_for_valid_and_tiling(program, data, tmp_path, name):
+    domain = cvt2.Domain.from_file(data / name)
+    cells = 1500
+    summary, points, files = run_program(program, data / name, tmp_path, "--boundary", "resample",
+                                         "--cells", cells, outputs=("points", "geojson"))
+    features = json.loads(files["geojson"].read_text())["features"]
+    assert len(features) == cells == len(points) == int(summary["generators"])
+    polygons = [shape(f["geometry"]) for f in features]
+    assert all(p.is_valid and p.area > 0 for p in polygons)
+    # The cells tile the resampled domain (no overlap: the union's area is the sum's), whose
+    # area is within the deviation of the input's.
+    resampled = domain.resample(cells=cells)
+    assert unary_union(polygons).area == pytest.approx(resampled.area, rel=1e-9)
+    assert sum(p.area for p in polygons) == pytest.approx(resampled.area, rel=1e-9)
+    assert resampled.area == pytest.approx(domain.area, rel=0.02)
+
+
+def test_resampling_removes_the_specks_of_a_fine_boundary(program, data, tmp_path):
+    # France's 533 boundary vertices at 1 000 cells: kept, a tenth of the cells are specks.
+    speck = {}
+    for mode in ("keep", "resample"):
+        _, _, files = run_program(program, data / "france_mainland.poly", tmp_path, "--boundary",
+                                  mode, "--cells", 1000, outputs=("geojson",))
+        areas = np.array([f["properties"]["area"]
+                          for f in json.loads(files["geojson"].read_text())["features"]])
+        speck[mode] = np.mean(areas < 0.1 * np.median(areas))
+    assert speck["keep"] > 0.05
+    assert speck["resample"] < speck["keep"] / 4
+
+
+def test_module_matches_the_program_bit_for_bit(program, data, tmp_path):
+    name = "us_massachusetts_counties.wkt"
+    _, expected, _ = run_program(program, data / name, tmp_path, "--boundary", "resample",
+                                 "--cells", 800, "--seed", 5)
+    d = cvt2.Domain.from_file(data / name).resample(cells=800)
+    points = cvt2.random_points(d, cells=800, seed=5)
+    assert len(points) + d.own_cells == 800
+    r = cvt2.optimize(d, points)
+    assert np.array_equal(r.points, expected[:, :2])
+
+
+def test_resample_report_and_arguments(data):
+    d = cvt2.Domain.from_file(data / "france_mainland.poly")
+    h = 0.2
+    r = d.resample(size=h)
+    rep = r.resampling
+    assert rep["size"] == h
+    assert rep["output_vertices"] < rep["input_vertices"] == 533
+    assert 0 < rep["max_deviation"] <= h / 4
+    assert rep["area_after"] == pytest.approx(r.area)
+    assert len(r.segments) == rep["output_vertices"]  # rings: as many segments as vertices
+    assert d.resampling is None
+    # A tighter bound keeps more vertices; fixed points stay.
+    tight = d.resample(size=h, deviation_bound=h / 40)
+    assert tight.resampling["output_vertices"] > rep["output_vertices"]
+    pinned = d.vertices[100:110]
+    fixed = d.resample(size=h, fixed_points=pinned)
+    assert all((fixed.vertices == p).all(axis=1).any() for p in pinned)
+    # The count and the size are inverses.
+    assert d.cells_for_size(d.resample(cells=3000).resampling["size"]) == pytest.approx(3000)
+    with pytest.raises(TypeError, match="one of cells and size"):
+        d.resample()
+    with pytest.raises(TypeError, match="one of cells and size"):
+        d.resample(cells=10, size=1.0)
+    with pytest.raises(ValueError, match="size must be a positive number"):
+        d.resample(size=-1.0)
+    with pytest.raises(ValueError, match="fewer than the"):
+        cvt2.random_points(d, cells=10)
+    with pytest.raises(TypeError, match="one of n and cells"):
+        cvt2.random_points(d, 5, cells=1000)
+
+
+def test_program_size_and_errors(program, data, tmp_path):
+    import subprocess
+    name = data / "france_mainland.poly"
+    h = 0.3
+    summary, _, _ = run_program(program, name, tmp_path, "--boundary", "resample", "--size", h)
+    expected = cvt2.Domain.from_file(name).resample(size=h).cells_for_size(h)
+    assert int(summary["generators"]) == round(expected)
+
+    def fails(*options):
+        p = subprocess.run([program, str(name), "--quiet", *map(str, options)],
+                           capture_output=True, text=True)
+        assert p.returncode != 0
+        return p.stderr
+
+    assert "not built yet: use --boundary resample" in fails("--boundary", "slide")
+    assert "give one of -n, --cells and --size" in fails("--cells", 100, "-n", 5)
+    assert "--deviation-bound needs --boundary resample" in fails("--deviation-bound", 1)
+    assert "fewer than the 533 vertices" in fails("--cells", 100)
+    # keep says when the domain's vertices add many cells, and names the option.
+    p = subprocess.run([program, str(name), "-n", "1000", "--iterations", "1"],
+                       capture_output=True, text=True)
+    assert "--boundary resample" in p.stderr
