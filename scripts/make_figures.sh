@@ -99,6 +99,10 @@ PYTHONPATH="$build/python" /usr/bin/python3 "$root/python/examples/density_respo
   density_response.png
 pngquant --force --output "$fig/density_response.png" 64 density_response.png
 
+PYTHONPATH="$build/python" /usr/bin/python3 "$root/python/examples/resample.py" "$data" \
+  resample.png
+pngquant --force --output "$fig/resample.png" 64 resample.png
+
 "$ex/crack_interpolation" crack.txt
 /usr/bin/python3 "$root/scripts/plot_crack_interpolation.py" crack.txt crack.png
 pngquant --force --output "$fig/crack_interpolation.png" 64 crack.png
