@@ -249,6 +249,8 @@ struct Domain {
   double area = 0;
   std::array<double, 4> bounds{};
   std::size_t own_cells = 0;  // the vertices of the triangulation with a cell: on the domain
+  // What the writers put in their headers, as cvt2 writes it for the same domain.
+  CVT_2::IO::Metadata metadata;
 
   std::unique_ptr<CDT> triangulation() const {
     auto cdt = std::make_unique<CDT>();
@@ -258,6 +260,10 @@ struct Domain {
 
   // Builds the triangulation once, which checks the domain, and lists its segments.
   void finish(std::int64_t item_offset = 0) {
+    if (metadata.empty())
+      metadata = {{"program", std::string("cvt2 ") + CVT_2_VERSION_STRING},
+                  {"domain", data.file.source},
+                  {"boundary", "keep"}};
     if (const auto* poly = std::get_if<0>(&data.description)) {
       for (std::size_t j = 0; j < poly->segments.size(); ++j) {
         segment_ends.push_back(poly->vertices[poly->segments[j][0]]);
@@ -479,6 +485,17 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
             : CVT_2::resample_constraints_2(*cdt, h, np);
     out->data.description = CVT_2::IO::domain_poly_data(*cdt, "<arrays>");
     out->data.file.source = d.data.file.source + " (resampled)";
+    const auto number = [](double x) {
+      std::ostringstream os;
+      CVT_2::internal::write_number(os, x);
+      return os.str();
+    };
+    out->metadata = {d.metadata[0],
+                     d.metadata[1],
+                     {"boundary", "resample"},
+                     {"cell_size", number(h)},
+                     {"deviation_bound", number(deviation_bound ? *deviation_bound : h / 4)},
+                     {"max_deviation", number(r.max_deviation)}};
     out->data.file.format = out->format = "arrays";
     const auto& poly = std::get<0>(out->data.description);
     std::vector<bool> on_segment(poly.vertices.size(), false);
@@ -488,6 +505,7 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
   }
   py::dict report;
   report["size"] = h;
+  report["deviation_bound"] = deviation_bound ? *deviation_bound : h / 4;
   report["input_vertices"] = r.input_vertices;
   report["output_vertices"] = r.output_vertices;
   report["features"] = r.features;
@@ -1120,6 +1138,7 @@ PYBIND11_MODULE(_cvt2, m) {
       .def_property_readonly("source", [](const Domain& d) { return d.data.file.source; })
       .def_property_readonly("area", [](const Domain& d) { return d.area; })
       .def_property_readonly("own_cells", [](const Domain& d) { return d.own_cells; })
+      .def_property_readonly("metadata", [](const Domain& d) { return d.metadata; })
       .def_property_readonly("bounds",
                              [](const Domain& d) {
                                return py::make_tuple(d.bounds[0], d.bounds[1], d.bounds[2],
@@ -1157,15 +1176,19 @@ PYBIND11_MODULE(_cvt2, m) {
       .def("polygons", &Diagram::polygons)
       .def("wkb", &Diagram::wkb)
       .def("write_geojson",
-           [](const Diagram& d, const std::string& path) {
-             d.write(path, [&](std::ostream& os) { CVT_2::IO::write_geojson(os, *d.mesh); });
+           [](const Diagram& d, const std::string& path, const CVT_2::IO::Metadata& metadata) {
+             d.write(path,
+                     [&](std::ostream& os) { CVT_2::IO::write_geojson(os, *d.mesh, metadata); });
            })
       .def("write_vtu",
-           [](const Diagram& d, const std::string& path) {
-             d.write(path, [&](std::ostream& os) { CVT_2::IO::write_vtu(os, *d.mesh); });
+           [](const Diagram& d, const std::string& path, const CVT_2::IO::Metadata& metadata) {
+             d.write(path, [&](std::ostream& os) { CVT_2::IO::write_vtu(os, *d.mesh, metadata); });
            })
-      .def("write_disv", [](const Diagram& d, const std::string& path, double top, double bottom) {
-        d.write(path, [&](std::ostream& os) { CVT_2::IO::write_disv(os, *d.mesh, top, bottom); });
+      .def("write_disv", [](const Diagram& d, const std::string& path, double top, double bottom,
+                            const CVT_2::IO::Metadata& metadata) {
+        d.write(path, [&](std::ostream& os) {
+          CVT_2::IO::write_disv(os, *d.mesh, top, bottom, metadata);
+        });
       });
 
   py::class_<Optimization, std::shared_ptr<Optimization>>(m, "Optimization")

@@ -767,17 +767,24 @@ class BoundedVoronoi:
     def to_geojson(self, path) -> None:
         """Writes the cells as a GeoJSON FeatureCollection (``cvt2 --geojson``): one valid
         Polygon or MultiPolygon per cell; properties cell, generator, constrained, area,
-        neighbors."""
-        self._impl.write_geojson(os.fspath(path))
+        neighbors; what made it in a ``metadata`` object (see :meth:`metadata`)."""
+        self._impl.write_geojson(os.fspath(path), self.metadata())
 
     def to_vtu(self, path) -> None:
-        """Writes the cells as a VTK XML unstructured grid (``cvt2 --vtu``; ParaView, meshio)."""
-        self._impl.write_vtu(os.fspath(path))
+        """Writes the cells as a VTK XML unstructured grid (``cvt2 --vtu``; ParaView, meshio),
+        :meth:`metadata` in XML comments."""
+        self._impl.write_vtu(os.fspath(path), self.metadata())
 
     def to_disv(self, path, top=1.0, bottom=0.0) -> None:
         """Writes the cells as a MODFLOW 6 DISV grid of one layer between ``bottom`` and
-        ``top`` (``cvt2 --disv``; flopy)."""
-        self._impl.write_disv(os.fspath(path), float(top), float(bottom))
+        ``top`` (``cvt2 --disv``; flopy), :meth:`metadata` in comment lines."""
+        self._impl.write_disv(os.fspath(path), float(top), float(bottom), self.metadata())
+
+    def metadata(self) -> list:
+        """What the writers put in their headers, as (key, value) strings: the program, the
+        domain's source and its boundary mode (``keep``, or ``resample`` with the cell size,
+        the deviation bound and the largest deviation), as ``cvt2`` writes them."""
+        return list(self.domain._impl.metadata)
 
     def __len__(self):
         return len(self.points)

@@ -110,3 +110,45 @@ def test_program_size_and_errors(program, data, tmp_path):
     p = subprocess.run([program, str(name), "-n", "1000", "--iterations", "1"],
                        capture_output=True, text=True)
     assert "--boundary resample" in p.stderr
+
+
+def test_outputs_say_which_boundary_made_them_and_match_the_program(program, data, tmp_path):
+    import meshio
+    name = data / "france_mainland.poly"
+    _, _, files = run_program(program, name, tmp_path, "--boundary", "resample", "--cells", 700,
+                              "--iterations", 5, outputs=("points", "geojson", "vtu", "disv"))
+    metadata = json.loads(files["geojson"].read_text())["metadata"]
+    assert metadata["boundary"] == "resample" and metadata["domain"] == str(name)
+    assert float(metadata["max_deviation"]) <= float(metadata["deviation_bound"])
+    assert "# boundary: resample\n" in files["disv"].read_text()
+    assert "<!-- boundary: resample -->" in files["vtu"].read_text()
+    assert sum(len(block.data) for block in meshio.read(files["vtu"]).cells) == 700
+    # The module writes the same bytes for the same domain and points.
+    d = cvt2.Domain.from_file(name).resample(cells=700)
+    r = cvt2.optimize(d, cvt2.random_points(d, cells=700), max_iterations=5).bounded_voronoi()
+    for kind, write in (("geojson", r.to_geojson), ("vtu", r.to_vtu), ("disv", r.to_disv)):
+        write(tmp_path / f"ours.{kind}")
+        assert (tmp_path / f"ours.{kind}").read_bytes() == files[kind].read_bytes(), kind
+    # keep says so too.
+    _, _, files = run_program(program, name, tmp_path, "-n", 100, "--iterations", 1,
+                              outputs=("geojson",))
+    assert json.loads(files["geojson"].read_text())["metadata"]["boundary"] == "keep"
+
+
+def test_program_writes_the_resampled_domain_and_the_layer(program, data, tmp_path):
+    import subprocess
+    name = data / "france_mainland.poly"
+    poly, disv = tmp_path / "resampled.poly", tmp_path / "grid.disv"
+    subprocess.run([program, str(name), "--quiet", "--boundary", "resample", "--cells", "600",
+                    "--iterations", "2", "--domain-out", str(poly), "--disv", str(disv),
+                    "--top", "12.5", "--bottom", "-3"], check=True, capture_output=True)
+    back = cvt2.Domain.from_file(poly)
+    ours = cvt2.Domain.from_file(name).resample(cells=600)
+    assert np.array_equal(back.vertices, ours.vertices)
+    assert np.array_equal(back.segments, ours.segments)
+    assert back.area == ours.area
+    text = disv.read_text()
+    assert "TOP\n    CONSTANT 12.5\n" in text and "BOTM LAYERED\n    CONSTANT -3\n" in text
+    p = subprocess.run([program, str(name), "--top", "1", "--bottom", "1"], capture_output=True,
+                       text=True)
+    assert p.returncode != 0 and "--bottom must be below --top" in p.stderr

@@ -81,7 +81,8 @@ struct Options {
   std::optional<double> boundary_size;  // default: each boundary edge's length
   double time_limit = 0;
   unsigned threads = 0;  // 0: all cores
-  std::string svg, points_out, cells_out, geojson, vtu, disv, mesh_out;
+  std::string svg, points_out, cells_out, geojson, vtu, disv, mesh_out, domain_out;
+  double top = 1, bottom = 0;  // of the DISV's layer
   bool quiet = false;
   bool help = false;
   bool version = false;
@@ -133,7 +134,10 @@ void print_help(std::ostream& os) {
         "      --vtu FILE         the cells as a VTK XML grid with shared points (ParaView,\n"
         "                         meshio): cell, constrained, area, generator\n"
         "      --disv FILE        the cells as a MODFLOW 6 DISV grid, one layer (flopy)\n"
+        "      --top T, --bottom B  the DISV layer's top and bottom (default 1 and 0)\n"
         "      --mesh-out PREFIX  the final triangulation: PREFIX.node, .ele, .edge (Triangle)\n"
+        "      --domain-out FILE  the domain (resampled with --boundary resample) and its own\n"
+        "                         generators as a Triangle .poly file\n"
         "      --cells-out FILE   one 'x y c k x1 y1 ... xk yk' per cell (bvd_cells format)\n"
         "      --points-out FILE  one 'x y c' per generator, c = 1 if constrained\n"
         "      --svg FILE         picture: domain, cells, constraints, generators\n"
@@ -240,6 +244,9 @@ const std::map<std::string, Setter>& valued_options() {
       {"--vtu", [](Options& o, auto&, auto& v) { o.vtu = v; }},
       {"--disv", [](Options& o, auto&, auto& v) { o.disv = v; }},
       {"--mesh-out", [](Options& o, auto&, auto& v) { o.mesh_out = v; }},
+      {"--domain-out", [](Options& o, auto&, auto& v) { o.domain_out = v; }},
+      {"--top", [](Options& o, auto& n, auto& v) { o.top = parse_real(n, v); }},
+      {"--bottom", [](Options& o, auto& n, auto& v) { o.bottom = parse_real(n, v); }},
       {"--vtk",
        [](Options&, auto&, auto&) {
          throw Usage_error(
@@ -295,6 +302,9 @@ Options parse_command_line(int argc, char* argv[]) {
     throw Usage_error("--boundary-size needs --density lipschitz");
   if (int(o.points.has_value()) + int(o.cells.has_value()) + int(o.size.has_value()) > 1)
     throw Usage_error("give one of -n, --cells and --size");
+  if (!(o.bottom < o.top))
+    throw Usage_error("--bottom must be below --top, not " + std::to_string(o.bottom) +
+                      " >= " + std::to_string(o.top));
   if (o.deviation_bound && !o.resample)
     throw Usage_error("--deviation-bound needs --boundary resample");
   if (o.boundary_tolerance && o.points_in.empty())
@@ -339,6 +349,13 @@ void insert_random_points(std::size_t n, const Options& o, const std::optional<S
   CVT_2::insert_generators_2(
       cdt, sizing ? CVT_2::random_points_in_domain_2(cdt, n, np.sizing_field(std::cref(*sizing)))
                   : CVT_2::random_points_in_domain_2(cdt, n, np));
+}
+
+// A number as the shortest decimal that reads back as the same double.
+std::string number(double x) {
+  std::ostringstream os;
+  CVT_2::internal::write_number(os, x);
+  return os.str();
 }
 
 // --- optimization ------------------------------------------------------------------------------
@@ -440,7 +457,8 @@ class Output_files {
   std::vector<std::pair<std::string, std::string>> m_files;
 };
 
-void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd) {
+void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
+                   const CVT_2::IO::Metadata& metadata, const CDT& domain) {
   using namespace CVT_2::IO;
   Output_files out;
   if (!o.svg.empty()) out.write(o.svg, [&](std::ostream& os) { write_svg(os, bvd); });
@@ -450,10 +468,13 @@ void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd) {
   if (!o.geojson.empty() || !o.vtu.empty() || !o.disv.empty()) {
     const Mesh mesh(bvd, o.threads);
     if (!o.geojson.empty())
-      out.write(o.geojson, [&](std::ostream& os) { write_geojson(os, mesh); });
-    if (!o.vtu.empty()) out.write(o.vtu, [&](std::ostream& os) { write_vtu(os, mesh); });
-    if (!o.disv.empty()) out.write(o.disv, [&](std::ostream& os) { write_disv(os, mesh); });
+      out.write(o.geojson, [&](std::ostream& os) { write_geojson(os, mesh, metadata); });
+    if (!o.vtu.empty()) out.write(o.vtu, [&](std::ostream& os) { write_vtu(os, mesh, metadata); });
+    if (!o.disv.empty())
+      out.write(o.disv, [&](std::ostream& os) { write_disv(os, mesh, o.top, o.bottom, metadata); });
   }
+  if (!o.domain_out.empty())
+    out.write(o.domain_out, [&](std::ostream& os) { write_poly(os, domain); });
   if (!o.mesh_out.empty()) {
     std::ostringstream ele, edge;
     out.write(o.mesh_out + ".node", [&](std::ostream& os) { write_triangle(os, ele, edge, cdt); });
@@ -506,7 +527,8 @@ std::size_t vertices_in_domain(const CDT& cdt) {
 
 // --boundary resample: the constraints resampled to the cell size that --size, --cells or the
 // number of free generators asks for; a note of what changed on standard error.
-void resample(const Options& o, std::size_t free_generators, CDT& cdt) {
+void resample(const Options& o, std::size_t free_generators, CDT& cdt,
+              CVT_2::IO::Metadata& metadata) {
   const double area = domain_area(cdt);
   const double h =
       o.size    ? *o.size
@@ -522,6 +544,9 @@ void resample(const Options& o, std::size_t free_generators, CDT& cdt) {
   CDT described;
   CVT_2::IO::insert_poly(described, CVT_2::IO::domain_poly_data(cdt));
   cdt.swap(described);
+  metadata.emplace_back("cell_size", number(h));
+  metadata.emplace_back("deviation_bound", number(o.deviation_bound ? *o.deviation_bound : h / 4));
+  metadata.emplace_back("max_deviation", number(r.max_deviation));
   if (o.quiet) return;
   std::cerr << std::setprecision(4) << "cvt2: boundary resampled to the cell size " << h << ": "
             << r.input_vertices << " vertices on constraints -> " << r.output_vertices << " ("
@@ -540,7 +565,12 @@ int run(const Options& o) {
   const bool counted = o.cells || o.size;
   const std::size_t default_n =
       o.points ? *o.points : (domain.number_of_generators == 0 && o.points_in.empty() ? 1000 : 0);
-  if (o.resample) resample(o, default_n, cdt);
+  CVT_2::IO::Metadata metadata{{"program", std::string("cvt2 ") + CVT_2_VERSION_STRING},
+                               {"domain", o.domain},
+                               {"boundary", o.resample ? "resample" : "keep"}};
+  if (o.resample) resample(o, default_n, cdt, metadata);
+  CDT domain_alone;  // for --domain-out: the domain and the file's own generators, no others
+  if (!o.domain_out.empty()) domain_alone = cdt;
   // The sizing's default sizes are the boundary edges, before generators split any.
   std::optional<Sizing> sizing;
   if (o.lipschitz)
@@ -581,7 +611,7 @@ int run(const Options& o) {
   insert_random_points(n, o, sizing, cdt);
   const CVT_2::Optimization_result r = optimize(cdt, o, sizing);
   const BVD bvd(cdt);
-  write_outputs(o, cdt, bvd);
+  write_outputs(o, cdt, bvd, metadata, domain_alone);
   print_summary(o, r, bvd, domain_area(cdt));
   return EXIT_SUCCESS;
 }

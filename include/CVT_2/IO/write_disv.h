@@ -3,6 +3,7 @@
 #ifndef CVT_2_IO_WRITE_DISV_H
 #define CVT_2_IO_WRITE_DISV_H
 
+#include <CVT_2/IO/Metadata.h>
 #include <CVT_2/IO/internal/mesh_outlines.h>
 #include <CVT_2/IO/internal/write_number.h>
 
@@ -24,14 +25,18 @@ namespace IO {
 /// closed by repeating the first, as flopy writes them). This is the grid flopy's
 /// `VoronoiGrid` builds by clipping unbounded Voronoi cells, here with the cells bounded by
 /// inner constraints too. Cells are numbered as in the mesh, from 1.
+/// `metadata`, if any, goes in comment lines after the first (`Metadata`).
 /// \tparam Mesh a `Bvd_mesh_2`.
 /// \pre `bottom < top`
 template <class Mesh>
-void write_disv(std::ostream& os, const Mesh& mesh, double top = 1, double bottom = 0) {
+void write_disv(std::ostream& os, const Mesh& mesh, double top = 1, double bottom = 0,
+                const Metadata& metadata = {}) {
   using internal::write_number;
   const internal::Mesh_outlines<Mesh> o(mesh);
-  os << "# MODFLOW 6 DISV: a bounded Voronoi grid written by CVT_2\n"
-        "BEGIN OPTIONS\nEND OPTIONS\n\nBEGIN DIMENSIONS\n  NLAY 1\n  NCPL "
+  os << "# MODFLOW 6 DISV: a bounded Voronoi grid written by CVT_2\n";
+  for (const auto& [key, value] : metadata)
+    os << "# " << internal::comment_text(key) << ": " << internal::comment_text(value) << '\n';
+  os << "BEGIN OPTIONS\nEND OPTIONS\n\nBEGIN DIMENSIONS\n  NLAY 1\n  NCPL "
      << mesh.number_of_cells() << "\n  NVERT " << o.vertices.size()
      << "\nEND DIMENSIONS\n\nBEGIN GRIDDATA\n  TOP\n    CONSTANT ";
   write_number(os, top);
@@ -63,10 +68,11 @@ void write_disv(std::ostream& os, const Mesh& mesh, double top = 1, double botto
 /// \ingroup PkgCvt2IO
 /// Writes `mesh` to the DISV file `filename`; returns false if the file could not be written.
 template <class Mesh>
-bool write_disv(const std::string& filename, const Mesh& mesh, double top = 1, double bottom = 0) {
+bool write_disv(const std::string& filename, const Mesh& mesh, double top = 1, double bottom = 0,
+                const Metadata& metadata = {}) {
   std::ofstream os(filename);
   if (!os) return false;
-  write_disv(os, mesh, top, bottom);
+  write_disv(os, mesh, top, bottom, metadata);
   return static_cast<bool>(os);
 }
 

@@ -3,6 +3,7 @@
 #ifndef CVT_2_IO_WRITE_GEOJSON_H
 #define CVT_2_IO_WRITE_GEOJSON_H
 
+#include <CVT_2/IO/Metadata.h>
 #include <CVT_2/IO/internal/write_number.h>
 
 #include <cstddef>
@@ -24,9 +25,10 @@ namespace IO {
 /// `neighbors` (the numbers of the cells across its edges). Coordinates are written as the
 /// shortest decimals that read back as the same doubles; no coordinate reference system is
 /// implied.
+/// `metadata`, if any, is a `"metadata"` object beside `"features"` (`Metadata`).
 /// \tparam Mesh a `Bvd_mesh_2`.
 template <class Mesh>
-void write_geojson(std::ostream& os, const Mesh& mesh) {
+void write_geojson(std::ostream& os, const Mesh& mesh, const Metadata& metadata = {}) {
   using internal::write_number;
   const auto xy = [&os](const auto& p) {
     os << '[';
@@ -41,7 +43,18 @@ void write_geojson(std::ostream& os, const Mesh& mesh) {
     xy(mesh.point(r.front()));  // GeoJSON closes a ring by repeating its first position
     os << ']';
   };
-  os << "{\"type\":\"FeatureCollection\",\"features\":[";
+  os << "{\"type\":\"FeatureCollection\",";
+  if (!metadata.empty()) {
+    os << "\"metadata\":{";
+    for (std::size_t j = 0; j < metadata.size(); ++j) {
+      os << (j ? "," : "");
+      internal::write_json_string(os, metadata[j].first);
+      os << ':';
+      internal::write_json_string(os, metadata[j].second);
+    }
+    os << "},";
+  }
+  os << "\"features\":[";
   for (std::size_t k = 0; k < mesh.number_of_cells(); ++k) {
     os << (k == 0 ? "\n" : ",\n") << "{\"type\":\"Feature\",\"id\":" << k
        << ",\"properties\":{\"cell\":" << k << ",\"generator\":";
@@ -73,10 +86,10 @@ void write_geojson(std::ostream& os, const Mesh& mesh) {
 /// \ingroup PkgCvt2IO
 /// Writes `mesh` to the GeoJSON file `filename`; returns false if the file could not be written.
 template <class Mesh>
-bool write_geojson(const std::string& filename, const Mesh& mesh) {
+bool write_geojson(const std::string& filename, const Mesh& mesh, const Metadata& metadata = {}) {
   std::ofstream os(filename);
   if (!os) return false;
-  write_geojson(os, mesh);
+  write_geojson(os, mesh, metadata);
   return static_cast<bool>(os);
 }
 

@@ -3,6 +3,7 @@
 #ifndef CVT_2_IO_WRITE_VTU_H
 #define CVT_2_IO_WRITE_VTU_H
 
+#include <CVT_2/IO/Metadata.h>
 #include <CVT_2/IO/internal/mesh_outlines.h>
 #include <CVT_2/IO/internal/write_number.h>
 
@@ -23,14 +24,18 @@ namespace IO {
 /// dropped; a cell that meets itself at its generator goes through it once per lobe), and the
 /// cell data `cell` (its number), `constrained` (1 if its generator is a constrained vertex),
 /// `area` and `generator` (x, y, 0).
+/// `metadata`, if any, goes in XML comments before the `VTKFile` element (`Metadata`).
 /// \tparam Mesh a `Bvd_mesh_2`.
 template <class Mesh>
-void write_vtu(std::ostream& os, const Mesh& mesh) {
+void write_vtu(std::ostream& os, const Mesh& mesh, const Metadata& metadata = {}) {
   using internal::write_number;
   const internal::Mesh_outlines<Mesh> o(mesh);
   const auto& outlines = o.cells;
-  os << "<?xml version=\"1.0\"?>\n"
-        "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+  os << "<?xml version=\"1.0\"?>\n";
+  for (const auto& [key, value] : metadata)
+    os << "<!-- " << internal::comment_text(key) << ": " << internal::comment_text(value)
+       << " -->\n";
+  os << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
         "header_type=\"UInt64\">\n<UnstructuredGrid>\n<Piece NumberOfPoints=\""
      << o.vertices.size() << "\" NumberOfCells=\"" << outlines.size() << "\">\n"
      << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
@@ -72,10 +77,10 @@ void write_vtu(std::ostream& os, const Mesh& mesh) {
 /// \ingroup PkgCvt2IO
 /// Writes `mesh` to the VTU file `filename`; returns false if the file could not be written.
 template <class Mesh>
-bool write_vtu(const std::string& filename, const Mesh& mesh) {
+bool write_vtu(const std::string& filename, const Mesh& mesh, const Metadata& metadata = {}) {
   std::ofstream os(filename);
   if (!os) return false;
-  write_vtu(os, mesh);
+  write_vtu(os, mesh, metadata);
   return static_cast<bool>(os);
 }
 
