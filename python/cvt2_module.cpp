@@ -458,7 +458,7 @@ py::dict domain_arrays(const Domain& d) {
 // resampling did.
 py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
                           std::optional<double> size, std::optional<double> deviation_bound,
-                          double corner_angle, py::handle fixed) {
+                          double corner_angle, py::handle fixed, double minimum_ring_area) {
   if (cells.has_value() == size.has_value()) throw py::value_error("give one of cells and size");
   if (cells && *cells == 0) throw py::value_error("cells must be positive, not 0");
   if (size && !(*size > 0 && std::isfinite(*size)))
@@ -470,6 +470,9 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
   if (!(corner_angle >= 0 && std::isfinite(corner_angle)))
     throw py::value_error("corner_angle must be a number >= 0, not " +
                           CVT_2::internal::number_to_string(corner_angle));
+  if (!(minimum_ring_area >= 0 && std::isfinite(minimum_ring_area)))
+    throw py::value_error("minimum_ring_area must be a number >= 0, not " +
+                          CVT_2::internal::number_to_string(minimum_ring_area));
   const std::vector<Point_2> fixed_points =
       fixed.is_none() ? std::vector<Point_2>() : to_points(fixed, "fixed_points");
   auto out = std::make_shared<Domain>();
@@ -479,7 +482,9 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
     py::gil_scoped_release release;
     const auto cdt = d.triangulation();
     h = size ? *size : CVT_2::cell_size_for_cells_2(*cdt, *cells);
-    auto np = CVT_2::parameters::corner_angle(corner_angle).fixed_points(fixed_points);
+    auto np = CVT_2::parameters::corner_angle(corner_angle)
+                  .fixed_points(fixed_points)
+                  .minimum_ring_area(minimum_ring_area);
     r = deviation_bound
             ? CVT_2::resample_constraints_2(*cdt, h, np.deviation_bound(*deviation_bound))
             : CVT_2::resample_constraints_2(*cdt, h, np);
@@ -513,6 +518,8 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
   report["runs"] = r.runs;
   report["kept_for_deviation"] = r.kept_for_deviation;
   report["kept_for_topology"] = r.kept_for_topology;
+  report["rings_dropped"] = r.rings_dropped;
+  report["generators_dropped"] = r.generators_dropped;
   report["max_deviation"] = r.max_deviation;
   report["area_before"] = r.area_before;
   report["area_after"] = r.area_after;
@@ -1147,7 +1154,8 @@ PYBIND11_MODULE(_cvt2, m) {
       .def_property_readonly("notes", [](const Domain& d) { return d.data.file.repeated; })
       .def("arrays", &domain_arrays)
       .def("resample", &domain_resample, py::arg("cells"), py::arg("size"),
-           py::arg("deviation_bound"), py::arg("corner_angle"), py::arg("fixed_points"))
+           py::arg("deviation_bound"), py::arg("corner_angle"), py::arg("fixed_points"),
+           py::arg("minimum_ring_area"))
       .def("cells_for_size", &domain_cells_for_size, py::arg("size"));
 
   py::class_<Diagram, std::shared_ptr<Diagram>>(m, "Diagram")

@@ -824,3 +824,44 @@ TEST_CASE("a size from a number of cells, and back", "[resample]") {
   CHECK_THROWS_AS(CVT_2::cell_size_for_cells_2(square, 0), CVT_2::Domain_error);
   CHECK_THROWS_AS(CVT_2::resample_constraints_2(square, -1.0), CVT_2::Domain_error);
 }
+
+TEST_CASE("rings below the minimum area go with what is inside them: islands, lakes, holes",
+          "[resample]") {
+  // The unit square with a hole (0.04) holding an island (1e-4) with a generator and a lake
+  // (1e-6) in it, and a small hole (1e-4) elsewhere.
+  CVT_2::IO::Poly_data<Point> poly;
+  const auto square = [&](double x, double y, double side) {
+    add_ring(poly, {{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}});
+  };
+  square(0, 0, 1);
+  square(0.2, 0.2, 0.2), poly.holes.emplace_back(0.21, 0.21);
+  square(0.3, 0.3, 0.01);
+  square(0.303, 0.303, 0.001), poly.holes.emplace_back(0.3035, 0.3035);
+  square(0.7, 0.7, 0.01), poly.holes.emplace_back(0.705, 0.705);
+  poly.vertices.emplace_back(0.305, 0.307);  // a generator on the island
+  const Cdt_ids before = triangulate(poly);
+  REQUIRE(in_domain(before, Point(0.305, 0.305)));
+  for (const double minimum : {0.0, 1e-3}) {
+    INFO("minimum ring area " << minimum);
+    Cdt_ids after = before;
+    const auto r =
+        CVT_2::resample_constraints_2(after, 0.05, CVT_2::parameters::minimum_ring_area(minimum));
+    const bool drop = minimum > 0;
+    CHECK(r.rings_dropped == (drop ? 3u : 0u));
+    CHECK(r.generators_dropped == (drop ? 1u : 0u));
+    CHECK(r.area_before == Approx(1 - 0.04 + 1e-4 - 1e-6 - 1e-4));
+    CHECK(r.area_after == Approx(drop ? 1 - 0.04 : r.area_before));
+    CHECK(in_domain(after, Point(0.305, 0.305)) == !drop);  // the island
+    CHECK(in_domain(after, Point(0.705, 0.705)) == drop);   // the small hole, filled
+    CHECK(!in_domain(after, Point(0.25, 0.25)));            // the big hole stays
+    std::size_t in_small_rings = 0;
+    for (auto v = after.finite_vertices_begin(); v != after.finite_vertices_end(); ++v) {
+      const Point& p = v->point();
+      in_small_rings += (p.x() >= 0.3 && p.x() <= 0.31 && p.y() >= 0.3 && p.y() <= 0.31) ||
+                        (p.x() >= 0.7 && p.x() <= 0.71 && p.y() >= 0.7 && p.y() <= 0.71);
+    }
+    // Kept, each ring of the three is a triangle (three points at least, all within the bound).
+    CHECK(in_small_rings == (drop ? 0u : 3u + 3u + 3u + 1u));
+    check_invariants(after, snapshot_marks(after), 100);
+  }
+}

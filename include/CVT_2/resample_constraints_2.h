@@ -35,6 +35,8 @@ struct Resampling_report {
   /// input vertices kept beyond the size's count: where a chord would leave the input by more
   /// than the bound, or cross or cut off another constraint or a generator
   std::size_t kept_for_deviation = 0, kept_for_topology = 0;
+  /// rings below `minimum_ring_area`, and the rings and generators inside them, removed
+  std::size_t rings_dropped = 0, generators_dropped = 0;
   /// the largest distance from an input vertex to the chord that replaced it (the one-sided
   /// Hausdorff distance from the input polylines to the resampled ones)
   double max_deviation = 0;
@@ -66,7 +68,10 @@ struct Resampling_report {
 /// \param np named parameters:
 ///   - `deviation_bound(d)`: how far a chord may leave the input (default `h / 4`);
 ///   - `corner_angle(a)`: the turn, in degrees, above which a vertex is a corner (default 30);
-///   - `fixed_points(r)`: a range of points: constrained vertices there are features.
+///   - `fixed_points(r)`: a range of points: constrained vertices there are features;
+///   - `minimum_ring_area(a)`: a ring (a closed polyline meeting no other, with no fixed point)
+///     that encloses less than `a` is removed, with the lines, rings and generators inside it:
+///     an island below it is dropped, a hole below it filled (default 0: none).
 /// \throws Domain_error for a size or bound that is not a positive number.
 template <class CDT, class NP = No_named_parameters>
 Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()) {
@@ -86,7 +91,12 @@ Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()
   if constexpr (internal_np::has_parameter<NP, internal_np::fixed_points_t>)
     for (const auto& p : get_parameter(np, internal_np::fixed_points_t())) fixed.push_back(p);
 
-  internal::Run_resampler<CDT> resampler(cdt, h, bound, corner, fixed);
+  const double minimum_ring_area =
+      choose_parameter(get_parameter(np, internal_np::minimum_ring_area_t()), 0.0);
+  if (!(minimum_ring_area >= 0) || !std::isfinite(minimum_ring_area))
+    throw Domain_error("the minimum ring area must be a non-negative number, not " +
+                       std::to_string(minimum_ring_area));
+  internal::Run_resampler<CDT> resampler(cdt, h, bound, corner, fixed, minimum_ring_area);
   resampler.resample();
   Resampling_report report;
   report.input_vertices = resampler.input_vertices;
@@ -96,6 +106,8 @@ Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()
   report.runs = resampler.runs;
   report.kept_for_deviation = resampler.kept_for_deviation;
   report.kept_for_topology = resampler.kept_for_topology;
+  report.rings_dropped = resampler.rings_dropped;
+  report.generators_dropped = resampler.generators_dropped;
   report.max_deviation = resampler.max_deviation;
   report.area_before = internal::Run_resampler<CDT>::domain_area(cdt);
 

@@ -252,7 +252,14 @@ class Domain:
     resampling = None
 
     def resample(
-        self, *, cells=None, size=None, deviation_bound=None, corner_angle=30.0, fixed_points=None
+        self,
+        *,
+        cells=None,
+        size=None,
+        deviation_bound=None,
+        corner_angle=30.0,
+        fixed_points=None,
+        minimum_ring_area=0.0,
     ) -> "Domain":
         """A new domain, its polylines resampled to a cell size, so that a finely digitised
         boundary does not give a speck of a cell at each of its vertices (``cvt2 --boundary
@@ -262,7 +269,10 @@ class Domain:
         vertices are replaced by points on it about a cell size apart, never more points than
         it had. An input vertex is kept where a chord would leave the input by more than
         ``deviation_bound`` (default a quarter of the size) or change the topology (cross a
-        line, cut off a point or a generator). Generators and the domain's marks stay.
+        line, cut off a point or a generator). Generators and the domain's marks stay. A ring
+        (a closed line meeting no other, with no fixed point) enclosing less than
+        ``minimum_ring_area`` goes, with the lines and generators inside it: an island is
+        dropped, a hole filled (``cvt2 --minimum-ring-area``; default 0: none).
 
         - ``size``: the cell size ``H``, the spacing of a hexagonal tiling (a cell of area
           ``sqrt(3)/2 H**2``); or
@@ -273,7 +283,8 @@ class Domain:
         The new domain is described by arrays (:attr:`vertices`, :attr:`segments`,
         :attr:`holes`); its ``resampling`` is a dict: ``size``, ``input_vertices``,
         ``output_vertices``, ``features``, ``corners``, ``runs``, ``kept_for_deviation``,
-        ``kept_for_topology``, ``max_deviation`` (the largest distance from an input vertex to
+        ``kept_for_topology``, ``rings_dropped``, ``generators_dropped``, ``max_deviation``
+        (the largest distance from an input vertex to
         the new polylines), ``area_before``, ``area_after``.
         """
         if (cells is None) == (size is None):
@@ -284,6 +295,7 @@ class Domain:
             None if deviation_bound is None else float(deviation_bound),
             float(corner_angle),
             fixed_points,
+            float(minimum_ring_area),
         )
         d = Domain._wrap(impl)
         d.resampling = report

@@ -60,6 +60,7 @@ class Domain:
         deviation_bound: Optional[float] = ...,
         corner_angle: float = ...,
         fixed_points: Optional[_Points] = ...,
+        minimum_ring_area: float = ...,
     ) -> Domain: ...
     def cells_for_size(self, size: float) -> float: ...
 

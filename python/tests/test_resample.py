@@ -152,3 +152,18 @@ def test_program_writes_the_resampled_domain_and_the_layer(program, data, tmp_pa
     p = subprocess.run([program, str(name), "--top", "1", "--bottom", "1"], capture_output=True,
                        text=True)
     assert p.returncode != 0 and "--bottom must be below --top" in p.stderr
+
+
+def test_minimum_ring_area_drops_small_islands(program, data, tmp_path):
+    import subprocess
+    world = cvt2.Domain.from_file(data / "world_land_110m.wkt")
+    cell = 3**0.5 / 2 * world.resample(cells=2000).resampling["size"] ** 2
+    kept, dropped = world.resample(cells=2000), world.resample(cells=2000, minimum_ring_area=cell)
+    assert kept.resampling["rings_dropped"] == 0 < dropped.resampling["rings_dropped"]
+    assert dropped.resampling["output_vertices"] < kept.resampling["output_vertices"]
+    # What goes is small: at most the dropped rings' count times a cell.
+    lost = kept.area - dropped.area
+    assert 0 < lost < dropped.resampling["rings_dropped"] * cell
+    p = subprocess.run([program, str(data / "world_land_110m.wkt"), "--minimum-ring-area", "1"],
+                       capture_output=True, text=True)
+    assert p.returncode != 0 and "--minimum-ring-area needs --boundary resample" in p.stderr

@@ -70,6 +70,7 @@ struct Options {
   bool resample = false;              // --boundary resample
   std::optional<double> deviation_bound;
   double corner_angle = 30;
+  double minimum_ring_area = 0;
   std::string points_in;
   std::optional<double> boundary_tolerance;  // default: insert_generators_2()'s
   std::uint64_t seed = 1;
@@ -116,6 +117,8 @@ void print_help(std::ostream& os) {
         "                         quarter of the cell size)\n"
         "      --corner-angle A   resample: a vertex where the polyline turns by more than A\n"
         "                         degrees, seen a cell size away on either side, stays (30)\n"
+        "      --minimum-ring-area A  resample: an island or hole enclosing less than A goes,\n"
+        "                         with what is inside it (default 0: none)\n"
         "Iteration:\n"
         "      --algorithm A      lbfgs | lloyd (default lbfgs: L-BFGS on the CVT energy, which\n"
         "                         starts with and falls back to Lloyd steps, and reaches the\n"
@@ -210,6 +213,8 @@ const std::map<std::string, Setter>& valued_options() {
                              "yet: use --boundary resample");
          o.resample = parse_choice(n, v, "keep", "resample") == "resample";
        }},
+      {"--minimum-ring-area",
+       [](Options& o, auto& n, auto& v) { o.minimum_ring_area = parse_non_negative(n, v); }},
       {"--corner-angle",
        [](Options& o, auto& n, auto& v) { o.corner_angle = parse_non_negative(n, v); }},
       {"--deviation-bound",
@@ -307,6 +312,8 @@ Options parse_command_line(int argc, char* argv[]) {
                       " >= " + std::to_string(o.top));
   if (o.deviation_bound && !o.resample)
     throw Usage_error("--deviation-bound needs --boundary resample");
+  if (o.minimum_ring_area > 0 && !o.resample)
+    throw Usage_error("--minimum-ring-area needs --boundary resample");
   if (o.boundary_tolerance && o.points_in.empty())
     throw Usage_error("--boundary-tolerance needs --points-in");
   return o;
@@ -535,7 +542,8 @@ void resample(const Options& o, std::size_t free_generators, CDT& cdt,
       : o.cells ? CVT_2::cell_size_for_cells_2(cdt, *o.cells)
                 : std::sqrt(2 * area /
                             (std::sqrt(3.0) * double(std::max<std::size_t>(free_generators, 1))));
-  const auto np = CVT_2::parameters::corner_angle(o.corner_angle);
+  const auto np =
+      CVT_2::parameters::corner_angle(o.corner_angle).minimum_ring_area(o.minimum_ring_area);
   const auto r = o.deviation_bound
                      ? CVT_2::resample_constraints_2(cdt, h, np.deviation_bound(*o.deviation_bound))
                      : CVT_2::resample_constraints_2(cdt, h, np);
@@ -552,8 +560,9 @@ void resample(const Options& o, std::size_t free_generators, CDT& cdt,
             << r.input_vertices << " vertices on constraints -> " << r.output_vertices << " ("
             << r.features << " features, " << r.corners << " of them corners; kept "
             << r.kept_for_deviation << " for the deviation bound, " << r.kept_for_topology
-            << " for the topology); largest deviation " << r.max_deviation << ", area "
-            << r.area_before << " -> " << r.area_after << '\n';
+            << " for the topology); " << r.rings_dropped << " rings and " << r.generators_dropped
+            << " generators below the minimum ring area dropped; largest deviation "
+            << r.max_deviation << ", area " << r.area_before << " -> " << r.area_after << '\n';
 }
 
 int run(const Options& o) {

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -40,12 +41,18 @@ class Run_resampler {
   // What resample() counted.
   std::size_t input_vertices = 0, output_vertices = 0, features = 0, corners = 0, runs = 0;
   std::size_t kept_for_deviation = 0, kept_for_topology = 0;
+  std::size_t rings_dropped = 0, generators_dropped = 0;
   double max_deviation = 0;
 
   Run_resampler(const CDT& cdt, double h, double bound, double corner_angle,
-                const std::vector<Point_2>& fixed)
-      : m_cdt(cdt), m_h(h), m_bound(bound), m_corner(corner_angle) {
+                const std::vector<Point_2>& fixed, double minimum_ring_area)
+      : m_cdt(cdt),
+        m_h(h),
+        m_bound(bound),
+        m_corner(corner_angle),
+        m_minimum_ring_area(minimum_ring_area) {
     collect(std::set<Point_2>(fixed.begin(), fixed.end()));
+    drop_inside_dropped_rings();
   }
 
   void resample() {
@@ -162,8 +169,69 @@ class Run_resampler {
       if (!feature[s] && !visited[s]) {  // a ring without features
         visited[s] = true;
         auto [p, chain] = trace(s, adjacent[s][0]);
+        if (std::abs(area(p)) < m_minimum_ring_area) {
+          m_dropped.push_back(std::move(p));
+          continue;
+        }
         add_chain(std::move(p), sides(vertex[chain[0]], vertex[chain[1]]), true);
       }
+    runs = m_runs.size();
+  }
+
+  // The signed area of the closed polyline p (p.front() == p.back()), by the shoelace formula
+  // about its first point.
+  static double area(const std::vector<Point_2>& p) {
+    double a = 0;
+    for (std::size_t i = 1; i + 1 < p.size(); ++i)
+      a += CGAL::to_double(CGAL::area(p[0], p[i], p[i + 1]));
+    return a;
+  }
+
+  // The winding number of the closed polyline through [first, last) (closed from the last point
+  // to the first) around x, by exact orientations; x on it counts as 0.
+  template <class Iterator>
+  static int winding(Iterator first, Iterator last, const Point_2& x) {
+    int w = 0;
+    for (Iterator i = first; i != last; ++i) {
+      const Iterator j = std::next(i) == last ? first : std::next(i);
+      const Point_2 &u = *i, &v = *j;
+      if (u.y() <= x.y()) {
+        if (v.y() > x.y() && CGAL::orientation(u, v, x) == CGAL::LEFT_TURN) ++w;
+      } else if (v.y() <= x.y() && CGAL::orientation(u, v, x) == CGAL::RIGHT_TURN) {
+        --w;
+      }
+    }
+    return w;
+  }
+
+  // The rings smaller than the minimum area go with everything inside them: the runs (which
+  // cannot cross them, so one vertex says) and the generators.
+  void drop_inside_dropped_rings() {
+    rings_dropped = m_dropped.size();
+    if (m_dropped.empty()) return;
+    std::vector<CGAL::Bbox_2> boxes;
+    for (const auto& ring : m_dropped) {
+      CGAL::Bbox_2 b;
+      for (const Point_2& q : ring) b += q.bbox();
+      boxes.push_back(b);
+    }
+    const auto in_dropped = [&](const Point_2& x) {
+      for (std::size_t i = 0; i < m_dropped.size(); ++i)
+        if (CGAL::do_overlap(boxes[i], x.bbox()) &&
+            winding(m_dropped[i].begin(), m_dropped[i].end() - 1, x) != 0)
+          return true;
+      return false;
+    };
+    m_runs.erase(std::remove_if(m_runs.begin(), m_runs.end(),
+                                [&](const Run& r) {
+                                  const bool in = in_dropped(r.p[1]);
+                                  rings_dropped += in && r.p.front() == r.p.back();
+                                  return in;
+                                }),
+                 m_runs.end());
+    const std::size_t generators = m_points.size();
+    m_points.erase(std::remove_if(m_points.begin(), m_points.end(), in_dropped), m_points.end());
+    generators_dropped = generators - m_points.size();
     runs = m_runs.size();
   }
 
@@ -407,19 +475,11 @@ class Run_resampler {
         CGAL::collinear_are_strictly_ordered_along_line(a, x, b))
       return true;
     const auto [first, last] = interior(r, j);
-    int winding = 0;
-    const auto edge = [&](const Point_2& u, const Point_2& v) {
-      if (u.y() <= x.y()) {
-        if (v.y() > x.y() && CGAL::orientation(u, v, x) == CGAL::LEFT_TURN) ++winding;
-      } else if (v.y() <= x.y() && CGAL::orientation(u, v, x) == CGAL::RIGHT_TURN) {
-        --winding;
-      }
-    };
-    Point_2 u = a;
-    for (std::size_t i = first; i < last; ++i) edge(u, r.p[i]), u = r.p[i];
-    edge(u, b);
-    edge(b, a);
-    return winding != 0;
+    std::vector<Point_2> region{a};
+    region.insert(region.end(), r.p.begin() + std::ptrdiff_t(first),
+                  r.p.begin() + std::ptrdiff_t(last));
+    region.push_back(b);
+    return winding(region.begin(), region.end(), x) != 0;
   }
 
   // Finds the chords that cross an input segment or another chord, or sweep over a vertex or a
@@ -535,8 +595,9 @@ class Run_resampler {
   }
 
   const CDT& m_cdt;
-  double m_h, m_bound, m_corner;
+  double m_h, m_bound, m_corner, m_minimum_ring_area;
   std::vector<Run> m_runs;
+  std::vector<std::vector<Point_2>> m_dropped;  // the rings below the minimum area
   std::vector<Point_2> m_points;
   std::vector<Chord> m_chords;
 };
