@@ -823,6 +823,16 @@ TEST_CASE("a size from a number of cells, and back", "[resample]") {
         Approx(1 / (std::sqrt(3.0) / 2 * h * h) + 2 / h));
   CHECK_THROWS_AS(CVT_2::cell_size_for_cells_2(square, 0), CVT_2::Domain_error);
   CHECK_THROWS_AS(CVT_2::resample_constraints_2(square, -1.0), CVT_2::Domain_error);
+  CHECK_THROWS_AS(CVT_2::cells_for_cell_size_2(square, 0.0), CVT_2::Domain_error);
+  CHECK_THROWS_AS(CVT_2::resample_constraints_2(square, 0.1, CVT_2::parameters::corner_angle(-1.0)),
+                  CVT_2::Domain_error);
+  // A minimum ring area that would remove the whole domain is an error, the domain unchanged.
+  const std::size_t vertices = square.number_of_vertices();
+  CHECK_THROWS_WITH(
+      CVT_2::resample_constraints_2(square, 0.1, CVT_2::parameters::minimum_ring_area(2.0)),
+      Catch::Contains("removes the whole domain"));
+  CHECK(square.number_of_vertices() == vertices);
+  CHECK(domain_area(square) == Approx(1));
 }
 
 TEST_CASE("rings below the minimum area go with what is inside them: islands, lakes, holes",

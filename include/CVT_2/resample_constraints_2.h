@@ -72,7 +72,9 @@ struct Resampling_report {
 ///   - `minimum_ring_area(a)`: a ring (a closed polyline meeting no other, with no fixed point)
 ///     that encloses less than `a` is removed, with the lines, rings and generators inside it:
 ///     an island below it is dropped, a hole below it filled (default 0: none).
-/// \throws Domain_error for a size or bound that is not a positive number.
+/// \throws Domain_error for a size that is not a positive number, a bound, angle or area that
+///         is not a non-negative one, or a minimum ring area that removes the whole domain (the
+///         triangulation is then unchanged).
 template <class CDT, class NP = No_named_parameters>
 Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()) {
   using Point_2 = typename CDT::Point_2;
@@ -85,8 +87,12 @@ Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()
   if (!(bound >= 0) || !std::isfinite(bound))
     throw Domain_error("the deviation bound must be a non-negative number, not " +
                        std::to_string(bound));
-  const double corner =
-      choose_parameter(get_parameter(np, internal_np::corner_angle_t()), 30.0) * CGAL_PI / 180;
+  const double corner_degrees =
+      choose_parameter(get_parameter(np, internal_np::corner_angle_t()), 30.0);
+  if (!(corner_degrees >= 0) || !std::isfinite(corner_degrees))
+    throw Domain_error("the corner angle must be a non-negative number of degrees, not " +
+                       std::to_string(corner_degrees));
+  const double corner = corner_degrees * CGAL_PI / 180;
   std::vector<Point_2> fixed;
   if constexpr (internal_np::has_parameter<NP, internal_np::fixed_points_t>)
     for (const auto& p : get_parameter(np, internal_np::fixed_points_t())) fixed.push_back(p);
@@ -135,6 +141,9 @@ Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()
     left_inside[{&*handle[c.b], &*handle[c.a]}] = c.right_inside;
   }
   internal::mark_by_sides(out, left_inside);
+  if (report.area_before > 0 && !(internal::Run_resampler<CDT>::domain_area(out) > 0))
+    throw Domain_error("the minimum ring area " + std::to_string(minimum_ring_area) +
+                       " removes the whole domain; the triangulation is unchanged");
   cdt.swap(out);
   report.area_after = internal::Run_resampler<CDT>::domain_area(cdt);
   return report;
@@ -163,8 +172,11 @@ double cell_size_for_cells_2(const CDT& cdt, std::size_t cells) {
 /// \ingroup PkgCvt2Ref
 /// The number of cells that the cell size `h` gives the domain of `cdt`, the inverse of
 /// `cell_size_for_cells_2()`: `A / (sqrt(3)/2 h^2) + L / (2 h)`, not rounded.
+/// \throws Domain_error if `h` is not a positive number.
 template <class CDT>
 double cells_for_cell_size_2(const CDT& cdt, double h) {
+  if (!(h > 0) || !std::isfinite(h))
+    throw Domain_error("the cell size must be a positive number, not " + std::to_string(h));
   const double area = internal::Run_resampler<CDT>::domain_area(cdt);
   const double length = internal::Run_resampler<CDT>::boundary_length(cdt);
   return area / (std::sqrt(3.0) / 2 * h * h) + length / (2 * h);

@@ -6,6 +6,8 @@
 
 #include <CVT_2/IO/internal/write_number.h>
 #include <CVT_2/IO/read_poly.h>
+#include <CVT_2/exceptions.h>
+#include <CVT_2/internal/to_string.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -13,6 +15,7 @@
 #include <ostream>
 #include <string>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 namespace CVT_2 {
@@ -23,6 +26,8 @@ namespace IO {
 /// vertices (those on no segment are generators), and one hole point in each region that
 /// Triangle's rule would otherwise put in the domain (a region outside it, closed by
 /// constraints): `insert_poly()` of the result marks the same faces.
+/// \throws Domain_error for a region outside the domain so thin that no centroid of its
+///         triangles lies strictly inside it in double precision.
 template <class CDT>
 Poly_data<typename CDT::Point_2> domain_poly_data(const CDT& cdt,
                                                   const std::string& source = "<triangulation>") {
@@ -43,14 +48,13 @@ Poly_data<typename CDT::Point_2> domain_poly_data(const CDT& cdt,
     }
   std::sort(d.segments.begin(), d.segments.end());
   // Each region outside the domain that the unbounded face does not reach: a hole point at
-  // the centroid of its largest triangle.
+  // the centroid of its largest triangle (ties: the smaller centroid) whose centroid lies
+  // strictly inside a triangle of the region (exact location: not on an edge by rounding).
   std::unordered_set<Face_handle> seen;
   for (auto start = cdt.finite_faces_begin(); start != cdt.finite_faces_end(); ++start) {
     if (start->is_inside_domain() || !seen.insert(Face_handle(start)).second) continue;
-    std::vector<Face_handle> stack{start};
+    std::vector<Face_handle> stack{start}, region;
     bool bounded = true;
-    Face_handle largest = start;
-    double largest_area = -1;
     while (!stack.empty()) {
       const Face_handle f = stack.back();
       stack.pop_back();
@@ -58,15 +62,35 @@ Poly_data<typename CDT::Point_2> domain_poly_data(const CDT& cdt,
         bounded = false;
         continue;
       }
-      const double a = CGAL::to_double(cdt.triangle(f).area());
-      if (a > largest_area) largest_area = a, largest = f;
+      region.push_back(f);
       for (int i = 0; i < 3; ++i)
         if (!cdt.is_constrained({f, i}) && seen.insert(f->neighbor(i)).second)
           stack.push_back(f->neighbor(i));
     }
-    if (bounded)
-      d.holes.push_back(CGAL::centroid(largest->vertex(0)->point(), largest->vertex(1)->point(),
-                                       largest->vertex(2)->point()));
+    if (!bounded) continue;
+    using Point_2 = typename CDT::Point_2;
+    std::vector<std::pair<double, Point_2>> candidates;
+    for (const Face_handle f : region)
+      candidates.emplace_back(
+          -CGAL::to_double(cdt.triangle(f).area()),
+          CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()));
+    std::sort(candidates.begin(), candidates.end());
+    const std::unordered_set<Face_handle> in_region(region.begin(), region.end());
+    bool seeded = false;
+    for (const auto& [minus_area, c] : candidates) {
+      typename CDT::Locate_type lt;
+      int li;
+      const Face_handle f = cdt.locate(c, lt, li);
+      if (lt == CDT::FACE && in_region.count(f) > 0) {
+        d.holes.push_back(c);
+        seeded = true;
+        break;
+      }
+    }
+    if (!seeded)
+      throw Domain_error("a region outside the domain near " +
+                         CVT_2::internal::to_string(candidates.front().second) +
+                         " is too thin for a hole point in double precision");
   }
   std::sort(d.holes.begin(), d.holes.end());
   d.vertex_lines.assign(d.vertices.size(), 0);

@@ -68,21 +68,27 @@ class Run_resampler {
   const std::vector<Point_2>& points() const { return m_points; }
   const std::vector<Chord>& chords() const { return m_chords; }
 
+  // The domain's area and its boundary's length (the constrained edges with the domain on one
+  // side): sums of sorted terms, the same bits whatever the triangulation's layout.
   static double domain_area(const CDT& cdt) {
-    double a = 0;
+    std::vector<double> terms;
     for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-      if (f->is_inside_domain()) a += CGAL::to_double(cdt.triangle(f).area());
-    return a;
+      if (f->is_inside_domain()) terms.push_back(CGAL::to_double(cdt.triangle(f).area()));
+    return sorted_sum(terms);
   }
-
-  // The length of the constrained edges with the domain on one side.
   static double boundary_length(const CDT& cdt) {
-    double l = 0;
+    std::vector<double> terms;
     for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
       if (cdt.is_constrained(*e) &&
           inside(cdt, e->first) != inside(cdt, e->first->neighbor(e->second)))
-        l += std::sqrt(CGAL::to_double(cdt.segment(*e).squared_length()));
-    return l;
+        terms.push_back(std::sqrt(CGAL::to_double(cdt.segment(*e).squared_length())));
+    return sorted_sum(terms);
+  }
+  static double sorted_sum(std::vector<double>& terms) {
+    std::sort(terms.begin(), terms.end());
+    double sum = 0;
+    for (const double t : terms) sum += t;
+    return sum;
   }
 
   static bool inside(const CDT& cdt, Face_handle f) {
@@ -470,7 +476,10 @@ class Run_resampler {
   // polyline (nonzero winding number, exact orientations).
   static bool swept(const Run& r, std::size_t j, const Point_2& x) {
     const Point_2 &a = r.nodes[j].q, &b = r.nodes[j + 1].q;
-    if (x == a || x == b) return false;
+    // An end that is an input vertex may be x itself (a feature other runs share); a computed
+    // end that lands on x would merge x into the run.
+    if (x == a) return r.nodes[j].t > 0;
+    if (x == b) return r.nodes[j + 1].t > 0;
     if (CGAL::orientation(a, b, x) == CGAL::COLLINEAR &&
         CGAL::collinear_are_strictly_ordered_along_line(a, x, b))
       return true;
@@ -548,8 +557,11 @@ class Run_resampler {
           if (conflict(chord(c, 0), chord(c, 1), chord(d, 0), chord(d, 1)))
             bad.emplace(c.run, c.j), bad.emplace(d.run, d.j);
         });
-    // From the last chord of each run to the first, so that the earlier indices stay valid.
+    // From the last chord of each run to the first, so that the earlier indices stay valid; a
+    // run whose nodes a fallback rebuilt waits for the next pass, which finds its chords again.
+    std::size_t rebuilt = m_runs.size();
     for (auto it = bad.rbegin(); it != bad.rend(); ++it) {
+      if (it->first == rebuilt) continue;
       Run& r = m_runs[it->first];
       const std::size_t j = it->second;
       std::size_t v = 0;
@@ -569,6 +581,7 @@ class Run_resampler {
           nodes.insert(at_or_after, Node{v, 0, r.p[v]});
       }
       r.nodes = std::move(nodes);
+      rebuilt = it->first;
       ++kept_for_topology;
     }
     return !bad.empty();
