@@ -25,5 +25,7 @@ check "$root/build/tools/cvt2/cvt2" "$data/four_clusters.wkt" -n 20000 --iterati
   --geojson "$out/b.geojson"  # threads
 check "$root/build/tools/cvt2/cvt2" "$data/us_kentucky_counties.geojson" -n 3000 --iterations 3 --quiet \
   --geojson "$out/c.geojson" --disv "$out/c.disv"
+check "$root/build/tools/cvt2/cvt2" "$data/world_land_110m.wkt" --boundary resample --cells 1500 \
+  --minimum-ring-area 10 --iterations 2 --quiet --vtu "$out/d.vtu" --domain-out "$out/d.poly"
 rm -r "$out"
 echo "valgrind: no error, no leak"
