@@ -121,11 +121,10 @@ Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()
   const std::vector<Point_2>& points = resampler.points();
   std::vector<std::size_t> order(points.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
-  using Map = CGAL::Pointer_property_map<Point_2>;
-  CGAL::spatial_sort(
-      order.begin(), order.end(),
-      CGAL::Spatial_sort_traits_adapter_2<typename CDT::Geom_traits, typename Map::const_type>(
-          CGAL::make_property_map(points)));
+  using Map = typename CGAL::Pointer_property_map<Point_2>::const_type;
+  CGAL::spatial_sort(order.begin(), order.end(),
+                     CGAL::Spatial_sort_traits_adapter_2<typename CDT::Geom_traits, Map>(
+                         Map(points.data())));  // not make_property_map(): &v[0] of none
   CDT out(cdt.geom_traits());
   std::vector<Vertex_handle> handle(points.size());
   typename CDT::Face_handle hint;
