@@ -459,20 +459,8 @@ py::dict domain_arrays(const Domain& d) {
 py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
                           std::optional<double> size, std::optional<double> deviation_bound,
                           double corner_angle, py::handle fixed, double minimum_ring_area) {
+  // The numbers are checked by resample_constraints_2() and cell_size_for_cells_2().
   if (cells.has_value() == size.has_value()) throw py::value_error("give one of cells and size");
-  if (cells && *cells == 0) throw py::value_error("cells must be positive, not 0");
-  if (size && !(*size > 0 && std::isfinite(*size)))
-    throw py::value_error("size must be a positive number, not " +
-                          CVT_2::internal::number_to_string(*size));
-  if (deviation_bound && !(*deviation_bound >= 0 && std::isfinite(*deviation_bound)))
-    throw py::value_error("deviation_bound must be a number >= 0, not " +
-                          CVT_2::internal::number_to_string(*deviation_bound));
-  if (!(corner_angle >= 0 && std::isfinite(corner_angle)))
-    throw py::value_error("corner_angle must be a number >= 0, not " +
-                          CVT_2::internal::number_to_string(corner_angle));
-  if (!(minimum_ring_area >= 0 && std::isfinite(minimum_ring_area)))
-    throw py::value_error("minimum_ring_area must be a number >= 0, not " +
-                          CVT_2::internal::number_to_string(minimum_ring_area));
   const std::vector<Point_2> fixed_points =
       fixed.is_none() ? std::vector<Point_2>() : to_points(fixed, "fixed_points");
   auto out = std::make_shared<Domain>();
@@ -490,17 +478,13 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
             : CVT_2::resample_constraints_2(*cdt, h, np);
     out->data.description = CVT_2::IO::domain_poly_data(*cdt, "<arrays>");
     out->data.file.source = d.data.file.source + " (resampled)";
-    const auto number = [](double x) {
-      std::ostringstream os;
-      CVT_2::internal::write_number(os, x);
-      return os.str();
-    };
+    using CVT_2::internal::number_text;
     out->metadata = {d.metadata[0],
                      d.metadata[1],
                      {"boundary", "resample"},
-                     {"cell_size", number(h)},
-                     {"deviation_bound", number(deviation_bound ? *deviation_bound : h / 4)},
-                     {"max_deviation", number(r.max_deviation)}};
+                     {"cell_size", number_text(h)},
+                     {"deviation_bound", number_text(deviation_bound ? *deviation_bound : h / 4)},
+                     {"max_deviation", number_text(r.max_deviation)}};
     out->data.file.format = out->format = "arrays";
     const auto& poly = std::get<0>(out->data.description);
     std::vector<bool> on_segment(poly.vertices.size(), false);
@@ -528,9 +512,6 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
 
 // The number of cells that the size h gives the domain (cells_for_cell_size_2()).
 double domain_cells_for_size(const Domain& d, double h) {
-  if (!(h > 0 && std::isfinite(h)))
-    throw py::value_error("size must be a positive number, not " +
-                          CVT_2::internal::number_to_string(h));
   py::gil_scoped_release release;
   return CVT_2::cells_for_cell_size_2(*d.triangulation(), h);
 }

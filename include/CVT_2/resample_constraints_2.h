@@ -7,6 +7,7 @@
 
 #include <CVT_2/exceptions.h>
 #include <CVT_2/internal/resample_runs.h>
+#include <CVT_2/internal/to_string.h>
 #include <CVT_2/parameters.h>
 
 #include <CGAL/Kernel/global_functions.h>
@@ -82,16 +83,17 @@ Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()
   using internal_np::choose_parameter;
   using internal_np::get_parameter;
   if (!(h > 0) || !std::isfinite(h))
-    throw Domain_error("the cell size must be a positive number, not " + std::to_string(h));
+    throw Domain_error("the cell size must be a positive number, not " +
+                       internal::number_to_string(h));
   const double bound = choose_parameter(get_parameter(np, internal_np::deviation_bound_t()), h / 4);
   if (!(bound >= 0) || !std::isfinite(bound))
     throw Domain_error("the deviation bound must be a non-negative number, not " +
-                       std::to_string(bound));
+                       internal::number_to_string(bound));
   const double corner_degrees =
       choose_parameter(get_parameter(np, internal_np::corner_angle_t()), 30.0);
   if (!(corner_degrees >= 0) || !std::isfinite(corner_degrees))
     throw Domain_error("the corner angle must be a non-negative number of degrees, not " +
-                       std::to_string(corner_degrees));
+                       internal::number_to_string(corner_degrees));
   const double corner = corner_degrees * CGAL_PI / 180;
   std::vector<Point_2> fixed;
   if constexpr (internal_np::has_parameter<NP, internal_np::fixed_points_t>)
@@ -101,7 +103,7 @@ Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()
       choose_parameter(get_parameter(np, internal_np::minimum_ring_area_t()), 0.0);
   if (!(minimum_ring_area >= 0) || !std::isfinite(minimum_ring_area))
     throw Domain_error("the minimum ring area must be a non-negative number, not " +
-                       std::to_string(minimum_ring_area));
+                       internal::number_to_string(minimum_ring_area));
   internal::Run_resampler<CDT> resampler(cdt, h, bound, corner, fixed, minimum_ring_area);
   resampler.resample();
   Resampling_report report;
@@ -141,7 +143,7 @@ Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()
   }
   internal::mark_by_sides(out, left_inside);
   if (report.area_before > 0 && !(internal::Run_resampler<CDT>::domain_area(out) > 0))
-    throw Domain_error("the minimum ring area " + std::to_string(minimum_ring_area) +
+    throw Domain_error("the minimum ring area " + internal::number_to_string(minimum_ring_area) +
                        " removes the whole domain; the triangulation is unchanged");
   cdt.swap(out);
   report.area_after = internal::Run_resampler<CDT>::domain_area(cdt);
@@ -175,7 +177,8 @@ double cell_size_for_cells_2(const CDT& cdt, std::size_t cells) {
 template <class CDT>
 double cells_for_cell_size_2(const CDT& cdt, double h) {
   if (!(h > 0) || !std::isfinite(h))
-    throw Domain_error("the cell size must be a positive number, not " + std::to_string(h));
+    throw Domain_error("the cell size must be a positive number, not " +
+                       internal::number_to_string(h));
   const double area = internal::Run_resampler<CDT>::domain_area(cdt);
   const double length = internal::Run_resampler<CDT>::boundary_length(cdt);
   return area / (std::sqrt(3.0) / 2 * h * h) + length / (2 * h);

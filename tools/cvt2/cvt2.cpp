@@ -17,6 +17,7 @@
 #include <CVT_2/IO/write_vtu.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
+#include <CVT_2/mark_domain_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 #include <CVT_2/resample_constraints_2.h>
 #include <CVT_2/version.h>
@@ -358,13 +359,6 @@ void insert_random_points(std::size_t n, const Options& o, const std::optional<S
                   : CVT_2::random_points_in_domain_2(cdt, n, np));
 }
 
-// A number as the shortest decimal that reads back as the same double.
-std::string number(double x) {
-  std::ostringstream os;
-  CVT_2::internal::write_number(os, x);
-  return os.str();
-}
-
 // --- optimization ------------------------------------------------------------------------------
 
 volatile std::sig_atomic_t interrupted = 0;
@@ -520,15 +514,8 @@ void print_summary(const Options& o, const CVT_2::Optimization_result& r, const 
 // The vertices with the domain on a side: each has a cell in the outputs.
 std::size_t vertices_in_domain(const CDT& cdt) {
   std::size_t n = 0;
-  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
-    auto f = cdt.incident_faces(v), done = f;
-    do
-      if (!cdt.is_infinite(f) && f->is_inside_domain()) {
-        ++n;
-        break;
-      }
-    while (++f != done);
-  }
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    n += CVT_2::internal::has_domain_face(cdt, v) ? 1 : 0;
   return n;
 }
 
@@ -552,9 +539,11 @@ void resample(const Options& o, std::size_t free_generators, CDT& cdt,
   CDT described;
   CVT_2::IO::insert_poly(described, CVT_2::IO::domain_poly_data(cdt));
   cdt.swap(described);
-  metadata.emplace_back("cell_size", number(h));
-  metadata.emplace_back("deviation_bound", number(o.deviation_bound ? *o.deviation_bound : h / 4));
-  metadata.emplace_back("max_deviation", number(r.max_deviation));
+  using CVT_2::internal::number_text;
+  metadata.emplace_back("cell_size", number_text(h));
+  metadata.emplace_back("deviation_bound",
+                        number_text(o.deviation_bound ? *o.deviation_bound : h / 4));
+  metadata.emplace_back("max_deviation", number_text(r.max_deviation));
   if (o.quiet) return;
   std::cerr << std::setprecision(4) << "cvt2: boundary resampled to the cell size " << h << ": "
             << r.input_vertices << " vertices on constraints -> " << r.output_vertices << " ("

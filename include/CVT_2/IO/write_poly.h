@@ -106,25 +106,20 @@ template <class CDT>
 void write_poly(std::ostream& os, const CDT& cdt) {
   const auto d = domain_poly_data(cdt);
   os << "# the domain of a triangulation (CVT_2): vertices, segments, holes\n";
-  os << d.vertices.size() << " 2 0 0\n";
-  for (std::size_t i = 0; i < d.vertices.size(); ++i) {
+  const auto point_line = [&os](std::size_t i, const typename CDT::Point_2& p) {
     os << i << ' ';
-    CVT_2::internal::write_number(os, d.vertices[i].x());
+    CVT_2::internal::write_number(os, p.x());
     os << ' ';
-    CVT_2::internal::write_number(os, d.vertices[i].y());
+    CVT_2::internal::write_number(os, p.y());
     os << '\n';
-  }
+  };
+  os << d.vertices.size() << " 2 0 0\n";
+  for (std::size_t i = 0; i < d.vertices.size(); ++i) point_line(i, d.vertices[i]);
   os << d.segments.size() << " 0\n";
   for (std::size_t j = 0; j < d.segments.size(); ++j)
     os << j << ' ' << d.segments[j][0] << ' ' << d.segments[j][1] << '\n';
   os << d.holes.size() << '\n';
-  for (std::size_t j = 0; j < d.holes.size(); ++j) {
-    os << j << ' ';
-    CVT_2::internal::write_number(os, d.holes[j].x());
-    os << ' ';
-    CVT_2::internal::write_number(os, d.holes[j].y());
-    os << '\n';
-  }
+  for (std::size_t j = 0; j < d.holes.size(); ++j) point_line(j, d.holes[j]);
 }
 
 }  // namespace IO

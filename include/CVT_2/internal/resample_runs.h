@@ -285,7 +285,6 @@ class Run_resampler {
             std::max_element(turns.begin(), turns.end(), [](const auto& a, const auto& b) {
               return a.first < b.first || (a.first == b.first && a.second > b.second);
             });
-        cut.push_back(best->second);
         std::rotate(p.begin(), p.begin() + std::ptrdiff_t(best->second), p.end() - 1);
         p.back() = p.front();
         m_runs.push_back({std::move(p), marks.first, marks.second, {}});

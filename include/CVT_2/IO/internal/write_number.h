@@ -7,6 +7,7 @@
 
 #include <charconv>
 #include <ostream>
+#include <string>
 
 namespace CVT_2 {
 namespace internal {
@@ -18,6 +19,14 @@ void write_number(std::ostream& os, const NT& value) {
   char buffer[32];
   const auto r = std::to_chars(buffer, buffer + sizeof(buffer), CGAL::to_double(value));
   os.write(buffer, r.ptr - buffer);
+}
+
+// The same as a string (metadata values).
+template <class NT>
+std::string number_text(const NT& value) {
+  char buffer[32];
+  const auto r = std::to_chars(buffer, buffer + sizeof(buffer), CGAL::to_double(value));
+  return std::string(buffer, r.ptr);
 }
 
 }  // namespace internal
