@@ -13,6 +13,7 @@
 #include <CVT_2/IO/write_poly.h>
 #include <CVT_2/IO/write_triangle.h>
 #include <CVT_2/IO/write_vtu.h>
+#include <CVT_2/Simulation_grid_2.h>
 #include <CVT_2/resample_constraints_2.h>
 
 #include <CGAL/Polygon_2_algorithms.h>
@@ -455,10 +456,11 @@ TEST_CASE("the mesh is the same on any number of threads, and without ids in the
   CHECK(mapped.edges().size() == one.edges().size());
 }
 
-TEST_CASE("a vertex on inner constraints has one cell with slits; polygons() drops them",
-          "[mesh]") {
-  // A square with a crack from its middle to the right side and a wall across the left half
-  // that ends inside: generators at the crack's tip and on the wall.
+namespace {
+
+// A square with a crack from its middle to the right side and a wall across the left half that
+// ends inside: generators at the crack's tip and on the wall.
+Cdt_ids crack_and_wall(std::size_t generators = 200) {
   CVT_2::IO::Poly_data<Point> poly;
   add_ring(poly, {{0, 0}, {4, 0}, {4, 4}, {0, 4}});
   const std::size_t first = poly.vertices.size();
@@ -471,7 +473,15 @@ TEST_CASE("a vertex on inner constraints has one cell with slits; polygons() dro
   poly.segment_lines.assign(poly.segments.size(), 0);
   CVT_2::IO::insert_poly(cdt, poly);
   CVT_2::insert_generators_2(
-      cdt, CVT_2::random_points_in_domain_2(cdt, 200, CVT_2::parameters::random_seed(4)));
+      cdt, CVT_2::random_points_in_domain_2(cdt, generators, CVT_2::parameters::random_seed(4)));
+  return cdt;
+}
+
+}  // namespace
+
+TEST_CASE("a vertex on inner constraints has one cell with slits; polygons() drops them",
+          "[mesh]") {
+  const Cdt_ids cdt = crack_and_wall();
   const Bvd_ids bvd(cdt);
   const Mesh mesh(bvd);
   check_mesh(mesh, cdt);
@@ -489,6 +499,71 @@ TEST_CASE("a vertex on inner constraints has one cell with slits; polygons() dro
     REQUIRE(rings.size() == 1);
     for (const auto i : rings[0]) CHECK(mesh.point(i) != p);  // the generator is inside
   }
+}
+
+TEST_CASE("a barrier splits the cells on it, one per side; no vertex or edge is shared across",
+          "[mesh][grid]") {
+  const Cdt_ids cdt = crack_and_wall();
+  const Bvd_ids bvd(cdt);
+  const Mesh mesh(bvd);
+  using Grid = CVT_2::Simulation_grid_2<Mesh>;
+  const auto parts_of = [&](const Grid& grid) {
+    std::vector<std::vector<std::size_t>> parts(mesh.number_of_cells());
+    for (std::size_t k = 0; k < grid.number_of_cells(); ++k) parts[grid.mesh_cell(k)].push_back(k);
+    return parts;
+  };
+  // Slits: the mesh's outlines, vertex for vertex.
+  const Grid slit(mesh);
+  REQUIRE(slit.number_of_cells() == mesh.number_of_cells());
+  for (std::size_t k = 0; k < mesh.number_of_cells(); ++k) {
+    const auto outline = mesh.outline(k);
+    REQUIRE(slit.degree(k) == outline.size());
+    for (std::size_t j = 0; j < outline.size(); ++j)
+      CHECK(slit.mesh_vertex(slit.vertex(k, j)) == outline[j]);
+  }
+  // Barriers: the generators inside the wall (1, 1) and where the crack meets the side (4, 2)
+  // have two cells; the tips (2, 2), (0.5, 1), (1.5, 1) one; the parts' areas are the cell's.
+  const Grid grid(mesh, CVT_2::BARRIER);
+  const auto parts = parts_of(grid);
+  for (std::size_t k = 0; k < mesh.number_of_cells(); ++k) {
+    const Point& p = mesh.generator(k)->point();
+    CAPTURE(p);
+    const bool split = p == Point(1, 1) || p == Point(4, 2);
+    CHECK(parts[k].size() == (split ? 2u : 1u));
+    double area = 0;
+    for (const std::size_t g : parts[k]) {
+      CHECK(grid.area(g) > 0);
+      area += CGAL::to_double(grid.area(g));
+    }
+    CHECK(area == Approx(CGAL::to_double(mesh.area(k))).margin(1e-15));
+  }
+  // Each edge is its cell beyond's, the other way round: with the same vertex numbers where
+  // no barrier lies under it, not both where one does (copies of the same points; the end
+  // where a barrier ends in a cell is one vertex).
+  std::size_t barrier_edges = 0;
+  for (std::size_t k = 0; k < grid.number_of_cells(); ++k)
+    for (std::size_t j = 0, n = grid.degree(k); j < n; ++j) {
+      const auto& side = grid.side(k, j);
+      const auto a = grid.vertex(k, j), b = grid.vertex(k, (j + 1) % n);
+      CHECK(side.barrier == (side.constraint != Grid::none && side.cell != Grid::none));
+      if (side.cell == Grid::none) continue;
+      barrier_edges += side.barrier;
+      bool found = false;
+      for (std::size_t i = 0, m = grid.degree(side.cell); i < m; ++i) {
+        const auto c = grid.vertex(side.cell, i), d = grid.vertex(side.cell, (i + 1) % m);
+        if (grid.point(c) != grid.point(b) || grid.point(d) != grid.point(a)) continue;
+        found = true;
+        CHECK((c == b && d == a) == !side.barrier);
+      }
+      CHECK(found);
+      if (!side.barrier) CHECK(grid.mesh_cell(side.cell) != grid.mesh_cell(k));
+    }
+  CHECK(barrier_edges >= 8);
+  // The DISV: the cells of the grid, vertices with their copies.
+  std::ostringstream disv;
+  CVT_2::IO::write_disv(disv, grid);
+  CHECK_THAT(disv.str(), Catch::Contains("NCPL " + std::to_string(grid.number_of_cells())));
+  CHECK(grid.number_of_cells() == mesh.number_of_cells() + 2);
 }
 
 TEST_CASE("a cell that meets itself at its generator becomes one ring per lobe", "[mesh]") {

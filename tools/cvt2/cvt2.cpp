@@ -15,6 +15,7 @@
 #include <CVT_2/IO/write_svg.h>
 #include <CVT_2/IO/write_triangle.h>
 #include <CVT_2/IO/write_vtu.h>
+#include <CVT_2/Simulation_grid_2.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/mark_domain_2.h>
@@ -53,6 +54,7 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CDT = CVT_2::Cvt_triangulation_2<K>;
 using BVD = CVT_2::Bounded_voronoi_diagram_2<CDT>;
 using Mesh = CVT_2::Bvd_mesh_2<BVD>;
+using Grid = CVT_2::Simulation_grid_2<Mesh>;
 using Point_2 = K::Point_2;
 using Sizing = CVT_2::Boundary_lipschitz_sizing_2<K>;
 
@@ -85,6 +87,7 @@ struct Options {
   unsigned threads = 0;  // 0: all cores
   std::string svg, points_out, cells_out, geojson, vtu, disv, mesh_out, domain_out;
   double top = 1, bottom = 0;  // of the DISV's layer
+  bool barriers = false;       // --constraints barrier
   bool quiet = false;
   bool help = false;
   bool version = false;
@@ -139,6 +142,11 @@ void print_help(std::ostream& os) {
         "                         meshio): cell, constrained, area, generator\n"
         "      --disv FILE        the cells as a MODFLOW 6 DISV grid, one layer (flopy)\n"
         "      --top T, --bottom B  the DISV layer's top and bottom (default 1 and 0)\n"
+        "      --constraints C    slit | barrier (default slit): what inner constraints are to\n"
+        "                         the cells of --disv, --vtu and --geojson. slit: cells cross\n"
+        "                         them (a constrained generator's cell lies on both sides).\n"
+        "                         barrier: a wall; a cell on it is split into one cell per side\n"
+        "                         (each centered at the generator), no face across it\n"
         "      --mesh-out PREFIX  the final triangulation: PREFIX.node, .ele, .edge (Triangle)\n"
         "      --domain-out FILE  the domain (resampled with --boundary resample) and its own\n"
         "                         generators as a Triangle .poly file\n"
@@ -213,6 +221,14 @@ const std::map<std::string, Setter>& valued_options() {
                              " slide (vertices that slide along the boundary) is not built "
                              "yet: use --boundary resample");
          o.resample = parse_choice(n, v, "keep", "resample") == "resample";
+       }},
+      {"--constraints",
+       [](Options& o, auto& n, auto& v) {
+         if (v == "conforming")
+           throw Usage_error(n +
+                             " conforming (faces along the line perpendicular to it) is not "
+                             "built yet: use --constraints slit or barrier");
+         o.barriers = parse_choice(n, v, "slit", "barrier") == "barrier";
        }},
       {"--minimum-ring-area",
        [](Options& o, auto& n, auto& v) { o.minimum_ring_area = parse_non_negative(n, v); }},
@@ -468,11 +484,19 @@ void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
   if (!o.cells_out.empty()) out.write(o.cells_out, [&](std::ostream& os) { write_cells(os, bvd); });
   if (!o.geojson.empty() || !o.vtu.empty() || !o.disv.empty()) {
     const Mesh mesh(bvd, o.threads);
-    if (!o.geojson.empty())
-      out.write(o.geojson, [&](std::ostream& os) { write_geojson(os, mesh, metadata); });
-    if (!o.vtu.empty()) out.write(o.vtu, [&](std::ostream& os) { write_vtu(os, mesh, metadata); });
+    const Grid grid(mesh, o.barriers ? CVT_2::BARRIER : CVT_2::SLIT);
+    const auto write = [&](const auto& cells) {
+      if (!o.geojson.empty())
+        out.write(o.geojson, [&](std::ostream& os) { write_geojson(os, cells, metadata); });
+      if (!o.vtu.empty())
+        out.write(o.vtu, [&](std::ostream& os) { write_vtu(os, cells, metadata); });
+    };
+    if (o.barriers)
+      write(grid);
+    else
+      write(mesh);  // the mesh's own cells and vertices, bit for bit
     if (!o.disv.empty())
-      out.write(o.disv, [&](std::ostream& os) { write_disv(os, mesh, o.top, o.bottom, metadata); });
+      out.write(o.disv, [&](std::ostream& os) { write_disv(os, grid, o.top, o.bottom, metadata); });
   }
   if (!o.domain_out.empty())
     out.write(o.domain_out, [&](std::ostream& os) { write_poly(os, domain); });
@@ -566,6 +590,7 @@ int run(const Options& o) {
   CVT_2::IO::Metadata metadata{{"program", std::string("cvt2 ") + CVT_2_VERSION_STRING},
                                {"domain", o.domain},
                                {"boundary", o.resample ? "resample" : "keep"}};
+  if (o.barriers) metadata.emplace_back("constraints", "barrier");
   if (o.resample) resample(o, default_n, cdt, metadata);
   CDT domain_alone;  // for --domain-out: the domain and the file's own generators, no others
   if (!o.domain_out.empty()) domain_alone = cdt;

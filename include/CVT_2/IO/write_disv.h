@@ -4,8 +4,8 @@
 #define CVT_2_IO_WRITE_DISV_H
 
 #include <CVT_2/IO/Metadata.h>
-#include <CVT_2/IO/internal/mesh_outlines.h>
 #include <CVT_2/IO/internal/write_number.h>
+#include <CVT_2/Simulation_grid_2.h>
 
 #include <cstddef>
 #include <fstream>
@@ -17,46 +17,78 @@ namespace CVT_2 {
 namespace IO {
 
 /// \ingroup PkgCvt2IO
-/// Writes the cells of `mesh` as the input file of MODFLOW 6's DISV package (discretization by
+/// Writes the cells of `grid` as the input file of MODFLOW 6's DISV package (discretization by
 /// vertices), one layer from `bottom` to `top`: `DIMENSIONS` (NLAY 1, NCPL the cells, NVERT the
-/// mesh's vertices), `GRIDDATA` (TOP and BOTM constant), `VERTICES` (`iv xv yv`, numbered from
-/// 1, each shared by the cells it bounds) and `CELL2D` (`icell2d xc yc ncvert icvert...`: the
-/// cell center is its generator, the vertices `Bvd_mesh_2::outline()` in clockwise order,
-/// closed by repeating the first, as flopy writes them). This is the grid flopy's
-/// `VoronoiGrid` builds by clipping unbounded Voronoi cells, here with the cells bounded by
-/// inner constraints too. Cells are numbered as in the mesh, from 1.
+/// vertices), `GRIDDATA` (TOP and BOTM constant), `VERTICES` (`iv xv yv`, numbered from 1, each
+/// shared by the cells it bounds) and `CELL2D` (`icell2d xc yc ncvert icvert...`: the cell center
+/// is its generator, the vertices clockwise, closed by repeating the first, as flopy writes
+/// them). This is the grid flopy's `VoronoiGrid` builds by clipping unbounded Voronoi cells, here
+/// with the cells bounded by inner constraints too. Cells are numbered as in the grid, from 1.
+///
+/// MODFLOW 6 connects two cells through the first edge they share in their vertex lists and
+/// takes the distances from their centers to that edge's line: so each pair of cells shares one
+/// edge here. A vertex that only two cells use, between two pieces of the bisector they share
+/// (where the bisector crosses a slit, or met a vertex of a cell beyond a barrier), is left
+/// out, the face written whole. Cells on the two sides of a barrier share no vertex number and
+/// so no edge: MODFLOW sees no connection there.
 /// `metadata`, if any, goes in comment lines after the first (`Metadata`).
 /// \tparam Mesh a `Bvd_mesh_2`.
 /// \pre `bottom < top`
 template <class Mesh>
-void write_disv(std::ostream& os, const Mesh& mesh, double top = 1, double bottom = 0,
-                const Metadata& metadata = {}) {
+void write_disv(std::ostream& os, const Simulation_grid_2<Mesh>& grid, double top = 1,
+                double bottom = 0, const Metadata& metadata = {}) {
   using internal::write_number;
-  const internal::Mesh_outlines<Mesh> o(mesh);
+  using Index = typename Mesh::Index;
+  const std::size_t cells = grid.number_of_cells();
+  // Which cells use each vertex, and whether it lies between two bisector pieces of the two.
+  std::vector<std::vector<Index>> users(grid.number_of_vertices());
+  std::vector<unsigned char> inner(grid.number_of_vertices(), 1);
+  for (std::size_t k = 0; k < cells; ++k)
+    for (std::size_t j = 0, n = grid.degree(k); j < n; ++j) {
+      const Index v = grid.vertex(k, j);
+      users[v].push_back(Index(k));
+      const auto &in = grid.side(k, (j + n - 1) % n), &out = grid.side(k, j);
+      if (in.cell == Mesh::none || in.cell != out.cell || in.constraint != Mesh::none ||
+          out.constraint != Mesh::none)
+        inner[v] = 0;
+    }
+  std::vector<Index> number(grid.number_of_vertices(), Mesh::none);
+  std::vector<Index> vertices;  // the grid vertex of each number
+  for (std::size_t k = 0; k < cells; ++k)
+    for (std::size_t j = 0; j < grid.degree(k); ++j) {
+      const Index v = grid.vertex(k, j);
+      const bool dropped = inner[v] && users[v].size() == 2 && users[v][0] != users[v][1];
+      if (!dropped) number[v] = 0;
+    }
+  for (std::size_t i = 0; i < number.size(); ++i)
+    if (number[i] == 0) number[i] = Index(vertices.size()), vertices.push_back(Index(i));
+
   os << "# MODFLOW 6 DISV: a bounded Voronoi grid written by CVT_2\n";
   for (const auto& [key, value] : metadata)
     os << "# " << internal::comment_text(key) << ": " << internal::comment_text(value) << '\n';
-  os << "BEGIN OPTIONS\nEND OPTIONS\n\nBEGIN DIMENSIONS\n  NLAY 1\n  NCPL "
-     << mesh.number_of_cells() << "\n  NVERT " << o.vertices.size()
-     << "\nEND DIMENSIONS\n\nBEGIN GRIDDATA\n  TOP\n    CONSTANT ";
+  os << "BEGIN OPTIONS\nEND OPTIONS\n\nBEGIN DIMENSIONS\n  NLAY 1\n  NCPL " << cells << "\n  NVERT "
+     << vertices.size() << "\nEND DIMENSIONS\n\nBEGIN GRIDDATA\n  TOP\n    CONSTANT ";
   write_number(os, top);
   os << "\n  BOTM LAYERED\n    CONSTANT ";
   write_number(os, bottom);
   os << "\nEND GRIDDATA\n\nBEGIN VERTICES\n";
-  for (std::size_t i = 0; i < o.vertices.size(); ++i) {
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
     os << "  " << i + 1 << ' ';
-    write_number(os, mesh.point(o.vertices[i]).x());
+    write_number(os, grid.point(vertices[i]).x());
     os << ' ';
-    write_number(os, mesh.point(o.vertices[i]).y());
+    write_number(os, grid.point(vertices[i]).y());
     os << '\n';
   }
   os << "END VERTICES\n\nBEGIN CELL2D\n";
-  for (std::size_t k = 0; k < mesh.number_of_cells(); ++k) {
-    const auto& outline = o.cells[k];
+  std::vector<Index> outline;
+  for (std::size_t k = 0; k < cells; ++k) {
+    outline.clear();
+    for (std::size_t j = 0; j < grid.degree(k); ++j)
+      if (number[grid.vertex(k, j)] != Mesh::none) outline.push_back(number[grid.vertex(k, j)]);
     os << "  " << k + 1 << ' ';
-    write_number(os, mesh.generator(k)->point().x());
+    write_number(os, grid.center(k).x());
     os << ' ';
-    write_number(os, mesh.generator(k)->point().y());
+    write_number(os, grid.center(k).y());
     os << ' ' << (outline.empty() ? 0 : outline.size() + 1);
     for (std::size_t j = outline.size(); j-- > 0;) os << ' ' << outline[j] + 1;
     if (!outline.empty()) os << ' ' << outline.back() + 1;
@@ -66,7 +98,17 @@ void write_disv(std::ostream& os, const Mesh& mesh, double top = 1, double botto
 }
 
 /// \ingroup PkgCvt2IO
-/// Writes `mesh` to the DISV file `filename`; returns false if the file could not be written.
+/// Writes the cells of `mesh` as a DISV grid, inner constraints as slits (its
+/// `Simulation_grid_2`).
+template <class Mesh>
+void write_disv(std::ostream& os, const Mesh& mesh, double top = 1, double bottom = 0,
+                const Metadata& metadata = {}) {
+  write_disv(os, Simulation_grid_2<Mesh>(mesh), top, bottom, metadata);
+}
+
+/// \ingroup PkgCvt2IO
+/// Writes `mesh` (a `Bvd_mesh_2` or a `Simulation_grid_2`) to the DISV file `filename`; returns
+/// false if the file could not be written.
 template <class Mesh>
 bool write_disv(const std::string& filename, const Mesh& mesh, double top = 1, double bottom = 0,
                 const Metadata& metadata = {}) {

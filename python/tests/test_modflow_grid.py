@@ -1,0 +1,197 @@
+# Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+# The DISV grids of `cvt2 --disv` as MODFLOW 6 reads them, without MODFLOW: its connection rule
+# copied into numpy (src/Model/ModelUtilities/DisvGeom.f90, shared_edge and cprops;
+# Connections.f90, vertexconnect): two cells are connected through the first edge of the first
+# cell's vertex list that the second lists the other way round; the connection's width is that
+# edge's length, its lengths the perpendicular distances from the two cell centers to the edge's
+# line, its conductance width / (cl1 + cl2) (one layer, K = 1). A two-point flux scheme on such a
+# grid reproduces a linear head exactly when each connection's edge is the whole face between
+# the two cells and perpendicular to the line between their centers.
+from collections import defaultdict
+
+import numpy as np
+import pytest
+
+from conftest import run_program
+
+DOMAINS_WITH_WALLS = ["square_inner_constraints", "four_clusters", "us_massachusetts_counties", "us_kentucky_counties"]
+
+
+def read_disv(path):
+    """The vertices, cell centers and cell vertex lists (closed, 0-based) of a DISV file."""
+    vertices, centers, cells, block = [], [], [], None
+    for line in open(path):
+        t = line.split()
+        if not t or t[0].startswith("#"):
+            continue
+        if t[0] in ("BEGIN", "END"):
+            block = t[1] if t[0] == "BEGIN" else None
+        elif block == "VERTICES":
+            vertices.append((float(t[1]), float(t[2])))
+        elif block == "CELL2D":
+            centers.append((float(t[1]), float(t[2])))
+            cells.append([int(v) - 1 for v in t[4 : 4 + int(t[3])]])
+    return np.array(vertices), np.array(centers), cells
+
+
+def shared_edges(first, second):
+    """Each edge (v1, v2) of `first`'s list that `second` lists as (v2, v1), in `first`'s order:
+    MODFLOW 6 takes the first."""
+    return [
+        (first[a], first[a + 1])
+        for a in range(len(first) - 1)
+        if any(first[a] == second[b] and first[a + 1] == second[b - 1] for b in range(len(second) - 1, 0, -1))
+    ]
+
+
+def connections(cells):
+    """{(n, m): shared edges} for the cells MODFLOW 6 connects (n < m)."""
+    users = defaultdict(set)
+    for k, c in enumerate(cells):
+        for v in c:
+            users[v].add(k)
+    pairs = {}
+    for ks in users.values():
+        for n in ks:
+            for m in ks:
+                if n < m and (n, m) not in pairs:
+                    edges = shared_edges(cells[n], cells[m])
+                    if edges:
+                        pairs[(n, m)] = edges
+    return pairs
+
+
+def distance_normal(p, a, b):
+    return abs((b[0] - a[0]) * (a[1] - p[1]) - (a[0] - p[0]) * (b[1] - a[1])) / np.hypot(*(b - a))
+
+
+def connection_geometry(vertices, centers, pairs):
+    """(n, m, width, cl1, cl2, cos) per connection, cos the cosine between its edge and the line
+    between the centers (0: perpendicular)."""
+    rows = []
+    for (n, m), edges in pairs.items():
+        a, b = vertices[edges[0][0]], vertices[edges[0][1]]
+        d = centers[m] - centers[n]
+        cos = abs(np.dot(d, b - a)) / (np.hypot(*d) * np.hypot(*(b - a))) if np.hypot(*d) > 0 else 1.0
+        rows.append((n, m, np.hypot(*(b - a)), distance_normal(centers[n], a, b), distance_normal(centers[m], a, b), cos))
+    return rows
+
+
+def linear_head_residuals(vertices, centers, cells, pairs):
+    """For each cell whose every edge MODFLOW connects (no boundary, no barrier), the net
+    two-point flux of the head h = 0.3 x - 0.7 y, relative to the flux through its faces."""
+    h = 0.3 * centers[:, 0] - 0.7 * centers[:, 1]
+    net, total = np.zeros(len(cells)), np.zeros(len(cells))
+    matched = np.zeros(len(cells), dtype=int)
+    for (n, m), edges in pairs.items():
+        matched[n] += len(edges)
+        matched[m] += len(edges)
+    for n, m, width, cl1, cl2, _ in connection_geometry(vertices, centers, pairs):
+        q = width / (cl1 + cl2) * (h[m] - h[n])
+        net[n] += q
+        net[m] -= q
+        total[n] += abs(q)
+        total[m] += abs(q)
+    inner = np.array([matched[k] == len(c) - 1 for k, c in enumerate(cells)])
+    return np.abs(net[inner]) / total[inner]
+
+
+def on_a_segment(a, b, segments, tolerance):
+    """Whether the edge ab lies along one of `segments` ((s, 2, 2) array)."""
+    p, q = segments[:, 0], segments[:, 1]
+    t = q - p
+    length = np.hypot(t[:, 0], t[:, 1])
+
+    def offset(x):
+        return np.abs(t[:, 0] * (x[1] - p[:, 1]) - t[:, 1] * (x[0] - p[:, 0])) / length
+
+    def along(x):
+        return ((x - p) * t).sum(axis=1) / length
+
+    ok = (offset(a) <= tolerance) & (offset(b) <= tolerance)
+    ok &= (np.minimum(along(a), along(b)) >= -tolerance) & (np.maximum(along(a), along(b)) <= length + tolerance)
+    return bool(ok.any())
+
+
+@pytest.mark.parametrize("name", [*DOMAINS_WITH_WALLS, "wall"])
+def test_barrier_grid_one_perpendicular_face_per_pair_and_none_across_walls(program, data, tmp_path, name):
+    import cvt2
+
+    path = write_wall(tmp_path / "wall.wkt") if name == "wall" else data / f"{name}.poly"
+    _, _, files = run_program(program, path, tmp_path, "-n", 1000, "--constraints", "barrier", outputs=("disv",))
+    vertices, centers, cells = read_disv(files["disv"])
+    pairs = connections(cells)
+    assert all(len(edges) == 1 for edges in pairs.values())
+    rows = connection_geometry(vertices, centers, pairs)
+    assert max(r[5] for r in rows) < 1e-9  # every face a bisector
+    assert min(min(r[3], r[4]) for r in rows) > 0
+    domain = cvt2.Domain.from_file(path)
+    segments = domain.vertices[domain.segments]
+    scale = np.abs(vertices).max()
+    for (n, m), edges in pairs.items():
+        assert not np.array_equal(centers[n], centers[m]), "the two sides of a split cell connected"
+        a, b = vertices[edges[0][0]], vertices[edges[0][1]]
+        assert not on_a_segment(a, b, segments, 1e-12 * scale), f"cells {n + 1} and {m + 1} connected across a wall"
+    # No cell straddles a wall: no constraint meets a cell's interior (shrunk by a rounding), but
+    # where it ends at the cell's center (a crack's tip: flow goes around it through the cell).
+    from shapely.geometry import LineString, Polygon
+
+    ends = defaultdict(int)
+    for s in segments:
+        ends[tuple(s[0])] += 1
+        ends[tuple(s[1])] += 1
+    low, high = segments.min(axis=1), segments.max(axis=1)
+    for k, c in enumerate(cells):
+        inside = Polygon(vertices[c]).buffer(-1e-9 * scale)
+        near = np.all((low <= vertices[c].max(axis=0)) & (high >= vertices[c].min(axis=0)), axis=1)
+        for s in segments[near]:
+            tip = any((centers[k] == s).all(axis=1)) and ends[tuple(centers[k])] == 1
+            assert tip or not LineString(s).intersects(inside), f"cell {k + 1} straddles a wall"
+    # Away from walls and the boundary, a linear head is exact.
+    assert linear_head_residuals(vertices, centers, cells, pairs).max() < 1e-10
+
+
+def write_wall(path):
+    """A square with a wall across its middle, a vertex every 4 units along it."""
+    wall = ", ".join(f"{20 + 4 * i} 50" for i in range(16))
+    path.write_text(f"POLYGON ((0 0, 100 0, 100 100, 0 100, 0 0))\nLINESTRING ({wall})\n")
+    return path
+
+
+def test_slit_grid_is_what_modflow_saw(program, data, tmp_path):
+    """The slit grid of a domain with walls (today's cells): pairs that share a bisector and a
+    piece of wall, faces not perpendicular (the barrier grid has none of these)."""
+    _, _, files = run_program(program, data / "square_inner_constraints.poly", tmp_path, "-n", 1000, outputs=("disv",))
+    vertices, centers, cells = read_disv(files["disv"])
+    rows = connection_geometry(vertices, centers, connections(cells))
+    assert max(r[5] for r in rows) > 0.5
+
+
+def test_slit_grid_bisectors_across_a_wall_whole(program, tmp_path):
+    """A bisector that crosses a wall with vertices along it is one edge, not two halves of
+    which MODFLOW would take the first for the whole face: the vertex on the wall, which only
+    the two cells use, is left out."""
+    _, _, files = run_program(program, write_wall(tmp_path / "wall.wkt"), tmp_path, "-n", 600, outputs=("disv",))
+    vertices, centers, cells = read_disv(files["disv"])
+    crossing = 0
+    for (n, m), edges in connections(cells).items():
+        crossing += centers[n][1] == 50 and centers[m][1] == 50
+        for a, b in edges:
+            for b2, c in edges:
+                if b2 == b:  # two edges in a row: they must turn (a bisector and the wall)
+                    u, w = vertices[b] - vertices[a], vertices[c] - vertices[b]
+                    assert abs(u[0] * w[1] - u[1] * w[0]) > 1e-9 * np.hypot(*u) * np.hypot(*w)
+    assert crossing >= 14  # the pairs of cells along the wall are connected
+
+
+@pytest.mark.parametrize("name", ["bubble_with_hole", "earcut_dude", "france_mainland"])
+def test_linear_head_exact_without_inner_constraints(program, data, tmp_path, name):
+    """Each pair of cells shares one edge, the whole face: a bisector face cut by a vertex only
+    the two cells use would give MODFLOW half its width."""
+    _, _, files = run_program(program, data / f"{name}.poly", tmp_path, "-n", 1000, outputs=("disv",))
+    vertices, centers, cells = read_disv(files["disv"])
+    pairs = connections(cells)
+    assert all(len(edges) == 1 for edges in pairs.values())
+    residuals = linear_head_residuals(vertices, centers, cells, pairs)
+    assert len(residuals) > 500
+    assert residuals.max() < 1e-10
