@@ -8,14 +8,17 @@
 #include <CVT_2/Bvd_mesh_2.h>
 #include <CVT_2/Cvt_triangulation_2.h>
 #include <CVT_2/IO/read_domain.h>
+#include <CVT_2/IO/write_cells_on_constraints.h>
 #include <CVT_2/IO/write_disv.h>
 #include <CVT_2/IO/write_geojson.h>
 #include <CVT_2/IO/write_poly.h>
 #include <CVT_2/IO/write_vtu.h>
 #include <CVT_2/IO/write_wkb.h>
+#include <CVT_2/Simulation_grid_2.h>
 #include <CVT_2/density_response_2.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/insert_generators_2.h>
+#include <CVT_2/internal/input_segments_of_constraints.h>
 #include <CVT_2/internal/parallel/Interrupt_scope.h>
 #include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/valid_point.h>
@@ -65,6 +68,7 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CDT = CVT_2::Cvt_triangulation_2<K>;
 using BVD = CVT_2::Bounded_voronoi_diagram_2<CDT>;
 using Mesh = CVT_2::Bvd_mesh_2<BVD>;
+using Grid = CVT_2::Simulation_grid_2<Mesh>;
 using Point_2 = K::Point_2;
 using Sizing = CVT_2::Boundary_lipschitz_sizing_2<K>;
 using Domain_data = CVT_2::IO::Domain_data<K>;
@@ -264,35 +268,11 @@ struct Domain {
       metadata = {{"program", std::string("cvt2 ") + CVT_2_VERSION_STRING},
                   {"domain", data.file.source},
                   {"boundary", "keep"}};
-    if (const auto* poly = std::get_if<0>(&data.description)) {
-      for (std::size_t j = 0; j < poly->segments.size(); ++j) {
-        segment_ends.push_back(poly->vertices[poly->segments[j][0]]);
-        segment_ends.push_back(poly->vertices[poly->segments[j][1]]);
-        segment_items.push_back(std::int64_t(j));
-      }
-    } else {
-      const Wkt_data& w = std::get<1>(data.description);
-      // As insert_wkt() constrains them: repeated points in a row count once.
-      const auto add = [&](const auto& points, bool closed, std::size_t item) {
-        std::vector<Point_2> p;
-        for (const Point_2& q : points)
-          if (p.empty() || q != p.back()) p.push_back(q);
-        if (closed && p.size() > 1 && p.front() == p.back()) p.pop_back();
-        const std::size_t n = closed ? p.size() : p.size() - 1;
-        for (std::size_t i = 0; i < n && p.size() > 1; ++i) {
-          segment_ends.push_back(p[i]);
-          segment_ends.push_back(p[(i + 1) % p.size()]);
-          segment_items.push_back(std::int64_t(item) + item_offset);
-        }
-      };
-      for (std::size_t i = 0; i < w.polygons.size(); ++i) {
-        add(w.polygons[i].outer_boundary(), true, w.polygon_lines[i]);
-        for (auto h = w.polygons[i].holes_begin(); h != w.polygons[i].holes_end(); ++h)
-          add(*h, true, w.polygon_lines[i]);
-      }
-      for (std::size_t i = 0; i < w.polylines.size(); ++i)
-        add(w.polylines[i], false, w.polyline_lines[i]);
-    }
+    auto segments = CVT_2::IO::domain_segments(data);
+    segment_ends = std::move(segments.ends);
+    segment_items = std::move(segments.items);
+    if (data.description.index() == 1)
+      for (std::int64_t& item : segment_items) item += item_offset;
     const auto cdt = triangulation();
     for (auto v = cdt->finite_vertices_begin(); v != cdt->finite_vertices_end(); ++v)
       own_cells += CVT_2::internal::has_domain_face(*cdt, v) ? 1 : 0;
@@ -666,18 +646,6 @@ Array random_points(const Domain& domain, std::int64_t n, std::uint64_t seed,
 
 // --- the diagram -------------------------------------------------------------------------------
 
-// Whether w, a neighbour of u on the way from a to b, is a point that insert_generators_2()
-// moved onto the boundary next to the segment ab, bending it through w by a few units in the
-// last place: strictly between u and b along ab, and within 2^-44 of its largest coordinate
-// from the line.
-bool is_bent_onto(const Point_2& w, const Point_2& u, const Point_2& a, const Point_2& b) {
-  const double dx = b.x() - a.x(), dy = b.y() - a.y();
-  const double m = std::max({std::abs(a.x()), std::abs(a.y()), std::abs(b.x()), std::abs(b.y())});
-  return (w.x() - u.x()) * dx + (w.y() - u.y()) * dy > 0 &&
-         (b.x() - w.x()) * dx + (b.y() - w.y()) * dy > 0 &&
-         CVT_2::internal::distance_to_line(w, a, b) <= std::ldexp(m, -44);
-}
-
 // A bounded Voronoi diagram as a mesh, with the arrays Python reads, computed once. It keeps
 // the triangulation, which the writers read through the mesh's generators.
 struct Diagram {
@@ -757,61 +725,20 @@ struct Diagram {
     return out;
   }
 
-  // For each constraint of the mesh (a constrained edge of the triangulation, by the cells of
-  // its ends), the first input segment it lies on: each input segment is walked from one end to
-  // the other along the constrained edges that lie on it (they meet it exactly: the
-  // triangulation constructs no intersection).
+  // For each constraint of the mesh, the input segment it lies on, and that segment's item.
   std::vector<std::int64_t> input_segments() const {
-    std::unordered_map<std::uint64_t, std::int64_t> of_edge;
-    const auto key = [](Index a, Index b) {
-      return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
-    };
-    CDT::Face_handle hint;
-    const auto vertex_at = [&](const Point_2& p) {
-      CDT::Locate_type lt;
-      int li;
-      const CDT::Face_handle f = cdt->locate(p, lt, li, hint);
-      if (f != CDT::Face_handle()) hint = f;
-      return lt == CDT::VERTEX ? f->vertex(li) : CDT::Vertex_handle();
-    };
-    const auto& ends = domain->segment_ends;
-    for (std::size_t i = 0; i < ends.size() / 2; ++i) {
-      const Point_2 &a = ends[2 * i], &b = ends[2 * i + 1];
-      CDT::Vertex_handle u = vertex_at(a);
-      const CDT::Vertex_handle target = vertex_at(b);
-      if (u == CDT::Vertex_handle() || target == CDT::Vertex_handle()) continue;
-      while (u != target) {
-        CDT::Vertex_handle next, bent;
-        auto e = cdt->incident_edges(u), done = e;
-        do {
-          if (!cdt->is_constrained(*e)) continue;
-          const CDT::Vertex_handle p = e->first->vertex(CDT::ccw(e->second));
-          const CDT::Vertex_handle w = p == u ? e->first->vertex(CDT::cw(e->second)) : p;
-          if (cdt->is_infinite(w)) continue;
-          if (w == target ||
-              (CGAL::orientation(a, b, w->point()) == CGAL::COLLINEAR &&
-               CGAL::collinear_are_strictly_ordered_along_line(u->point(), w->point(), b))) {
-            next = w;
-            break;
-          }
-          if (is_bent_onto(w->point(), u->point(), a, b)) bent = w;
-        } while (++e != done);
-        if (next == CDT::Vertex_handle()) next = bent;
-        if (next == CDT::Vertex_handle()) break;
-        if (CVT_2::internal::has_domain_face(*cdt, u) &&
-            CVT_2::internal::has_domain_face(*cdt, next))
-          of_edge.emplace(key(Index(mesh->cell_of(u)), Index(mesh->cell_of(next))),
-                          std::int64_t(i));
-        u = next;
-      }
-    }
-    std::vector<std::int64_t> input;
-    for (const auto& c : mesh->constraints()) {
-      const auto it = of_edge.find(key(c[0], c[1]));
-      input.push_back(it == of_edge.end() ? -1 : it->second);
-    }
-    return input;
+    return CVT_2::internal::input_segments_of_constraints(*cdt, *mesh, domain->segment_ends);
   }
+  std::vector<std::int64_t> input_items() const {
+    const struct {
+      const std::vector<Point_2>& ends;
+      const std::vector<std::int64_t>& items;
+    } segments{domain->segment_ends, domain->segment_items};
+    return CVT_2::internal::input_items_of_constraints(*cdt, *mesh, segments);
+  }
+
+  // The mesh as a simulation grid, inner constraints all slits or all barriers.
+  Grid grid(bool barriers) const { return Grid(*mesh, barriers ? CVT_2::BARRIER : CVT_2::SLIT); }
 
   // Cells as lists of vertex indices: the cycles (slits walked there and back), the outlines
   // (slits dropped, lobes joined at the generator), or the valid polygons (a list of rings each).
@@ -1165,20 +1092,38 @@ PYBIND11_MODULE(_cvt2, m) {
       .def("polygons", &Diagram::polygons)
       .def("wkb", &Diagram::wkb)
       .def("write_geojson",
-           [](const Diagram& d, const std::string& path, const CVT_2::IO::Metadata& metadata) {
-             d.write(path,
-                     [&](std::ostream& os) { CVT_2::IO::write_geojson(os, *d.mesh, metadata); });
+           [](const Diagram& d, const std::string& path, bool barriers,
+              const CVT_2::IO::Metadata& metadata) {
+             d.write(path, [&](std::ostream& os) {
+               if (barriers)
+                 CVT_2::IO::write_geojson(os, d.grid(true), metadata);
+               else
+                 CVT_2::IO::write_geojson(os, *d.mesh, metadata);
+             });
            })
       .def("write_vtu",
-           [](const Diagram& d, const std::string& path, const CVT_2::IO::Metadata& metadata) {
-             d.write(path, [&](std::ostream& os) { CVT_2::IO::write_vtu(os, *d.mesh, metadata); });
+           [](const Diagram& d, const std::string& path, bool barriers,
+              const CVT_2::IO::Metadata& metadata) {
+             d.write(path, [&](std::ostream& os) {
+               if (barriers)
+                 CVT_2::IO::write_vtu(os, d.grid(true), metadata);
+               else
+                 CVT_2::IO::write_vtu(os, *d.mesh, metadata);
+             });
            })
-      .def("write_disv", [](const Diagram& d, const std::string& path, double top, double bottom,
-                            const CVT_2::IO::Metadata& metadata) {
-        d.write(path, [&](std::ostream& os) {
-          CVT_2::IO::write_disv(os, *d.mesh, top, bottom, metadata);
-        });
-      });
+      .def("write_disv",
+           [](const Diagram& d, const std::string& path, double top, double bottom, bool barriers,
+              const CVT_2::IO::Metadata& metadata) {
+             d.write(path, [&](std::ostream& os) {
+               CVT_2::IO::write_disv(os, d.grid(barriers), top, bottom, metadata);
+             });
+           })
+      .def("write_cells_on_constraints",
+           [](const Diagram& d, const std::string& path, bool barriers) {
+             d.write(path, [&](std::ostream& os) {
+               CVT_2::IO::write_cells_on_constraints(os, d.grid(barriers), d.input_items());
+             });
+           });
 
   py::class_<Optimization, std::shared_ptr<Optimization>>(m, "Optimization")
       .def_property_readonly("points", [](const Optimization& o) { return to_array(o.points); })

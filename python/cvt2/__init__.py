@@ -439,6 +439,15 @@ def optimize(
     return OptimizeResult(result, domain)
 
 
+def _barriers(constraints):
+    if constraints not in ("slit", "barrier"):
+        if constraints == "conforming":
+            raise ValueError("constraints='conforming' (faces along the line perpendicular to it) is not built yet: "
+                             "use 'slit' or 'barrier'")
+        raise ValueError(f"constraints must be 'slit' or 'barrier', not {constraints!r}")
+    return constraints == "barrier"
+
+
 def _tolerance(value):
     if value is None:
         return None
@@ -776,27 +785,48 @@ class BoundedVoronoi:
 
         return list(shapely.wkb.loads(self._impl.wkb()).geoms)
 
-    def to_geojson(self, path) -> None:
+    def to_geojson(self, path, constraints="slit") -> None:
         """Writes the cells as a GeoJSON FeatureCollection (``cvt2 --geojson``): one valid
         Polygon or MultiPolygon per cell; properties cell, generator, constrained, area,
-        neighbors; what made it in a ``metadata`` object (see :meth:`metadata`)."""
-        self._impl.write_geojson(os.fspath(path), self.metadata())
+        neighbors; what made it in a ``metadata`` object (see :meth:`metadata`).
+        ``constraints``: what inner constraints are to the cells, ``"slit"`` or ``"barrier"``
+        (``cvt2 --constraints``; see :meth:`to_disv`)."""
+        self._impl.write_geojson(os.fspath(path), _barriers(constraints), self.metadata(constraints))
 
-    def to_vtu(self, path) -> None:
+    def to_vtu(self, path, constraints="slit") -> None:
         """Writes the cells as a VTK XML unstructured grid (``cvt2 --vtu``; ParaView, meshio),
-        :meth:`metadata` in XML comments."""
-        self._impl.write_vtu(os.fspath(path), self.metadata())
+        :meth:`metadata` in XML comments; ``constraints`` as for :meth:`to_disv`."""
+        self._impl.write_vtu(os.fspath(path), _barriers(constraints), self.metadata(constraints))
 
-    def to_disv(self, path, top=1.0, bottom=0.0) -> None:
+    def to_disv(self, path, top=1.0, bottom=0.0, constraints="slit") -> None:
         """Writes the cells as a MODFLOW 6 DISV grid of one layer between ``bottom`` and
-        ``top`` (``cvt2 --disv``; flopy), :meth:`metadata` in comment lines."""
-        self._impl.write_disv(os.fspath(path), float(top), float(bottom), self.metadata())
+        ``top`` (``cvt2 --disv``; flopy), :meth:`metadata` in comment lines. Each pair of cells
+        shares one edge, the whole face between them.
 
-    def metadata(self) -> list:
+        ``constraints``: ``"slit"`` (the cells of this diagram: a constrained generator's cell
+        lies on both sides of an inner constraint) or ``"barrier"`` (a wall: the cell of a
+        generator on one is split into one cell per side, each centered at the generator, and
+        no edge is shared across, so that MODFLOW connects no cells through it; cells are then
+        more than :attr:`points`, numbered as the diagram's, the parts of a split cell one after
+        the other)."""
+        self._impl.write_disv(os.fspath(path), float(top), float(bottom), _barriers(constraints),
+                              self.metadata(constraints))
+
+    def to_cells_on_constraints(self, path, constraints="slit") -> None:
+        """Writes which cells lie on each input line (``cvt2 --cells-on-constraints``): a CSV
+        with the header ``constraint,cell,length,other_cell``, one row per piece of a segment
+        along a cell: the input item it comes from (:attr:`Domain.segment_items`), the cell of
+        :meth:`to_disv` with the same ``constraints`` (from 1), the piece's length, the cell on
+        the other side (from 1; -1 on the boundary; the cell itself for a slit inside it)."""
+        self._impl.write_cells_on_constraints(os.fspath(path), _barriers(constraints))
+
+    def metadata(self, constraints="slit") -> list:
         """What the writers put in their headers, as (key, value) strings: the program, the
         domain's source and its boundary mode (``keep``, or ``resample`` with the cell size,
-        the deviation bound and the largest deviation), as ``cvt2`` writes them."""
-        return list(self.domain._impl.metadata)
+        the deviation bound and the largest deviation), and ``constraints`` if ``"barrier"``,
+        as ``cvt2`` writes them."""
+        barriers = _barriers(constraints)
+        return list(self.domain._impl.metadata) + ([("constraints", "barrier")] if barriers else [])
 
     def __len__(self):
         return len(self.points)

@@ -195,3 +195,49 @@ def test_linear_head_exact_without_inner_constraints(program, data, tmp_path, na
     residuals = linear_head_residuals(vertices, centers, cells, pairs)
     assert len(residuals) > 500
     assert residuals.max() < 1e-10
+
+
+def read_csv(path):
+    rows = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    assert open(path).readline() == "constraint,cell,length,other_cell\n"
+    return rows[:, 0].astype(int), rows[:, 1].astype(int), rows[:, 2], rows[:, 3].astype(int)
+
+
+@pytest.mark.parametrize("constraints", ["slit", "barrier"])
+@pytest.mark.parametrize("name", ["square_inner_constraints.wkt", "us_massachusetts_counties.wkt", "four_clusters.poly"])
+def test_cells_on_constraints_cover_each_line(program, data, tmp_path, name, constraints):
+    """The rows of `--cells-on-constraints` cover each input line once on the boundary, once per
+    side inside (a slit or a crack's tip inside a cell once), pair up across inner lines, and
+    name the DISV's cells."""
+    import cvt2
+
+    csv = tmp_path / "cells.csv"
+    _, _, files = run_program(
+        program, data / name, tmp_path, "-n", 500, "--constraints", constraints, "--cells-on-constraints", csv,
+        outputs=("disv",),
+    )
+    item, cell, length, other = read_csv(csv)
+    vertices, centers, cells = read_disv(files["disv"])
+    assert cell.min() >= 1 and cell.max() <= len(cells) and other.max() <= len(cells)
+    pairs = connections(cells)
+    # Each item's input length: on the boundary once, inside once a side.
+    domain = cvt2.Domain.from_file(data / name)
+    ends = domain.vertices[domain.segments]
+    input_length = np.hypot(*(ends[:, 1] - ends[:, 0]).T)
+    for i in np.unique(domain.segment_items):
+        expected = input_length[domain.segment_items == i].sum()
+        mine = item == i
+        boundary = (other == -1) & mine
+        inner = (other != -1) & (other != cell) & mine
+        slit = (other == cell) & mine
+        covered = length[boundary].sum() + length[inner].sum() / 2 + length[slit].sum()
+        assert covered == pytest.approx(expected, rel=1e-12)
+        assert not (boundary.any() and (inner.any() or slit.any()))  # boundary or inside
+    # Rows across an inner line come in pairs of equal length.
+    across = {(c, o, round(x, 9)) for c, o, x in zip(cell, other, length) if o not in (-1, c)}
+    assert all((o, c, x) in across for c, o, x in across)
+    # A barrier's pairs share no edge along it (they may meet beyond a crack's tip).
+    if constraints == "barrier":
+        for c, o in {(c, o) for c, o, _ in across}:
+            for a, b in pairs.get((min(c, o) - 1, max(c, o) - 1), []):
+                assert not on_a_segment(vertices[a], vertices[b], ends, 1e-12 * np.abs(vertices).max())

@@ -137,3 +137,24 @@ def test_a_shapely_domain_is_the_same_geometry_read_from_a_file(program, data, t
         assert same(cvt2.random_points(from_file, 700, seed=11), points)
         assert same(from_file.segments, domain.segments)
         assert same(from_file.vertices, domain.vertices)
+
+
+@pytest.mark.parametrize("file", ["four_clusters.poly", "square_inner_constraints.wkt", "us_kentucky_counties.geojson"])
+def test_barrier_grids_and_cells_on_constraints_are_the_programs(program, data, tmp_path, file):
+    domain = cvt2.Domain.from_file(data / file)
+    diagram = cvt2.bounded_voronoi(domain, cvt2.random_points(domain, 400, seed=3))
+    csv = tmp_path / "theirs.csv"
+    _, _, files = run_program(program, data / file, tmp_path, "-n", 400, "--seed", 3, "--iterations", 0,
+                              "--move-ratio", 0, "--constraints", "barrier", "--cells-on-constraints", csv,
+                              outputs=("geojson", "vtu", "disv"))
+    diagram.to_geojson(tmp_path / "ours.geojson", constraints="barrier")
+    diagram.to_vtu(tmp_path / "ours.vtu", constraints="barrier")
+    diagram.to_disv(tmp_path / "ours.disv", constraints="barrier")
+    diagram.to_cells_on_constraints(tmp_path / "ours.csv", constraints="barrier")
+    for kind in ("geojson", "vtu", "disv"):
+        assert (tmp_path / f"ours.{kind}").read_bytes() == files[kind].read_bytes(), kind
+    assert (tmp_path / "ours.csv").read_bytes() == csv.read_bytes()
+    with pytest.raises(ValueError, match="not built yet"):
+        diagram.to_disv(tmp_path / "x.disv", constraints="conforming")
+    with pytest.raises(ValueError, match="'slit' or 'barrier'"):
+        diagram.to_disv(tmp_path / "x.disv", constraints="wall")

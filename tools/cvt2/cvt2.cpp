@@ -9,6 +9,7 @@
 #include <CVT_2/IO/read_domain.h>
 #include <CVT_2/IO/read_points.h>
 #include <CVT_2/IO/write_cells.h>
+#include <CVT_2/IO/write_cells_on_constraints.h>
 #include <CVT_2/IO/write_disv.h>
 #include <CVT_2/IO/write_geojson.h>
 #include <CVT_2/IO/write_poly.h>
@@ -16,6 +17,7 @@
 #include <CVT_2/IO/write_triangle.h>
 #include <CVT_2/IO/write_vtu.h>
 #include <CVT_2/Simulation_grid_2.h>
+#include <CVT_2/internal/input_segments_of_constraints.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/mark_domain_2.h>
@@ -55,6 +57,7 @@ using CDT = CVT_2::Cvt_triangulation_2<K>;
 using BVD = CVT_2::Bounded_voronoi_diagram_2<CDT>;
 using Mesh = CVT_2::Bvd_mesh_2<BVD>;
 using Grid = CVT_2::Simulation_grid_2<Mesh>;
+using Segments = CVT_2::IO::Domain_segments<K>;
 using Point_2 = K::Point_2;
 using Sizing = CVT_2::Boundary_lipschitz_sizing_2<K>;
 
@@ -86,6 +89,7 @@ struct Options {
   double time_limit = 0;
   unsigned threads = 0;  // 0: all cores
   std::string svg, points_out, cells_out, geojson, vtu, disv, mesh_out, domain_out;
+  std::string cells_on_constraints;
   double top = 1, bottom = 0;  // of the DISV's layer
   bool barriers = false;       // --constraints barrier
   bool quiet = false;
@@ -142,6 +146,11 @@ void print_help(std::ostream& os) {
         "                         meshio): cell, constrained, area, generator\n"
         "      --disv FILE        the cells as a MODFLOW 6 DISV grid, one layer (flopy)\n"
         "      --top T, --bottom B  the DISV layer's top and bottom (default 1 and 0)\n"
+        "      --cells-on-constraints FILE  CSV 'constraint,cell,length,other_cell': the\n"
+        "                         cells along each input line, for boundary conditions\n"
+        "                         (constraint: the .poly segment's row from 0, the .wkt line,\n"
+        "                         the .geojson feature from 1; cell and other_cell: the DISV's\n"
+        "                         numbers, other_cell -1 on the boundary)\n"
         "      --constraints C    slit | barrier (default slit): what inner constraints are to\n"
         "                         the cells of --disv, --vtu and --geojson. slit: cells cross\n"
         "                         them (a constrained generator's cell lies on both sides).\n"
@@ -265,6 +274,7 @@ const std::map<std::string, Setter>& valued_options() {
       {"--geojson", [](Options& o, auto&, auto& v) { o.geojson = v; }},
       {"--vtu", [](Options& o, auto&, auto& v) { o.vtu = v; }},
       {"--disv", [](Options& o, auto&, auto& v) { o.disv = v; }},
+      {"--cells-on-constraints", [](Options& o, auto&, auto& v) { o.cells_on_constraints = v; }},
       {"--mesh-out", [](Options& o, auto&, auto& v) { o.mesh_out = v; }},
       {"--domain-out", [](Options& o, auto&, auto& v) { o.domain_out = v; }},
       {"--top", [](Options& o, auto& n, auto& v) { o.top = parse_real(n, v); }},
@@ -475,14 +485,15 @@ class Output_files {
 };
 
 void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
-                   const CVT_2::IO::Metadata& metadata, const CDT& domain) {
+                   const CVT_2::IO::Metadata& metadata, const CDT& domain,
+                   const Segments& segments) {
   using namespace CVT_2::IO;
   Output_files out;
   if (!o.svg.empty()) out.write(o.svg, [&](std::ostream& os) { write_svg(os, bvd); });
   if (!o.points_out.empty())
     out.write(o.points_out, [&](std::ostream& os) { write_points(os, bvd); });
   if (!o.cells_out.empty()) out.write(o.cells_out, [&](std::ostream& os) { write_cells(os, bvd); });
-  if (!o.geojson.empty() || !o.vtu.empty() || !o.disv.empty()) {
+  if (!o.geojson.empty() || !o.vtu.empty() || !o.disv.empty() || !o.cells_on_constraints.empty()) {
     const Mesh mesh(bvd, o.threads);
     const Grid grid(mesh, o.barriers ? CVT_2::BARRIER : CVT_2::SLIT);
     const auto write = [&](const auto& cells) {
@@ -497,6 +508,11 @@ void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
       write(mesh);  // the mesh's own cells and vertices, bit for bit
     if (!o.disv.empty())
       out.write(o.disv, [&](std::ostream& os) { write_disv(os, grid, o.top, o.bottom, metadata); });
+    if (!o.cells_on_constraints.empty())
+      out.write(o.cells_on_constraints, [&](std::ostream& os) {
+        write_cells_on_constraints(
+            os, grid, CVT_2::internal::input_items_of_constraints(cdt, mesh, segments));
+      });
   }
   if (!o.domain_out.empty())
     out.write(o.domain_out, [&](std::ostream& os) { write_poly(os, domain); });
@@ -582,7 +598,9 @@ int run(const Options& o) {
   if (!std::ifstream(o.domain))
     throw std::runtime_error("cannot open the domain file '" + o.domain + "'");
   CDT cdt;
-  const CVT_2::IO::Domain_file domain = CVT_2::IO::read_domain(o.domain, cdt);
+  const auto data = CVT_2::IO::read_domain_data<K>(o.domain);
+  CVT_2::IO::insert_domain(cdt, data);
+  const CVT_2::IO::Domain_file& domain = data.file;
   note_repeated(domain.repeated);
   const bool counted = o.cells || o.size;
   const std::size_t default_n =
@@ -590,8 +608,16 @@ int run(const Options& o) {
   CVT_2::IO::Metadata metadata{{"program", std::string("cvt2 ") + CVT_2_VERSION_STRING},
                                {"domain", o.domain},
                                {"boundary", o.resample ? "resample" : "keep"}};
-  if (o.barriers) metadata.emplace_back("constraints", "barrier");
   if (o.resample) resample(o, default_n, cdt, metadata);
+  if (o.barriers) metadata.emplace_back("constraints", "barrier");
+  // The input lines that --cells-on-constraints names: the file's, or the resampled domain's
+  // (the segments of --domain-out).
+  Segments segments;
+  if (!o.cells_on_constraints.empty()) {
+    CVT_2::IO::Domain_data<K> resampled;
+    if (o.resample) resampled.description = CVT_2::IO::domain_poly_data(cdt);
+    segments = CVT_2::IO::domain_segments(o.resample ? resampled : data);
+  }
   CDT domain_alone;  // for --domain-out: the domain and the file's own generators, no others
   if (!o.domain_out.empty()) domain_alone = cdt;
   // The sizing's default sizes are the boundary edges, before generators split any.
@@ -634,7 +660,7 @@ int run(const Options& o) {
   insert_random_points(n, o, sizing, cdt);
   const CVT_2::Optimization_result r = optimize(cdt, o, sizing);
   const BVD bvd(cdt);
-  write_outputs(o, cdt, bvd, metadata, domain_alone);
+  write_outputs(o, cdt, bvd, metadata, domain_alone, segments);
   print_summary(o, r, bvd, domain_area(cdt));
   return EXIT_SUCCESS;
 }

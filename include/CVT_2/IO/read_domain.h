@@ -10,6 +10,7 @@
 #include <CVT_2/exceptions.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <variant>
 #include <vector>
@@ -39,6 +40,56 @@ struct Domain_data {
   /// the `.poly` graph, or the polygons, lines and points of a `.wkt` or `.geojson` file
   std::variant<Poly_data<typename K::Point_2>, Wkt_data<K>> description;
 };
+
+/// \ingroup PkgCvt2IO
+/// The segments of a domain's description, as outputs name the lines of the input: segment `i`
+/// from `ends[2i]` to `ends[2i + 1]`, and its `items[i]`: its row in a `.poly` file (from 0),
+/// the line of its geometry in a `.wkt` file, its feature in a `.geojson` file (from 1). The
+/// order is the file's: a `.poly` file's segments; each polygon's exterior and hole rings, then
+/// each line, segment after segment, points repeated in a row counting once (as
+/// `insert_wkt()` constrains them).
+template <class K>
+struct Domain_segments {
+  std::vector<typename K::Point_2> ends;  ///< two a segment
+  std::vector<std::int64_t> items;        ///< one a segment
+};
+
+/// \ingroup PkgCvt2IO
+/// The segments of `d` (`Domain_segments`).
+template <class K>
+Domain_segments<K> domain_segments(const Domain_data<K>& d) {
+  using Point_2 = typename K::Point_2;
+  Domain_segments<K> s;
+  if (const auto* poly = std::get_if<0>(&d.description)) {
+    for (std::size_t j = 0; j < poly->segments.size(); ++j) {
+      s.ends.push_back(poly->vertices[poly->segments[j][0]]);
+      s.ends.push_back(poly->vertices[poly->segments[j][1]]);
+      s.items.push_back(std::int64_t(j));
+    }
+    return s;
+  }
+  const Wkt_data<K>& w = std::get<1>(d.description);
+  const auto add = [&](const auto& points, bool closed, std::size_t item) {
+    std::vector<Point_2> p;
+    for (const Point_2& q : points)
+      if (p.empty() || q != p.back()) p.push_back(q);
+    if (closed && p.size() > 1 && p.front() == p.back()) p.pop_back();
+    const std::size_t n = closed ? p.size() : p.size() - 1;
+    for (std::size_t i = 0; i < n && p.size() > 1; ++i) {
+      s.ends.push_back(p[i]);
+      s.ends.push_back(p[(i + 1) % p.size()]);
+      s.items.push_back(std::int64_t(item));
+    }
+  };
+  for (std::size_t i = 0; i < w.polygons.size(); ++i) {
+    add(w.polygons[i].outer_boundary(), true, w.polygon_lines[i]);
+    for (auto h = w.polygons[i].holes_begin(); h != w.polygons[i].holes_end(); ++h)
+      add(*h, true, w.polygon_lines[i]);
+  }
+  for (std::size_t i = 0; i < w.polylines.size(); ++i)
+    add(w.polylines[i], false, w.polyline_lines[i]);
+  return s;
+}
 
 /// \ingroup PkgCvt2IO
 /// Reads the domain in `filename`, by the file's extension: Triangle's `.poly` (`read_poly()`),

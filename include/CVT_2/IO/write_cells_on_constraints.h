@@ -1,0 +1,104 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Writing which cells of a grid lie on each constraint, for a simulator's boundary conditions.
+#ifndef CVT_2_IO_WRITE_CELLS_ON_CONSTRAINTS_H
+#define CVT_2_IO_WRITE_CELLS_ON_CONSTRAINTS_H
+
+#include <CVT_2/IO/internal/write_number.h>
+
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <fstream>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CVT_2 {
+namespace IO {
+
+/// \ingroup PkgCvt2IO
+/// Writes, as CSV with the header `constraint,cell,length,other_cell`, one row per piece of a
+/// constraint that bounds or crosses a cell of `grid` (a `Simulation_grid_2`): `constraint` is
+/// `ids[c]` for the mesh's constraint `c` (the input line it lies on, say; -1 if `ids` is
+/// shorter), `cell` the grid cell from 1 (as in the DISV), `length` the piece's length,
+/// `other_cell` the cell on the other side from 1, or -1 on the domain's boundary. A piece of an
+/// inner constraint between two cells has a row from each side; a slit (an inner constraint
+/// that is not a barrier, inside the cell of a generator on it) has one row, the cell its own
+/// other cell. The rows go cell after cell, the edges of each in order, its slits after them.
+/// This is what a MODFLOW 6 package needs for the cells along a line: CHD and GHB on the
+/// boundary, RIV and DRN along a river, HFB between the pairs of a wall.
+template <class Grid>
+void write_cells_on_constraints(std::ostream& os, const Grid& grid,
+                                const std::vector<std::int64_t>& ids) {
+  using Index = typename Grid::Index;
+  const auto& mesh = grid.mesh();
+  const auto id = [&](Index c) { return c < ids.size() ? ids[c] : std::int64_t(-1); };
+  const auto row = [&](Index c, std::size_t cell, const auto& a, const auto& b,
+                       std::int64_t other) {
+    os << id(c) << ',' << cell + 1 << ',';
+    internal::write_number(os, std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b))));
+    os << ',' << other << '\n';
+  };
+  os << "constraint,cell,length,other_cell\n";
+  std::vector<std::pair<Index, Index>> edges;  // of the parts of a mesh cell, in mesh vertices
+  for (std::size_t g = 0; g < grid.number_of_cells(); ++g) {
+    const std::size_t n = grid.degree(g);
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto& side = grid.side(g, j);
+      if (side.constraint == Grid::none) continue;
+      row(side.constraint, g, grid.point(grid.vertex(g, j)),
+          grid.point(grid.vertex(g, (j + 1) % n)),
+          side.cell == Grid::none ? std::int64_t(-1) : std::int64_t(side.cell) + 1);
+    }
+    // The slits of its mesh cell, after its last part: each walked there and back, written
+    // once, in the part that has the slit's outer end (the first part if none has).
+    const Index k = grid.mesh_cell(g);
+    if (g + 1 < grid.number_of_cells() && grid.mesh_cell(g + 1) == k) continue;
+    std::size_t first = g;
+    while (first > 0 && grid.mesh_cell(first - 1) == k) --first;
+    edges.clear();
+    for (std::size_t h = first; h <= g; ++h)
+      for (std::size_t j = 0, m = grid.degree(h); j < m; ++j)
+        edges.emplace_back(grid.mesh_vertex(grid.vertex(h, j)),
+                           grid.mesh_vertex(grid.vertex(h, (j + 1) % m)));
+    const auto c = mesh.cell(k);
+    for (std::size_t j = 0; j < c.size(); ++j) {
+      const auto& side = mesh.side(k, j);
+      const Index p = c[j], q = c[(j + 1) % c.size()];
+      if (side.cell != k || side.constraint == Grid::none || p > q ||
+          std::find(edges.begin(), edges.end(), std::make_pair(p, q)) != edges.end())
+        continue;
+      const auto has_end = [&](std::size_t h) {
+        for (std::size_t i = 0; i < grid.degree(h); ++i)
+          if (grid.mesh_vertex(grid.vertex(h, i)) == p || grid.mesh_vertex(grid.vertex(h, i)) == q)
+            return true;
+        return false;
+      };
+      std::size_t part = first;
+      while (part < g && !has_end(part)) ++part;
+      if (!has_end(part)) part = first;
+      row(side.constraint, part, mesh.point(p), mesh.point(q), std::int64_t(part) + 1);
+    }
+  }
+}
+
+/// \ingroup PkgCvt2IO
+/// Writes the cells on the constraints of `grid` to the CSV file `filename`; returns false if
+/// the file could not be written.
+template <class Grid>
+bool write_cells_on_constraints(const std::string& filename, const Grid& grid,
+                                const std::vector<std::int64_t>& ids) {
+  std::ofstream os(filename);
+  if (!os) return false;
+  write_cells_on_constraints(os, grid, ids);
+  return static_cast<bool>(os);
+}
+
+}  // namespace IO
+}  // namespace CVT_2
+
+#endif  // CVT_2_IO_WRITE_CELLS_ON_CONSTRAINTS_H
