@@ -913,8 +913,11 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
                                        std::int64_t max_iterations, double time_limit,
                                        std::int64_t threads, const py::object& callback,
                                        double lipschitz_k, const py::object& boundary_size,
-                                       std::optional<double> boundary_tolerance) {
+                                       std::optional<double> boundary_tolerance,
+                                       const py::object& fixed_object) {
   const std::vector<Point_2> points = to_points(points_object, "points");
+  const std::vector<Point_2> fixed =
+      fixed_object.is_none() ? std::vector<Point_2>() : to_points(fixed_object, "fixed_points");
   if (algorithm != "lbfgs" && algorithm != "lloyd")
     throw py::value_error("algorithm must be 'lbfgs' or 'lloyd', not '" + algorithm + "'");
   if (!(move_ratio >= 0) || !std::isfinite(move_ratio))
@@ -959,6 +962,10 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
     std::shared_ptr<CDT> cdt = domain->triangulation();
     const std::optional<Sizing> sizing = choice.sizing(*cdt);
     out->notes = insert_points(*cdt, points, "points", boundary_tolerance);
+    if (!fixed.empty()) {  // as cvt2 --fixed-points: inserted after the points
+      const std::vector<std::string> notes = insert_points(*cdt, fixed, "fixed_points", {});
+      out->notes.insert(out->notes.end(), notes.begin(), notes.end());
+    }
     // The input row of each vertex (the first, for merged rows), kept as the vertices move.
     std::unordered_map<const void*, std::int64_t> row;
     {
@@ -971,7 +978,8 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
                         .move_ratio_bound(move_ratio)
                         .maximum_running_time(time_limit)
                         .number_of_threads(unsigned(thread_count))
-                        .callback(progress);
+                        .callback(progress)
+                        .fixed_points(fixed);
     const auto run = [&](const auto& parameters) {
       return algorithm == "lbfgs" ? CVT_2::lbfgs_optimize_2(*cdt, parameters)
                                   : CVT_2::lloyd_optimize_2(*cdt, parameters);
@@ -1163,7 +1171,7 @@ PYBIND11_MODULE(_cvt2, m) {
   m.def("optimize", &optimize, py::arg("domain"), py::arg("points"), py::arg("algorithm"),
         py::arg("density"), py::arg("move_ratio"), py::arg("max_iterations"), py::arg("time_limit"),
         py::arg("threads"), py::arg("callback"), py::arg("lipschitz_k"), py::arg("boundary_size"),
-        py::arg("boundary_tolerance"));
+        py::arg("boundary_tolerance"), py::arg("fixed_points"));
   m.def("bounded_voronoi", &bounded_voronoi, py::arg("domain"), py::arg("points"),
         py::arg("threads"), py::arg("boundary_tolerance"));
   m.def("natural_neighbours", &natural_neighbours, py::arg("domain"), py::arg("nodes"),

@@ -121,6 +121,50 @@ TEST_CASE("constrained vertices never move and free generators never cross a con
   CHECK(crossings == 0);
 }
 
+TEST_CASE("fixed points stay where they are, by both optimizers; the others converge around them",
+          "[lloyd][lbfgs]") {
+  const bool lbfgs = GENERATE(false, true);
+  CAPTURE(lbfgs);
+  Domain d;
+  load_domain(d, "square_inner_constraints.poly");
+  const std::vector<Point> wells{Point(2.5, 7.25), Point(7.125, 2.75), Point(5, 5)};
+  CVT_2::insert_generators_2(d.cdt, wells);
+  insert_random_points(d, 400, 5);
+  const auto np = CVT_2::parameters::fixed_points(wells).number_of_iterations(300);
+  const auto r = lbfgs ? CVT_2::lbfgs_optimize_2(d.cdt, np) : CVT_2::lloyd_optimize_2(d.cdt, np);
+  CHECK(r.stop_reason == CVT_2::CONVERGED);
+  for (const Point& w : wells) {
+    CAPTURE(w);
+    Cdt::Locate_type lt;
+    int li;
+    d.cdt.locate(w, lt, li);
+    CHECK(lt == Cdt::VERTEX);
+  }
+  // The same run without fixed points moves the wells' generators, to about the same energy.
+  Domain free;
+  load_domain(free, "square_inner_constraints.poly");
+  CVT_2::insert_generators_2(free.cdt, wells);
+  insert_random_points(free, 400, 5);
+  const auto free_np = CVT_2::parameters::number_of_iterations(300);
+  const auto f = lbfgs ? CVT_2::lbfgs_optimize_2(free.cdt, free_np)
+                       : CVT_2::lloyd_optimize_2(free.cdt, free_np);
+  CHECK(std::abs(r.energy / f.energy - 1) < 0.05);
+  std::size_t moved = 0;
+  for (const Point& w : wells) {
+    Cdt::Locate_type lt;
+    int li;
+    free.cdt.locate(w, lt, li);
+    moved += lt != Cdt::VERTEX;
+  }
+  CHECK(moved == wells.size());
+  // A fixed point that is not a generator is an error that names it.
+  const std::vector<Point> outside{Point(0.5, 0.25)}, on_constraint{Point(2, 2)};
+  CHECK_THROWS_WITH(CVT_2::lloyd_optimize_2(d.cdt, CVT_2::parameters::fixed_points(outside)),
+                    "fixed_points: (0.5, 0.25) is not a generator (insert it first)");
+  CHECK_NOTHROW(CVT_2::lbfgs_optimize_2(  // a constrained vertex, fixed anyway
+      d.cdt, CVT_2::parameters::fixed_points(on_constraint).number_of_iterations(1)));
+}
+
 TEST_CASE("generators stay in the region of the domain they start in", "[lloyd]") {
   // Massachusetts' counties are regions closed by constraints.
   Domain d;

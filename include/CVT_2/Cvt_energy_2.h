@@ -35,6 +35,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -132,6 +133,16 @@ class Cvt_energy_2 {
   void set_number_of_threads(unsigned n) { m_number_of_threads = n; }
   unsigned number_of_threads() const { return m_number_of_threads; }  ///< as set; 0: one per core
 
+  /// Fixes the generators `vertices` (free vertices of the triangulation): their cells count in
+  /// the energy, but they are not among `free_generators()`, so that no optimizer moves them (a
+  /// well, an observation point). Replaces the generators fixed before.
+  void fix_generators(const std::vector<Vertex_handle>& vertices) {
+    m_fixed.clear();
+    m_fixed.insert(vertices.begin(), vertices.end());
+  }
+  /// whether `v` was fixed by `fix_generators()`
+  bool is_fixed(Vertex_handle v) const { return !m_fixed.empty() && m_fixed.count(v) != 0; }
+
   const Evaluation& last_evaluation() const { return m_evaluation; }  ///< the last evaluation
   /// the number of calls of `evaluate()` so far
   std::size_t number_of_evaluations() const { return m_number_of_evaluations; }
@@ -226,6 +237,7 @@ class Cvt_energy_2 {
   std::size_t m_number_of_evaluations = 0;
   std::vector<Chunk> m_chunk_sums;
   Free_generators m_moves;  // a list for each chunk, not joined by a copy
+  std::unordered_set<Vertex_handle> m_fixed;
   internal::Buffer_pool<Batch_buffers> m_batch_buffers;  // one in use per thread at most
 
   // With a density that restricts itself to disks (and is not evaluated in batches): the last
@@ -351,7 +363,7 @@ auto Cvt_energy_2<CDT, Density, Quadrature, Traits>::cell_figures(
     Vertex_handle v, const Cell_points& points, bool is_free, const Cell_moments_2<Kernel>& m) const
     -> Cell_figures {
   Cell_figures f;
-  f.is_free = is_free;
+  f.is_free = is_free && !is_fixed(v);
   f.mass = CGAL::to_double(m.mass);
   f.energy = CGAL::to_double(m.energy);
   const double first2 = CGAL::to_double(m.first_moment.squared_length());

@@ -142,6 +142,10 @@ class Lbfgs_optimizer_2 {
     m_history.set_number_of_threads(n);
   }
   unsigned number_of_threads() const { return m_energy.number_of_threads(); }  ///< as set
+  /// Generators that never move: `Cvt_energy_2::fix_generators()`. Before the first evaluation.
+  void fix_generators(const std::vector<Vertex_handle>& vertices) {
+    m_energy.fix_generators(vertices);
+  }
 
   /// the evaluation of the current point
   const Evaluation& last_evaluation() const { return m_current.evaluation; }

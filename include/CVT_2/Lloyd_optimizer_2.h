@@ -64,6 +64,10 @@ class Lloyd_optimizer_2 {
   /// `move()` checks the moved faces and flips most edges on; 0 (the default) means one per
   /// core. The results are the same, bit for bit, whatever the number.
   void set_number_of_threads(unsigned n) { m_energy.set_number_of_threads(n); }
+  /// Generators that never move: `Cvt_energy_2::fix_generators()`. Before the first evaluation.
+  void fix_generators(const std::vector<Vertex_handle>& vertices) {
+    m_energy.fix_generators(vertices);
+  }
   unsigned number_of_threads() const { return m_energy.number_of_threads(); }  ///< as set
 
   /// Moves every free generator to the centroid that the last `evaluate()` computed (or, if

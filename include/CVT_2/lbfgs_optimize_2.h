@@ -39,10 +39,12 @@ namespace CVT_2 {
 ///        `sizing_field`, `quadrature`, `minimum_quadrature_resolution`,
 ///        `maximum_quadrature_resolution`, `move_ratio_bound`, `number_of_iterations` (at most
 ///        that many steps), `maximum_running_time`, `callback` (called after each step),
-///        `verbose`, `number_of_threads`, `geom_traits`), with the same meanings and defaults, and
+///        `verbose`, `number_of_threads`, `fixed_points`, `geom_traits`), with the same meanings
+///        and defaults, and
 ///   - `lbfgs_memory(m)`: the number of curvature pairs kept, an integer \f$\ge 0\f$;
 ///     default 7; 0 makes every step a Lloyd step.
-/// \throws std::invalid_argument for a bad parameter value, naming it; Domain_error if the
+/// \throws std::invalid_argument for a bad parameter value, naming it (a fixed point that is
+///         not a vertex); Domain_error if the
 ///         density is not positive and finite at a point where it is evaluated.
 template <class CDT, class NP = No_named_parameters>
 Optimization_result lbfgs_optimize_2(CDT& cdt, const NP& np = parameters::default_values()) {
@@ -55,6 +57,7 @@ Optimization_result lbfgs_optimize_2(CDT& cdt, const NP& np = parameters::defaul
   Optimizer lbfgs(cdt, density, Policies::quadrature(np), options.lbfgs_memory,
                   Policies::traits(np));
   lbfgs.set_number_of_threads(options.threads);
+  lbfgs.fix_generators(internal::fixed_vertices(cdt, np));
   return internal::run_optimization(lbfgs, options, "lbfgs");
 }
 

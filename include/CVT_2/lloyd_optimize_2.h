@@ -44,8 +44,12 @@ namespace CVT_2 {
 ///   - `verbose(b)`: a line a iteration on `std::clog`; default `false`.
 ///   - `number_of_threads(n)`: threads that build and integrate the cells; default 0, one per
 ///     core. The result is the same, bit for bit, whatever `n`.
+///   - `fixed_points(r)`: a range of points, vertices of `cdt` (generators inserted before) that
+///     never move: a well, an observation point (one on a constraint is a constrained vertex,
+///     which never moves anyway). Their cells count in the energy.
 ///   - `geom_traits(t)`: a model of `BvdTraits_2` for the diagram; default `Bvd_traits_2`.
-/// \throws std::invalid_argument for a bad parameter value, naming it; Domain_error if the
+/// \throws std::invalid_argument for a bad parameter value, naming it (a fixed point that is
+///         not a vertex); Domain_error if the
 ///         density is not positive and finite at a point where it is evaluated.
 template <class CDT, class NP = No_named_parameters>
 Optimization_result lloyd_optimize_2(CDT& cdt, const NP& np = parameters::default_values()) {
@@ -57,6 +61,7 @@ Optimization_result lloyd_optimize_2(CDT& cdt, const NP& np = parameters::defaul
   internal::lay_out_faces(cdt, options);
   Optimizer lloyd(cdt, density, Policies::quadrature(np), Policies::traits(np));
   lloyd.set_number_of_threads(options.threads);
+  lloyd.fix_generators(internal::fixed_vertices(cdt, np));
   return internal::run_optimization(internal::Lloyd_steps<Optimizer>{lloyd}, options, "lloyd");
 }
 

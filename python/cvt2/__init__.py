@@ -383,6 +383,7 @@ def optimize(
     lipschitz_k=0.1,
     boundary_size=None,
     boundary_tolerance=None,
+    fixed_points=None,
 ) -> "OptimizeResult":
     """Moves ``points`` to a centroidal Voronoi tessellation of ``domain``: each free generator
     to the centroid of its bounded Voronoi cell (under the density), again and again. The same
@@ -416,7 +417,11 @@ def optimize(
       None or True goes on, and the last call's answer is not used when the run stopped for
       another reason. Anything else it returns raises TypeError;
     - ``time_limit``: stop after that many seconds (0: no limit);
-    - ``boundary_tolerance``: as in :func:`bounded_voronoi`.
+    - ``boundary_tolerance``: as in :func:`bounded_voronoi`;
+    - ``fixed_points``: None, or a float array (k, 2) of generators that never move (wells,
+      observation points; ``cvt2 --fixed-points``), inserted after ``points``, in the domain.
+      For finer cells around them, pass a density (``cvt2 --refine`` uses
+      ``size + (background - size) * min(1, distance / radius)`` as the cell size).
 
     Ctrl-C raises KeyboardInterrupt. Returns an :class:`OptimizeResult`.
     """
@@ -435,6 +440,7 @@ def optimize(
         float(lipschitz_k),
         boundary_size,
         _tolerance(boundary_tolerance),
+        fixed_points,
     )
     return OptimizeResult(result, domain)
 

@@ -241,3 +241,50 @@ def test_cells_on_constraints_cover_each_line(program, data, tmp_path, name, con
         for c, o in {(c, o) for c, o, _ in across}:
             for a, b in pairs.get((min(c, o) - 1, max(c, o) - 1), []):
                 assert not on_a_segment(vertices[a], vertices[b], ends, 1e-12 * np.abs(vertices).max())
+
+
+def test_wells_stay_where_they_are_in_cells_refined_around_them(program, data, tmp_path):
+    """`--fixed-points`: generators that never move; `--refine X Y SIZE RADIUS`: small cells
+    around them; the DISV's cell centers are the wells."""
+    wells = np.array([[2.5, 7.25], [7.125, 2.75]])
+    np.savetxt(tmp_path / "wells.txt", wells)
+    refine = [a for w in wells for a in ("--refine", w[0], w[1], 0.05, 2)]
+    _, points, files = run_program(
+        program, data / "square_inner_constraints.wkt", tmp_path, "-n", 1500, "--fixed-points", tmp_path / "wells.txt",
+        *refine, outputs=("points", "disv"),
+    )
+    vertices, centers, cells = read_disv(files["disv"])
+
+    def area(c):
+        x, y = vertices[c].T
+        return abs(np.dot(x[:-1], y[1:]) - np.dot(x[1:], y[:-1])) / 2
+
+    areas = np.array([area(c) for c in cells])
+    for w in wells:
+        at = np.flatnonzero((points[:, :2] == w).all(axis=1))
+        assert len(at) == 1 and points[at[0], 2] == 0  # a free generator, not moved
+        k = np.flatnonzero((centers == w).all(axis=1))
+        assert len(k) == 1 and areas[k[0]] < 0.1 * np.median(areas)
+    # Without them, the wells' generators move away.
+    _, free, _ = run_program(program, data / "square_inner_constraints.wkt", tmp_path, "-n", 1500,
+                             "--points-in", tmp_path / "wells.txt")
+    assert not any((free[:, :2] == w).all(axis=1).any() for w in wells)
+
+
+def test_fixed_points_are_the_programs(program, data, tmp_path):
+    import cvt2
+
+    domain = cvt2.Domain.from_file(data / "four_clusters.poly")
+    points = cvt2.random_points(domain, 300, seed=4)
+    wells = np.array([[0.8125, 0.375], [0.25, 0.625]])
+    np.savetxt(tmp_path / "points.txt", points)
+    np.savetxt(tmp_path / "wells.txt", wells)
+    for algorithm in ("lbfgs", "lloyd"):
+        result = cvt2.optimize(domain, points, algorithm=algorithm, max_iterations=40, fixed_points=wells)
+        _, theirs, _ = run_program(program, data / "four_clusters.poly", tmp_path, "-n", 0, "--algorithm", algorithm,
+                                   "--iterations", 40, "--points-in", tmp_path / "points.txt",
+                                   "--fixed-points", tmp_path / "wells.txt")
+        assert np.array_equal(result.points, theirs[:, :2])
+        assert all((result.points == w).all(axis=1).any() for w in wells)
+    with pytest.raises(ValueError, match=r"fixed_points\[0\]"):
+        cvt2.optimize(domain, points, fixed_points=[[2.0, 2.0]])

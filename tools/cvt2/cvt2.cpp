@@ -16,6 +16,7 @@
 #include <CVT_2/IO/write_svg.h>
 #include <CVT_2/IO/write_triangle.h>
 #include <CVT_2/IO/write_vtu.h>
+#include <CVT_2/Point_refinement_sizing_2.h>
 #include <CVT_2/Simulation_grid_2.h>
 #include <CVT_2/internal/input_segments_of_constraints.h>
 #include <CVT_2/lbfgs_optimize_2.h>
@@ -78,7 +79,9 @@ struct Options {
   double corner_angle = 30;
   double minimum_ring_area = 0;
   std::string points_in;
-  std::optional<double> boundary_tolerance;  // default: insert_generators_2()'s
+  std::string fixed_points;                   // --fixed-points FILE
+  std::vector<std::array<double, 4>> refine;  // --refine X Y SIZE RADIUS, each
+  std::optional<double> boundary_tolerance;   // default: insert_generators_2()'s
   std::uint64_t seed = 1;
   std::size_t iterations = 1000;
   double move_ratio = 0.01;
@@ -112,6 +115,11 @@ void print_help(std::ostream& os) {
         "      --boundary-tolerance T  a point of FILE outside DOMAIN by at most T goes onto\n"
         "                         its boundary, a constrained generator (default 2^-50 of the\n"
         "                         largest coordinate: a rounding; 0: none)\n"
+        "      --fixed-points FILE  generators that never move (wells, observation points),\n"
+        "                         one 'x y' per line\n"
+        "      --refine X Y SIZE RADIUS  cells of spacing SIZE at (X, Y), growing to the\n"
+        "                         background size (that of -n, --cells or --size uniform cells)\n"
+        "                         at distance RADIUS; repeatable (a well: with --fixed-points)\n"
         "      --seed S           seed of the random generators (default 1)\n"
         "      --cells N          N cells in all, the domain's vertices included (instead of -n)\n"
         "      --size H           cells of spacing H: H apart in a hexagonal tiling, a cell of\n"
@@ -274,6 +282,7 @@ const std::map<std::string, Setter>& valued_options() {
       {"--geojson", [](Options& o, auto&, auto& v) { o.geojson = v; }},
       {"--vtu", [](Options& o, auto&, auto& v) { o.vtu = v; }},
       {"--disv", [](Options& o, auto&, auto& v) { o.disv = v; }},
+      {"--fixed-points", [](Options& o, auto&, auto& v) { o.fixed_points = v; }},
       {"--cells-on-constraints", [](Options& o, auto&, auto& v) { o.cells_on_constraints = v; }},
       {"--mesh-out", [](Options& o, auto&, auto& v) { o.mesh_out = v; }},
       {"--domain-out", [](Options& o, auto&, auto& v) { o.domain_out = v; }},
@@ -306,6 +315,14 @@ Options parse_command_line(int argc, char* argv[]) {
       o.version = true;
     } else if (arg == "--quiet") {
       o.quiet = true;
+    } else if (arg == "--refine") {
+      if (i + 4 >= argc) throw Usage_error("--refine expects four values: X Y SIZE RADIUS");
+      std::array<double, 4> r{};
+      for (int j = 0; j < 4; ++j) r[std::size_t(j)] = parse_real("--refine", argv[++i]);
+      if (!(r[2] > 0) || !(r[3] > 0))
+        throw Usage_error("--refine's SIZE and RADIUS must be positive, not " +
+                          std::string(argv[i - 1]) + " and " + argv[i]);
+      o.refine.push_back(r);
     } else {
       std::string name = arg;
       std::optional<std::string> value;
@@ -330,6 +347,8 @@ Options parse_command_line(int argc, char* argv[]) {
   if (positional.size() > 1)
     throw Usage_error("one DOMAIN file only, not also '" + positional[1] + "'");
   o.domain = positional[0];
+  if (o.lipschitz && !o.refine.empty())
+    throw Usage_error("give one of --density lipschitz and --refine");
   if (!o.lipschitz && o.boundary_size)
     throw Usage_error("--boundary-size needs --density lipschitz");
   if (int(o.points.has_value()) + int(o.cells.has_value()) + int(o.size.has_value()) > 1)
@@ -370,8 +389,20 @@ double physical_memory() {
 // minutes of work.
 double bytes_per_generator(const Options& o) { return o.lbfgs ? 750 : 360; }
 
-void insert_random_points(std::size_t n, const Options& o, const std::optional<Sizing>& sizing,
-                          CDT& cdt) {
+// The sizing field of --density lipschitz or of --refine, if any.
+struct Sizing_choice {
+  std::optional<Sizing> lipschitz;
+  std::optional<CVT_2::Point_refinement_sizing_2<K>> refinement;
+  // run(np) with the sizing field among the named parameters np.
+  template <class NP, class Run>
+  auto apply(const NP& np, Run run) const {
+    if (lipschitz) return run(np.sizing_field(*lipschitz));
+    if (refinement) return run(np.sizing_field(*refinement));
+    return run(np);
+  }
+};
+
+void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& sizing, CDT& cdt) {
   if (n == 0) return;
   const double needed = bytes_per_generator(o) * double(n), memory = physical_memory();
   if (memory > 0 && needed > memory)
@@ -379,10 +410,10 @@ void insert_random_points(std::size_t n, const Options& o, const std::optional<S
                       std::to_string(static_cast<long long>(needed / 1e9)) +
                       " GB; this machine has " +
                       std::to_string(static_cast<long long>(memory / 1e9)) + " GB");
-  const auto np = CVT_2::parameters::random_seed(o.seed);
   CVT_2::insert_generators_2(
-      cdt, sizing ? CVT_2::random_points_in_domain_2(cdt, n, np.sizing_field(std::cref(*sizing)))
-                  : CVT_2::random_points_in_domain_2(cdt, n, np));
+      cdt, sizing.apply(CVT_2::parameters::random_seed(o.seed), [&](const auto& np) {
+        return CVT_2::random_points_in_domain_2(cdt, n, np);
+      }));
 }
 
 // --- optimization ------------------------------------------------------------------------------
@@ -429,22 +460,24 @@ class Progress {
 };
 
 // The optimization, with progress on standard error; Ctrl-C ends it early.
-CVT_2::Optimization_result optimize(CDT& cdt, const Options& o,
-                                    const std::optional<Sizing>& sizing) {
+CVT_2::Optimization_result optimize(CDT& cdt, const Options& o, const Sizing_choice& sizing,
+                                    const std::vector<Point_2>& fixed) {
   Progress progress(o.quiet);
   const std::function<bool(const CVT_2::Optimization_result&)> callback = std::ref(progress);
   const auto np = CVT_2::parameters::number_of_iterations(o.iterations)
                       .move_ratio_bound(o.move_ratio)
                       .maximum_running_time(o.time_limit)
                       .number_of_threads(o.threads)
-                      .callback(callback);
+                      .callback(callback)
+                      .fixed_points(fixed);
   const auto run = [&o](CDT& t, const auto& parameters) {
     return o.lbfgs ? CVT_2::lbfgs_optimize_2(t, parameters)
                    : CVT_2::lloyd_optimize_2(t, parameters);
   };
   std::signal(SIGINT, on_interrupt);
   try {
-    const CVT_2::Optimization_result r = sizing ? run(cdt, np.sizing_field(*sizing)) : run(cdt, np);
+    const CVT_2::Optimization_result r =
+        sizing.apply(np, [&](const auto& parameters) { return run(cdt, parameters); });
     progress.finish();
     std::signal(SIGINT, SIG_DFL);
     return r;
@@ -621,10 +654,11 @@ int run(const Options& o) {
   CDT domain_alone;  // for --domain-out: the domain and the file's own generators, no others
   if (!o.domain_out.empty()) domain_alone = cdt;
   // The sizing's default sizes are the boundary edges, before generators split any.
-  std::optional<Sizing> sizing;
+  Sizing_choice sizing;
   if (o.lipschitz)
-    sizing.emplace(cdt, o.lipschitz_k,
-                   o.boundary_size ? std::optional<K::FT>(*o.boundary_size) : std::nullopt);
+    sizing.lipschitz.emplace(
+        cdt, o.lipschitz_k,
+        o.boundary_size ? std::optional<K::FT>(*o.boundary_size) : std::nullopt);
   if (!o.points_in.empty()) {
     if (!std::ifstream(o.points_in))
       throw std::runtime_error("cannot open the points file '" + o.points_in + "'");
@@ -639,6 +673,19 @@ int run(const Options& o) {
             ? CVT_2::IO::insert_points(cdt, points,
                                        CVT_2::parameters::boundary_tolerance(*o.boundary_tolerance))
             : CVT_2::IO::insert_points(cdt, points);
+    const std::string note = CVT_2::IO::moved_points_note(points, moved);
+    if (!note.empty()) std::cerr << "cvt2: note: " << note << '\n';
+  }
+  // --fixed-points: generators that never move, where they are given (or where the boundary
+  // tolerance moved them).
+  std::vector<Point_2> fixed;
+  if (!o.fixed_points.empty()) {
+    if (!std::ifstream(o.fixed_points))
+      throw std::runtime_error("cannot open the fixed points file '" + o.fixed_points + "'");
+    const auto points = CVT_2::IO::read_points<Point_2>(o.fixed_points);
+    const auto moved = CVT_2::IO::insert_points(cdt, points);
+    fixed = points.points;
+    for (std::size_t i = 0; i < moved.moved.size(); ++i) fixed[moved.moved[i]] = moved.moved_to[i];
     const std::string note = CVT_2::IO::moved_points_note(points, moved);
     if (!note.empty()) std::cerr << "cvt2: note: " << note << '\n';
   }
@@ -657,8 +704,17 @@ int run(const Options& o) {
   if (!o.resample && present > n / 10 && present > 100)
     std::cerr << "cvt2: note: the domain's " << present << " vertices are generators too, "
               << present + n << " cells in all; --boundary resample spaces them to the cell size\n";
+  if (!o.refine.empty()) {  // the background: uniform cells, as many as asked for
+    const double background =
+        o.size ? *o.size
+               : std::sqrt(2 * domain_area(cdt) /
+                           (std::sqrt(3.0) * double(std::max<std::size_t>(n + present, 1))));
+    sizing.refinement.emplace(background);
+    for (const auto& [x, y, size, radius] : o.refine)
+      sizing.refinement->add_point(Point_2(x, y), std::min(size, background), radius);
+  }
   insert_random_points(n, o, sizing, cdt);
-  const CVT_2::Optimization_result r = optimize(cdt, o, sizing);
+  const CVT_2::Optimization_result r = optimize(cdt, o, sizing, fixed);
   const BVD bvd(cdt);
   write_outputs(o, cdt, bvd, metadata, domain_alone, segments);
   print_summary(o, r, bvd, domain_area(cdt));

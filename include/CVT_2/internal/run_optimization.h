@@ -6,6 +6,7 @@
 #include <CVT_2/Optimization_result.h>
 #include <CVT_2/internal/layout/sort_faces.h>
 #include <CVT_2/internal/parallel/run_chunks.h>
+#include <CVT_2/internal/to_string.h>
 #include <CVT_2/parameters.h>
 
 #include <algorithm>
@@ -20,6 +21,7 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace CVT_2 {
 namespace internal {
@@ -91,6 +93,28 @@ Run_options read_run_options(const NP& np) {
                                 std::to_string(o.lo) + ") <= maximum (" + std::to_string(o.hi) +
                                 ")");
   return o;
+}
+
+// The free vertices at the points of the named parameter `fixed_points` (none without it; a
+// point on a constraint is a constrained vertex, which never moves anyway).
+// \throws std::invalid_argument naming a point that is not a vertex of `cdt`.
+template <class CDT, class NP>
+std::vector<typename CDT::Vertex_handle> fixed_vertices(const CDT& cdt, const NP& np) {
+  std::vector<typename CDT::Vertex_handle> vertices;
+  if constexpr (internal_np::has_parameter<NP, internal_np::fixed_points_t>) {
+    typename CDT::Face_handle hint;
+    for (const auto& p : get_parameter(np, internal_np::fixed_points_t())) {
+      typename CDT::Locate_type lt;
+      int li;
+      hint = cdt.locate(p, lt, li, hint);
+      if (lt != CDT::VERTEX)
+        throw std::invalid_argument("fixed_points: " + to_string(p) +
+                                    " is not a generator (insert it first)");
+      if (!cdt.are_there_incident_constraints(hint->vertex(li)))
+        vertices.push_back(hint->vertex(li));
+    }
+  }
+  return vertices;
 }
 
 // Lays out the faces of a big triangulation that CGAL's own insertion left scattered in
