@@ -784,13 +784,24 @@ struct Diagram {
   }
 
   template <class Writer>
+  // As cvt2 writes: into path.tmp, renamed once complete, so that a failed writer (a bad
+  // argument, a full disk) leaves an earlier file as it was.
   void write(const std::string& path, Writer writer) const {
     py::gil_scoped_release release;
-    std::ofstream os(path, std::ios::binary);
+    const std::string tmp = path + ".tmp";
+    std::ofstream os(tmp, std::ios::binary);
     if (!os) throw std::ios_base::failure("cannot write '" + path + "'");
-    writer(os);
-    os.close();
-    if (!os) throw std::ios_base::failure("error while writing '" + path + "'");
+    try {
+      writer(os);
+      os.close();
+      if (!os) throw std::ios_base::failure("error while writing '" + path + "'");
+      if (std::rename(tmp.c_str(), path.c_str()) != 0)
+        throw std::ios_base::failure("cannot write '" + path + "'");
+    } catch (...) {
+      os.close();
+      std::remove(tmp.c_str());
+      throw;
+    }
   }
 };
 
@@ -1120,7 +1131,8 @@ PYBIND11_MODULE(_cvt2, m) {
              });
            })
       .def("write_disv",
-           [](const Diagram& d, const std::string& path, double top, double bottom, bool barriers,
+           [](const Diagram& d, const std::string& path, const std::vector<double>& top,
+              const std::vector<double>& bottom, bool barriers,
               const CVT_2::IO::Metadata& metadata) {
              d.write(path, [&](std::ostream& os) {
                CVT_2::IO::write_disv(os, d.grid(barriers), top, bottom, metadata);

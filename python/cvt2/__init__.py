@@ -807,7 +807,8 @@ class BoundedVoronoi:
     def to_disv(self, path, top=1.0, bottom=0.0, constraints="slit") -> None:
         """Writes the cells as a MODFLOW 6 DISV grid of one layer between ``bottom`` and
         ``top`` (``cvt2 --disv``; flopy), :meth:`metadata` in comment lines. Each pair of cells
-        shares one edge, the whole face between them.
+        shares one edge, the whole face between them. ``top`` and ``bottom``: a number, or one
+        a cell of the grid (``cvt2 --top FILE``), each bottom below its top (else ValueError).
 
         ``constraints``: ``"slit"`` (the cells of this diagram: a constrained generator's cell
         lies on both sides of an inner constraint) or ``"barrier"`` (a wall: the cell of a
@@ -815,7 +816,10 @@ class BoundedVoronoi:
         no edge is shared across, so that MODFLOW connects no cells through it; cells are then
         more than :attr:`points`, numbered as the diagram's, the parts of a split cell one after
         the other)."""
-        self._impl.write_disv(os.fspath(path), float(top), float(bottom), _barriers(constraints),
+        def values(v):
+            return [float(x) for x in np.ravel(np.asarray(v, dtype=float))]
+
+        self._impl.write_disv(os.fspath(path), values(top), values(bottom), _barriers(constraints),
                               self.metadata(constraints))
 
     def to_cells_on_constraints(self, path, constraints="slit") -> None:

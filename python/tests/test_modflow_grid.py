@@ -288,3 +288,44 @@ def test_fixed_points_are_the_programs(program, data, tmp_path):
         assert all((result.points == w).all(axis=1).any() for w in wells)
     with pytest.raises(ValueError, match=r"fixed_points\[0\]"):
         cvt2.optimize(domain, points, fixed_points=[[2.0, 2.0]])
+
+
+def test_top_and_bottom_by_cell(program, data, tmp_path):
+    """`--top FILE`: one value a cell, in the DISV's order (INTERNAL); a count that is not the
+    cells' or a bottom above its top is an error, and no file is written."""
+    import subprocess
+
+    _, _, files = run_program(program, data / "four_clusters.poly", tmp_path, "-n", 100, "--constraints", "barrier",
+                              outputs=("disv",))
+    cells = len(read_disv(files["disv"])[2])
+    top = 10 + np.arange(cells) / 64
+    np.savetxt(tmp_path / "top.txt", top)
+    disv = tmp_path / "by_cell.disv"
+    command = [program, str(data / "four_clusters.poly"), "--quiet", "-n", "100", "--constraints", "barrier",
+               "--bottom", "-2.5", "--disv", str(disv)]
+    subprocess.run(command + ["--top", str(tmp_path / "top.txt")], check=True, capture_output=True)
+    text = disv.read_text()
+    block = text[text.index("  TOP\n"):text.index("  BOTM")].split()
+    assert block[:2] == ["TOP", "INTERNAL"] and np.array_equal(np.array(block[2:], dtype=float), top)
+    assert "  BOTM LAYERED\n    CONSTANT -2.5\n" in text
+    np.savetxt(tmp_path / "short.txt", top[:-1])
+    p = subprocess.run(command + ["--top", str(tmp_path / "short.txt")], capture_output=True, text=True)
+    assert p.returncode != 0 and f"{cells - 1} top values for {cells} cells" in p.stderr
+    p = subprocess.run(command + ["--top", "-3"], capture_output=True, text=True)
+    assert p.returncode != 0 and "--bottom must be below --top" in p.stderr
+    assert disv.read_text() == text  # the earlier file is kept
+
+
+def test_module_top_and_bottom_by_cell(data, tmp_path):
+    import cvt2
+
+    domain = cvt2.Domain.from_file(data / "square_inner_constraints.wkt")
+    diagram = cvt2.bounded_voronoi(domain, cvt2.random_points(domain, 200, seed=2))
+    diagram.to_disv(tmp_path / "g.disv", constraints="barrier")
+    cells = len(read_disv(tmp_path / "g.disv")[2])
+    assert cells > len(diagram.points)  # the cells on walls split
+    diagram.to_disv(tmp_path / "h.disv", top=np.linspace(5, 6, cells), bottom=0, constraints="barrier")
+    assert "    INTERNAL\n" in (tmp_path / "h.disv").read_text()
+    with pytest.raises(ValueError, match=f"{len(diagram.points)} top values for {cells} cells"):
+        diagram.to_disv(tmp_path / "i.disv", top=np.ones(len(diagram.points)), constraints="barrier")
+    assert not (tmp_path / "i.disv").exists()

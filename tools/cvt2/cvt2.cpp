@@ -93,8 +93,8 @@ struct Options {
   unsigned threads = 0;  // 0: all cores
   std::string svg, points_out, cells_out, geojson, vtu, disv, mesh_out, domain_out;
   std::string cells_on_constraints;
-  double top = 1, bottom = 0;  // of the DISV's layer
-  bool barriers = false;       // --constraints barrier
+  std::string top = "1", bottom = "0";  // of the DISV's layer: a number or a file of them
+  bool barriers = false;                // --constraints barrier
   bool quiet = false;
   bool help = false;
   bool version = false;
@@ -153,7 +153,8 @@ void print_help(std::ostream& os) {
         "      --vtu FILE         the cells as a VTK XML grid with shared points (ParaView,\n"
         "                         meshio): cell, constrained, area, generator\n"
         "      --disv FILE        the cells as a MODFLOW 6 DISV grid, one layer (flopy)\n"
-        "      --top T, --bottom B  the DISV layer's top and bottom (default 1 and 0)\n"
+        "      --top T, --bottom B  the DISV layer's top and bottom (default 1 and 0): a number,\n"
+        "                         or a file of one a cell in the DISV's order\n"
         "      --cells-on-constraints FILE  CSV 'constraint,cell,length,other_cell': the\n"
         "                         cells along each input line, for boundary conditions\n"
         "                         (constraint: the .poly segment's row from 0, the .wkt line,\n"
@@ -188,6 +189,20 @@ double parse_real(const std::string& option, const std::string& text) {
   if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(x))
     throw Usage_error(option + " expects a number, not '" + text + "'");
   return x;
+}
+
+bool is_number(const std::string& text) {
+  char* end = nullptr;
+  std::strtod(text.c_str(), &end);
+  return !text.empty() && *end == '\0';
+}
+
+// --top, --bottom: a number, or the file of one a cell.
+std::vector<double> number_or_values(const std::string& option, const std::string& text) {
+  if (is_number(text)) return {parse_real(option, text)};
+  if (!std::ifstream(text))
+    throw std::runtime_error("cannot open the " + option.substr(2) + " file '" + text + "'");
+  return CVT_2::IO::read_values(text);
 }
 
 std::uint64_t parse_count(const std::string& option, const std::string& text) {
@@ -286,8 +301,8 @@ const std::map<std::string, Setter>& valued_options() {
       {"--cells-on-constraints", [](Options& o, auto&, auto& v) { o.cells_on_constraints = v; }},
       {"--mesh-out", [](Options& o, auto&, auto& v) { o.mesh_out = v; }},
       {"--domain-out", [](Options& o, auto&, auto& v) { o.domain_out = v; }},
-      {"--top", [](Options& o, auto& n, auto& v) { o.top = parse_real(n, v); }},
-      {"--bottom", [](Options& o, auto& n, auto& v) { o.bottom = parse_real(n, v); }},
+      {"--top", [](Options& o, auto&, auto& v) { o.top = v; }},
+      {"--bottom", [](Options& o, auto&, auto& v) { o.bottom = v; }},
       {"--vtk",
        [](Options&, auto&, auto&) {
          throw Usage_error(
@@ -353,9 +368,13 @@ Options parse_command_line(int argc, char* argv[]) {
     throw Usage_error("--boundary-size needs --density lipschitz");
   if (int(o.points.has_value()) + int(o.cells.has_value()) + int(o.size.has_value()) > 1)
     throw Usage_error("give one of -n, --cells and --size");
-  if (!(o.bottom < o.top))
-    throw Usage_error("--bottom must be below --top, not " + std::to_string(o.bottom) +
-                      " >= " + std::to_string(o.top));
+  for (const auto& [name, text] : {std::pair("--top", &o.top), std::pair("--bottom", &o.bottom)})
+    if (!is_number(*text) && !std::ifstream(*text))
+      throw Usage_error(std::string(name) + " expects a number or a file of one a cell, not '" +
+                        *text + "'");
+  if (is_number(o.top) && is_number(o.bottom) &&
+      !(parse_real("--bottom", o.bottom) < parse_real("--top", o.top)))
+    throw Usage_error("--bottom must be below --top, not " + o.bottom + " >= " + o.top);
   if (o.deviation_bound && !o.resample)
     throw Usage_error("--deviation-bound needs --boundary resample");
   if (o.minimum_ring_area > 0 && !o.resample)
@@ -540,7 +559,10 @@ void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
     else
       write(mesh);  // the mesh's own cells and vertices, bit for bit
     if (!o.disv.empty())
-      out.write(o.disv, [&](std::ostream& os) { write_disv(os, grid, o.top, o.bottom, metadata); });
+      out.write(o.disv, [&](std::ostream& os) {
+        write_disv(os, grid, number_or_values("--top", o.top),
+                   number_or_values("--bottom", o.bottom), metadata);
+      });
     if (!o.cells_on_constraints.empty())
       out.write(o.cells_on_constraints, [&](std::ostream& os) {
         write_cells_on_constraints(

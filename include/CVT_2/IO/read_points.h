@@ -56,6 +56,19 @@ Point_data<Point_2> read_points(const std::string& filename) {
 }
 
 /// \ingroup PkgCvt2IO
+/// Reads numbers, one or more a line, in order (a value per cell, say); blank lines and `#`
+/// comments are skipped. \throws Parse_error on a word that is not a finite number, also when
+/// the file cannot be opened.
+inline std::vector<double> read_values(const std::string& filename) {
+  std::ifstream is = internal::open_input(filename);
+  internal::Line_reader in(is, filename);
+  std::vector<double> values;
+  for (std::vector<std::string> t; in.next(t);)
+    for (const std::string& word : t) values.push_back(in.real(word));
+  return values;
+}
+
+/// \ingroup PkgCvt2IO
 /// Inserts the points as generators (`insert_generators_2()`, which keeps the domain's marking,
 /// and takes its named parameter `boundary_tolerance`).
 /// \returns the points moved onto the boundary (`moved_points_note()` says which).

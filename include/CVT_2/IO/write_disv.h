@@ -10,7 +10,9 @@
 #include <cstddef>
 #include <fstream>
 #include <ostream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CVT_2 {
@@ -19,7 +21,8 @@ namespace IO {
 /// \ingroup PkgCvt2IO
 /// Writes the cells of `grid` as the input file of MODFLOW 6's DISV package (discretization by
 /// vertices), one layer from `bottom` to `top`: `DIMENSIONS` (NLAY 1, NCPL the cells, NVERT the
-/// vertices), `GRIDDATA` (TOP and BOTM constant), `VERTICES` (`iv xv yv`, numbered from 1, each
+/// vertices), `GRIDDATA` (TOP and BOTM: `CONSTANT` for one value, `INTERNAL` for one a cell, in
+/// the grid's order), `VERTICES` (`iv xv yv`, numbered from 1, each
 /// shared by the cells it bounds) and `CELL2D` (`icell2d xc yc ncvert icvert...`: the cell center
 /// is its generator, the vertices clockwise, closed by repeating the first, as flopy writes
 /// them). This is the grid flopy's `VoronoiGrid` builds by clipping unbounded Voronoi cells, here
@@ -33,13 +36,27 @@ namespace IO {
 /// so no edge: MODFLOW sees no connection there.
 /// `metadata`, if any, goes in comment lines after the first (`Metadata`).
 /// \tparam Mesh a `Bvd_mesh_2`.
-/// \pre `bottom < top`
+/// \throws std::invalid_argument if `top` or `bottom` has neither one value nor one a cell, or
+///         a bottom is not below its top, naming the cell (from 1).
 template <class Mesh>
-void write_disv(std::ostream& os, const Simulation_grid_2<Mesh>& grid, double top = 1,
-                double bottom = 0, const Metadata& metadata = {}) {
+void write_disv(std::ostream& os, const Simulation_grid_2<Mesh>& grid,
+                const std::vector<double>& top, const std::vector<double>& bottom,
+                const Metadata& metadata = {}) {
   using internal::write_number;
   using Index = typename Mesh::Index;
   const std::size_t cells = grid.number_of_cells();
+  for (const auto& [values, name] : {std::pair(&top, "top"), std::pair(&bottom, "bottom")})
+    if (values->size() != 1 && values->size() != cells)
+      throw std::invalid_argument("write_disv: " + std::to_string(values->size()) + " " + name +
+                                  " values for " + std::to_string(cells) +
+                                  " cells (one, or one a cell)");
+  for (std::size_t k = 0; k < cells; ++k) {
+    const double t = top[top.size() == 1 ? 0 : k], b = bottom[bottom.size() == 1 ? 0 : k];
+    if (!(b < t))
+      throw std::invalid_argument("write_disv: cell " + std::to_string(k + 1) + "'s bottom " +
+                                  internal::number_text(b) + " is not below its top " +
+                                  internal::number_text(t));
+  }
   // Which cells use each vertex, and whether it lies between two bisector pieces of the two.
   std::vector<std::vector<Index>> users(grid.number_of_vertices());
   std::vector<unsigned char> inner(grid.number_of_vertices(), 1);
@@ -67,11 +84,25 @@ void write_disv(std::ostream& os, const Simulation_grid_2<Mesh>& grid, double to
   for (const auto& [key, value] : metadata)
     os << "# " << internal::comment_text(key) << ": " << internal::comment_text(value) << '\n';
   os << "BEGIN OPTIONS\nEND OPTIONS\n\nBEGIN DIMENSIONS\n  NLAY 1\n  NCPL " << cells << "\n  NVERT "
-     << vertices.size() << "\nEND DIMENSIONS\n\nBEGIN GRIDDATA\n  TOP\n    CONSTANT ";
-  write_number(os, top);
-  os << "\n  BOTM LAYERED\n    CONSTANT ";
-  write_number(os, bottom);
-  os << "\nEND GRIDDATA\n\nBEGIN VERTICES\n";
+     << vertices.size() << "\nEND DIMENSIONS\n\nBEGIN GRIDDATA\n  TOP\n";
+  const auto array = [&](const std::vector<double>& values) {  // MODFLOW 6's array input
+    if (values.size() == 1) {
+      os << "    CONSTANT ";
+      write_number(os, values[0]);
+      os << '\n';
+      return;
+    }
+    os << "    INTERNAL\n";
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      os << (k % 10 == 0 ? "      " : " ");
+      write_number(os, values[k]);
+      if (k % 10 == 9 || k + 1 == values.size()) os << '\n';
+    }
+  };
+  array(top);
+  os << "  BOTM LAYERED\n";
+  array(bottom);
+  os << "END GRIDDATA\n\nBEGIN VERTICES\n";
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     os << "  " << i + 1 << ' ';
     write_number(os, grid.point(vertices[i]).x());
@@ -95,6 +126,15 @@ void write_disv(std::ostream& os, const Simulation_grid_2<Mesh>& grid, double to
     os << '\n';
   }
   os << "END CELL2D\n";
+}
+
+/// \ingroup PkgCvt2IO
+/// Writes the cells of `grid` as a DISV grid (as above), its layer from `bottom` to `top`.
+/// \pre `bottom < top`
+template <class Mesh>
+void write_disv(std::ostream& os, const Simulation_grid_2<Mesh>& grid, double top = 1,
+                double bottom = 0, const Metadata& metadata = {}) {
+  write_disv(os, grid, std::vector<double>{top}, std::vector<double>{bottom}, metadata);
 }
 
 /// \ingroup PkgCvt2IO
