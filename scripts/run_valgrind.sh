@@ -27,5 +27,9 @@ check "$root/build/tools/cvt2/cvt2" "$data/us_kentucky_counties.geojson" -n 3000
   --geojson "$out/c.geojson" --disv "$out/c.disv"
 check "$root/build/tools/cvt2/cvt2" "$data/world_land_110m.wkt" --boundary resample --cells 1500 \
   --minimum-ring-area 10 --iterations 2 --quiet --vtu "$out/d.vtu" --domain-out "$out/d.poly"
+printf '2.5 7.25\n7.125 2.75\n' > "$out/wells.txt"
+check "$root/build/tools/cvt2/cvt2" "$data/square_inner_constraints.wkt" -n 400 --iterations 5 --quiet \
+  --constraints barrier --fixed-points "$out/wells.txt" --refine 2.5 7.25 0.1 2 --disv "$out/e.disv" \
+  --geojson "$out/e.geojson" --vtu "$out/e.vtu" --cells-on-constraints "$out/e.csv"
 rm -r "$out"
 echo "valgrind: no error, no leak"
