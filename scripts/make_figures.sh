@@ -103,6 +103,10 @@ PYTHONPATH="$build/python" /usr/bin/python3 "$root/python/examples/resample.py" 
   resample.png
 pngquant --force --output "$fig/resample.png" 64 resample.png
 
+PYTHONPATH="$build/python" /usr/bin/python3 "$root/python/examples/modflow_grid.py" "$data" \
+  modflow_grid.png
+pngquant --force --output "$fig/modflow_grid.png" 64 modflow_grid.png
+
 "$ex/crack_interpolation" crack.txt
 /usr/bin/python3 "$root/scripts/plot_crack_interpolation.py" crack.txt crack.png
 pngquant --force --output "$fig/crack_interpolation.png" 64 crack.png
