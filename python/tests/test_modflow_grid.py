@@ -329,3 +329,59 @@ def test_module_top_and_bottom_by_cell(data, tmp_path):
     with pytest.raises(ValueError, match=f"{len(diagram.points)} top values for {cells} cells"):
         diagram.to_disv(tmp_path / "i.disv", top=np.ones(len(diagram.points)), constraints="barrier")
     assert not (tmp_path / "i.disv").exists()
+
+
+def two_point_flux_heads(vertices, centers, cells, fixed, values):
+    """The heads of MODFLOW's two-point fluxes (K = 1, no source) with the heads of the cells
+    `fixed` set to `values` there."""
+    n = len(cells)
+    rows, cols, vals = [], [], []
+    for a, b, width, cl1, cl2, _ in connection_geometry(vertices, centers, connections(cells)):
+        k = width / (cl1 + cl2)
+        rows += [a, b, a, b]
+        cols += [a, b, b, a]
+        vals += [k, k, -k, -k]
+    free = ~fixed
+    try:
+        import scipy.sparse
+        import scipy.sparse.linalg
+
+        a = scipy.sparse.csr_matrix((vals, (rows, cols)), shape=(n, n))
+        solve = scipy.sparse.linalg.spsolve
+    except ImportError:  # scipy is optional: dense
+        a = np.zeros((n, n))
+        np.add.at(a, (rows, cols), vals)
+        solve = np.linalg.solve
+    heads = np.where(fixed, values, 0.0)
+    heads[free] = solve(a[free][:, free], -(a[free][:, fixed] @ values[fixed]))
+    return heads
+
+
+def test_thiem_heads_converge_as_h_squared(program, tmp_path):
+    """Thiem's solution, h = ln(r / R) / 2 pi, between a well screen of radius 50 and a
+    constant head at R = 1000: the two-point fluxes on cvt2's grids (resampled boundary, the
+    heads on both circles given at the boundary cells of --cells-on-constraints) converge to it
+    at second order when the cells halve."""
+
+    def ring(r, n, clockwise=False):
+        t = np.linspace(0, 2 * np.pi, n + 1)[:-1] * (-1 if clockwise else 1)
+        p = [f"{r * np.cos(a)!r} {r * np.sin(a)!r}" for a in t]
+        return "(" + ", ".join(p + p[:1]) + ")"
+
+    domain = tmp_path / "annulus.wkt"
+    domain.write_text(f"POLYGON ({ring(1000, 512)}, {ring(50, 128, True)})\n")
+    errors = []
+    for cells in (1000, 4000):
+        csv = tmp_path / f"cells{cells}.csv"
+        _, _, files = run_program(program, domain, tmp_path, "--cells", cells, "--boundary", "resample",
+                                  "--cells-on-constraints", csv, outputs=("disv",))
+        vertices, centers, grid = read_disv(files["disv"])
+        _, cell, _, other = read_csv(csv)
+        fixed = np.zeros(len(grid), dtype=bool)
+        fixed[cell[other == -1] - 1] = True
+        exact = np.log(np.hypot(*centers.T) / 1000) / (2 * np.pi)
+        error = np.abs(two_point_flux_heads(vertices, centers, grid, fixed, exact) - exact)[~fixed]
+        errors.append((error.max(), np.sqrt(np.mean(error**2))))
+    (max1, rms1), (max2, rms2) = errors
+    assert max1 < 0.01 and np.log2(max1 / max2) > 1.8  # h halves: the error quarters
+    assert np.log2(rms1 / rms2) > 1.8
