@@ -14,6 +14,7 @@
 #include <CVT_2/IO/write_triangle.h>
 #include <CVT_2/IO/write_vtu.h>
 #include <CVT_2/Simulation_grid_2.h>
+#include <CVT_2/conforming_sites_2.h>
 #include <CVT_2/resample_constraints_2.h>
 
 #include <CGAL/Polygon_2_algorithms.h>
@@ -564,6 +565,57 @@ TEST_CASE("a barrier splits the cells on it, one per side; no vertex or edge is 
   CVT_2::IO::write_disv(disv, grid);
   CHECK_THAT(disv.str(), Catch::Contains("NCPL " + std::to_string(grid.number_of_cells())));
   CHECK(grid.number_of_cells() == mesh.number_of_cells() + 2);
+}
+
+TEST_CASE("conforming sites: the faces between each mirrored pair are the line's steps",
+          "[mesh][grid]") {
+  // A bent line across a square that is not a constraint; the pairs alone as generators.
+  const std::vector<Point> line{{0.1, 0.3}, {0.45, 0.38}, {0.7, 0.62}, {0.93, 0.6}};
+  const auto c = CVT_2::conforming_sites_2(line, 0.05);
+  REQUIRE(c.sites.size() == 2 * (c.nodes.size() - 1));
+  for (std::size_t k = 0; k + 1 < c.nodes.size(); ++k) {
+    const Point &a = c.nodes[k], &b = c.nodes[k + 1], &l = c.sites[2 * k], &r = c.sites[2 * k + 1];
+    CHECK(CGAL::orientation(a, b, l) == CGAL::LEFT_TURN);
+    CHECK(CGAL::orientation(a, b, r) == CGAL::RIGHT_TURN);
+    for (const Point& n : {a, b})  // each node equidistant from the pair: on their bisector
+      CHECK(std::sqrt(CGAL::squared_distance(n, l)) ==
+            Approx(std::sqrt(CGAL::squared_distance(n, r))).epsilon(1e-12));
+  }
+  Cdt_ids cdt;
+  CVT_2::IO::Poly_data<Point> poly;
+  add_ring(poly, {{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  poly.vertex_lines.assign(poly.vertices.size(), 0);
+  poly.segment_lines.assign(poly.segments.size(), 0);
+  CVT_2::IO::insert_poly(cdt, poly);
+  CVT_2::insert_generators_2(cdt, c.sites);
+  const Bvd_ids bvd(cdt);
+  const Mesh mesh(bvd);
+  check_mesh(mesh, cdt);
+  // The face between the pair of step k runs from node k to node k + 1 (the first and last
+  // steps' go on beyond the line's ends, where no other generator closes them here).
+  for (std::size_t k = 1; k + 2 < c.nodes.size(); ++k) {
+    CAPTURE(k);
+    Cdt_ids::Locate_type lt;
+    int li;
+    const auto f = cdt.locate(c.sites[2 * k], lt, li);
+    REQUIRE(lt == Cdt_ids::VERTEX);
+    const std::size_t left = mesh.cell_of(f->vertex(li));
+    const auto g = cdt.locate(c.sites[2 * k + 1], lt, li);
+    const std::size_t right = mesh.cell_of(g->vertex(li));
+    double length = 0;
+    for (std::size_t j = 0; j < mesh.cell(left).size(); ++j) {
+      if (mesh.side(left, j).cell != right) continue;
+      const Point& p = mesh.point(mesh.cell(left)[j]);
+      const Point& q = mesh.point(mesh.cell(left)[(j + 1) % mesh.cell(left).size()]);
+      CHECK(std::sqrt(CGAL::squared_distance(p, Segment(c.nodes[k], c.nodes[k + 1]))) < 1e-12);
+      CHECK(std::sqrt(CGAL::squared_distance(q, Segment(c.nodes[k], c.nodes[k + 1]))) < 1e-12);
+      length += std::sqrt(CGAL::squared_distance(p, q));
+    }
+    CHECK(length == Approx(std::sqrt(CGAL::squared_distance(c.nodes[k], c.nodes[k + 1]))));
+  }
+  CHECK_THROWS_AS(CVT_2::conforming_sites_2(line, 0.0), std::invalid_argument);
+  CHECK_THROWS_AS(CVT_2::conforming_sites_2(std::vector<Point>{{0, 0}, {0, 0}}, 1.0),
+                  std::invalid_argument);
 }
 
 TEST_CASE("a cell that meets itself at its generator becomes one ring per lobe", "[mesh]") {

@@ -448,8 +448,8 @@ def optimize(
 def _barriers(constraints):
     if constraints not in ("slit", "barrier"):
         if constraints == "conforming":
-            raise ValueError("constraints='conforming' (faces along the line perpendicular to it) is not built yet: "
-                             "use 'slit' or 'barrier'")
+            raise ValueError("constraints='conforming' (faces along the line perpendicular to it) is not built yet "
+                             "in the module (cvt2 --constraints conforming has it): use 'slit' or 'barrier'")
         raise ValueError(f"constraints must be 'slit' or 'barrier', not {constraints!r}")
     return constraints == "barrier"
 

@@ -385,3 +385,39 @@ def test_thiem_heads_converge_as_h_squared(program, tmp_path):
     (max1, rms1), (max2, rms2) = errors
     assert max1 < 0.01 and np.log2(max1 / max2) > 1.8  # h halves: the error quarters
     assert np.log2(rms1 / rms2) > 1.8
+
+
+def test_conforming_line_lies_on_faces_that_water_crosses(program, tmp_path):
+    """`--constraints conforming`: a river is not a constraint; generators mirrored across it
+    (fixed) put faces on it, each perpendicular to the line between the two cells beside it; a
+    linear head is exact everywhere inside, across the river too."""
+    river = np.array([[0, 250], [300, 280], [550, 400], [800, 380], [1000, 450]], dtype=float)
+    domain = tmp_path / "river.wkt"
+    domain.write_text("POLYGON ((0 0, 1000 0, 1000 600, 0 600, 0 0))\nLINESTRING ("
+                      + ", ".join(f"{x:g} {y:g}" for x, y in river) + ")\n")
+    _, _, files = run_program(program, domain, tmp_path, "--cells", 1500, "--constraints", "conforming",
+                              outputs=("disv",))
+    vertices, centers, cells = read_disv(files["disv"])
+    assert len(cells) == 1500
+    pairs = connections(cells)
+    assert all(len(edges) == 1 for edges in pairs.values())
+    rows = connection_geometry(vertices, centers, pairs)
+    assert max(r[5] for r in rows) < 1e-9
+    segments = np.stack([river[:-1], river[1:]], axis=1)
+    on_river = sum(r[2] for r, (edges) in zip(rows, pairs.values())
+                   if on_a_segment(vertices[edges[0][0]], vertices[edges[0][1]], segments, 1e-9 * 1000))
+    assert on_river > 0.95 * np.hypot(*np.diff(river, axis=0).T).sum()
+    residuals = linear_head_residuals(vertices, centers, cells, pairs)
+    assert len(residuals) > 1200 and residuals.max() < 1e-10
+    # The same line as a slit: the faces beside it are not perpendicular.
+    _, _, files = run_program(program, domain, tmp_path, "--cells", 1500, outputs=("disv",))
+    vertices, centers, cells = read_disv(files["disv"])
+    assert max(r[5] for r in connection_geometry(vertices, centers, connections(cells))) > 0.1
+
+
+def test_conforming_lines_come_from_wkt_or_geojson(program, data):
+    import subprocess
+
+    p = subprocess.run([program, str(data / "square_inner_constraints.poly"), "--constraints", "conforming"],
+                       capture_output=True, text=True)
+    assert p.returncode != 0 and "takes its lines from a .wkt or .geojson file" in p.stderr

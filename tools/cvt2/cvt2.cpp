@@ -18,6 +18,7 @@
 #include <CVT_2/IO/write_vtu.h>
 #include <CVT_2/Point_refinement_sizing_2.h>
 #include <CVT_2/Simulation_grid_2.h>
+#include <CVT_2/conforming_sites_2.h>
 #include <CVT_2/internal/input_segments_of_constraints.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
@@ -95,6 +96,7 @@ struct Options {
   std::string cells_on_constraints;
   std::string top = "1", bottom = "0";  // of the DISV's layer: a number or a file of them
   bool barriers = false;                // --constraints barrier
+  bool conforming = false;              // --constraints conforming
   bool quiet = false;
   bool help = false;
   bool version = false;
@@ -160,11 +162,14 @@ void print_help(std::ostream& os) {
         "                         (constraint: the .poly segment's row from 0, the .wkt line,\n"
         "                         the .geojson feature from 1; cell and other_cell: the DISV's\n"
         "                         numbers, other_cell -1 on the boundary)\n"
-        "      --constraints C    slit | barrier (default slit): what inner constraints are to\n"
-        "                         the cells of --disv, --vtu and --geojson. slit: cells cross\n"
-        "                         them (a constrained generator's cell lies on both sides).\n"
-        "                         barrier: a wall; a cell on it is split into one cell per side\n"
-        "                         (each centered at the generator), no face across it\n"
+        "      --constraints C    slit | barrier | conforming (default slit): what the inner\n"
+        "                         constraints are. slit: cells cross them (a constrained\n"
+        "                         generator's cell lies on both sides). barrier: a wall; a cell\n"
+        "                         on it is split into one cell per side (each centered at the\n"
+        "                         generator), no face across it. conforming: a line water\n"
+        "                         crosses (a river; the LINESTRINGs of a .wkt or .geojson file),\n"
+        "                         not a constraint: generators mirrored across it, fixed, so that\n"
+        "                         faces lie on it, perpendicular to the line between the cells\n"
         "      --mesh-out PREFIX  the final triangulation: PREFIX.node, .ele, .edge (Triangle)\n"
         "      --domain-out FILE  the domain (resampled with --boundary resample) and its own\n"
         "                         generators as a Triangle .poly file\n"
@@ -228,9 +233,11 @@ double parse_non_negative(const std::string& option, const std::string& text) {
 }
 
 std::string parse_choice(const std::string& option, const std::string& text, const char* a,
-                         const char* b) {
-  if (text != a && text != b)
-    throw Usage_error(option + " expects '" + a + "' or '" + b + "', not '" + text + "'");
+                         const char* b, const char* c = nullptr) {
+  if (text != a && text != b && (c == nullptr || text != c))
+    throw Usage_error(option + " expects '" + a + "'" + (c ? ", '" : " or '") + b + "'" +
+                      (c ? std::string(" or '") + c + "'" : std::string()) + ", not '" + text +
+                      "'");
   return text;
 }
 
@@ -256,11 +263,9 @@ const std::map<std::string, Setter>& valued_options() {
        }},
       {"--constraints",
        [](Options& o, auto& n, auto& v) {
-         if (v == "conforming")
-           throw Usage_error(n +
-                             " conforming (faces along the line perpendicular to it) is not "
-                             "built yet: use --constraints slit or barrier");
-         o.barriers = parse_choice(n, v, "slit", "barrier") == "barrier";
+         const std::string kind = parse_choice(n, v, "slit", "barrier", "conforming");
+         o.barriers = kind == "barrier";
+         o.conforming = kind == "conforming";
        }},
       {"--minimum-ring-area",
        [](Options& o, auto& n, auto& v) { o.minimum_ring_area = parse_non_negative(n, v); }},
@@ -421,7 +426,8 @@ struct Sizing_choice {
   }
 };
 
-void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& sizing, CDT& cdt) {
+void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& sizing, CDT& cdt,
+                          const CVT_2::Conforming_disks<Point_2>& keep_out) {
   if (n == 0) return;
   const double needed = bytes_per_generator(o) * double(n), memory = physical_memory();
   if (memory > 0 && needed > memory)
@@ -429,10 +435,22 @@ void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& 
                       std::to_string(static_cast<long long>(needed / 1e9)) +
                       " GB; this machine has " +
                       std::to_string(static_cast<long long>(memory / 1e9)) + " GB");
-  CVT_2::insert_generators_2(
-      cdt, sizing.apply(CVT_2::parameters::random_seed(o.seed), [&](const auto& np) {
-        return CVT_2::random_points_in_domain_2(cdt, n, np);
-      }));
+  const auto draw = [&](std::size_t count, std::uint64_t seed) {
+    return sizing.apply(CVT_2::parameters::random_seed(seed), [&](const auto& np) {
+      return CVT_2::random_points_in_domain_2(cdt, count, np);
+    });
+  };
+  std::vector<Point_2> points = draw(n, o.seed);
+  // Points in the circles of conforming lines drawn again, with the next seeds.
+  for (std::uint64_t seed = o.seed + 1; seed != o.seed + 64; ++seed) {
+    const auto kept = std::remove_if(points.begin(), points.end(),
+                                     [&](const Point_2& p) { return keep_out.contains(p); });
+    if (kept == points.end()) break;
+    points.erase(kept, points.end());
+    const std::vector<Point_2> more = draw(n - points.size(), seed);
+    points.insert(points.end(), more.begin(), more.end());
+  }
+  CVT_2::insert_generators_2(cdt, points);
 }
 
 // --- optimization ------------------------------------------------------------------------------
@@ -649,11 +667,66 @@ void resample(const Options& o, std::size_t free_generators, CDT& cdt,
             << r.max_deviation << ", area " << r.area_before << " -> " << r.area_after << '\n';
 }
 
+// The background cell size: that of -n, --cells or --size uniform cells in the domain.
+double background_size(const Options& o, std::size_t cells, const CDT& cdt) {
+  if (o.size) return *o.size;
+  return std::sqrt(2 * domain_area(cdt) /
+                   (std::sqrt(3.0) * double(std::max<std::size_t>(cells, 1))));
+}
+
+// --constraints conforming: the pairs of generators mirrored across each line, fixed, those of
+// a step whose pair is not both strictly inside the domain left out (noted).
+void insert_conforming_sites(const std::vector<std::vector<Point_2>>& lines, const Options& o,
+                             std::size_t free_generators, CDT& cdt, std::vector<Point_2>& fixed,
+                             CVT_2::Conforming_disks<Point_2>& disks) {
+  const std::size_t cells =
+      o.cells ? *o.cells : free_generators + vertices_in_domain(cdt) + fixed.size();
+  const double spacing = background_size(o, cells, cdt);
+  std::vector<Point_2> sites;
+  std::size_t steps = 0, left_out = 0;
+  CDT::Face_handle hint;
+  const auto strictly_inside = [&](const Point_2& p) {
+    CDT::Locate_type lt;
+    int li;
+    hint = cdt.locate(p, lt, li, hint);
+    return lt == CDT::FACE && hint->is_inside_domain();
+  };
+  for (const auto& line : lines) {
+    const auto c = CVT_2::conforming_sites_2(line, spacing);
+    disks.add(c);
+    for (std::size_t k = 0; k + 1 < c.sites.size(); k += 2, ++steps) {
+      if (strictly_inside(c.sites[k]) && strictly_inside(c.sites[k + 1])) {
+        sites.push_back(c.sites[k]);
+        sites.push_back(c.sites[k + 1]);
+      } else {
+        ++left_out;
+      }
+    }
+  }
+  CVT_2::insert_generators_2(cdt, sites);
+  fixed.insert(fixed.end(), sites.begin(), sites.end());
+  if (left_out > 0 && !o.quiet)
+    std::cerr << "cvt2: note: " << left_out << " of " << steps
+              << " steps of the conforming lines have a generator outside the domain: left out\n";
+}
+
 int run(const Options& o) {
   if (!std::ifstream(o.domain))
     throw std::runtime_error("cannot open the domain file '" + o.domain + "'");
   CDT cdt;
-  const auto data = CVT_2::IO::read_domain_data<K>(o.domain);
+  auto data = CVT_2::IO::read_domain_data<K>(o.domain);
+  // --constraints conforming: the lines are not constraints, only where faces will lie.
+  std::vector<std::vector<Point_2>> conforming_lines;
+  if (o.conforming) {
+    auto* w = std::get_if<1>(&data.description);
+    if (w == nullptr)
+      throw Usage_error(
+          "--constraints conforming takes its lines from a .wkt or .geojson file "
+          "(LINESTRING), not from a .poly file");
+    conforming_lines = std::move(w->polylines);
+    w->polylines.clear();
+    w->polyline_lines.clear();
+  }
   CVT_2::IO::insert_domain(cdt, data);
   const CVT_2::IO::Domain_file& domain = data.file;
   note_repeated(domain.repeated);
@@ -664,7 +737,8 @@ int run(const Options& o) {
                                {"domain", o.domain},
                                {"boundary", o.resample ? "resample" : "keep"}};
   if (o.resample) resample(o, default_n, cdt, metadata);
-  if (o.barriers) metadata.emplace_back("constraints", "barrier");
+  if (o.barriers || o.conforming)
+    metadata.emplace_back("constraints", o.barriers ? "barrier" : "conforming");
   // The input lines that --cells-on-constraints names: the file's, or the resampled domain's
   // (the segments of --domain-out).
   Segments segments;
@@ -711,6 +785,9 @@ int run(const Options& o) {
     const std::string note = CVT_2::IO::moved_points_note(points, moved);
     if (!note.empty()) std::cerr << "cvt2: note: " << note << '\n';
   }
+  CVT_2::Conforming_disks<Point_2> disks;
+  if (!conforming_lines.empty())
+    insert_conforming_sites(conforming_lines, o, default_n, cdt, fixed, disks);
   const std::size_t present = vertices_in_domain(cdt);
   std::size_t n = default_n;
   if (counted) {
@@ -727,16 +804,22 @@ int run(const Options& o) {
     std::cerr << "cvt2: note: the domain's " << present << " vertices are generators too, "
               << present + n << " cells in all; --boundary resample spaces them to the cell size\n";
   if (!o.refine.empty()) {  // the background: uniform cells, as many as asked for
-    const double background =
-        o.size ? *o.size
-               : std::sqrt(2 * domain_area(cdt) /
-                           (std::sqrt(3.0) * double(std::max<std::size_t>(n + present, 1))));
+    const double background = background_size(o, n + present, cdt);
     sizing.refinement.emplace(background);
     for (const auto& [x, y, size, radius] : o.refine)
       sizing.refinement->add_point(Point_2(x, y), std::min(size, background), radius);
   }
-  insert_random_points(n, o, sizing, cdt);
+  insert_random_points(n, o, sizing, cdt, disks);
   const CVT_2::Optimization_result r = optimize(cdt, o, sizing, fixed);
+  if (!conforming_lines.empty() && !o.quiet) {  // what breaks the faces on the lines, if any
+    std::size_t inside = 0;
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      inside += disks.contains(v->point()) ? 1 : 0;
+    if (inside > 0)
+      std::cerr << "cvt2: note: " << inside
+                << " generators lie inside the circles of the conforming lines: the faces "
+                   "near them are not on the lines\n";
+  }
   const BVD bvd(cdt);
   write_outputs(o, cdt, bvd, metadata, domain_alone, segments);
   print_summary(o, r, bvd, domain_area(cdt));

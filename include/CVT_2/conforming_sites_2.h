@@ -1,0 +1,162 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// conforming_sites_2(): generators mirrored across a line, so that Voronoi faces lie on it.
+#ifndef CVT_2_CONFORMING_SITES_2_H
+#define CVT_2_CONFORMING_SITES_2_H
+
+#include <CVT_2/exceptions.h>
+#include <CVT_2/internal/to_string.h>
+
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace CVT_2 {
+
+/// \ingroup PkgCvt2Ref
+/// The generators that make a polyline *conforming* in a Voronoi diagram: a line that water
+/// crosses (a river, a zone border) along which the faces of the cells lie, each perpendicular
+/// to the line between the centres of the two cells beside it, as the PEBI grids of reservoir
+/// simulation make them (Heinemann et al. 1991; MRST's `pebiGrid`).
+template <class Point_2>
+struct Conforming_sites {
+  /// the points along the line, its vertices among them, at most the spacing apart: the
+  /// Voronoi vertices between the pairs
+  std::vector<Point_2> nodes;
+  /// two generators a segment of `nodes`, `sites[2k]` left of `nodes[k]` -> `nodes[k + 1]` and
+  /// `sites[2k + 1]` its mirror image on the right: the face between them is that segment
+  std::vector<Point_2> sites;
+  /// the radius of the circle around each node that no other generator may enter
+  std::vector<double> radii;
+};
+
+/// \ingroup PkgCvt2Ref
+/// Places, along the polyline `line`, nodes at most `spacing` apart (its vertices, and equal
+/// steps on each segment), a circle around each node of radius \f$r_k = \max(d_{k-1},
+/// d_k)/\sqrt{2}\f$ (\f$d\f$ the steps; reduced where two neighbouring circles would not
+/// cross), and on each step the two points where the circles of its ends cross: a pair of
+/// generators mirrored across the step, each at about half a step from it. Both lie on both
+/// circles, so the nodes are equidistant from the four generators of the two steps they join:
+/// while no other generator lies inside a circle, each node is a vertex of the Voronoi diagram
+/// and each step the face between its pair, exactly on the line, perpendicular to the line
+/// between the pair. Optimizers should keep these generators fixed (`fixed_points`).
+/// \throws std::invalid_argument if `spacing` is not positive and finite, or the line has fewer
+///         than two distinct points or two equal points in a row.
+template <class Point_2>
+Conforming_sites<Point_2> conforming_sites_2(const std::vector<Point_2>& line, double spacing) {
+  if (!(spacing > 0) || !std::isfinite(spacing))
+    throw std::invalid_argument(
+        "conforming_sites_2: the spacing must be positive and finite, not " +
+        internal::number_to_string(spacing));
+  if (line.size() < 2)
+    throw std::invalid_argument("conforming_sites_2: a line needs two points at least");
+  Conforming_sites<Point_2> c;
+  const auto x = [](const Point_2& p) { return CGAL::to_double(p.x()); };
+  const auto y = [](const Point_2& p) { return CGAL::to_double(p.y()); };
+  c.nodes.push_back(line[0]);
+  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+    const double dx = x(line[i + 1]) - x(line[i]), dy = y(line[i + 1]) - y(line[i]);
+    const double length = std::hypot(dx, dy);
+    if (!(length > 0))
+      throw std::invalid_argument("conforming_sites_2: the line repeats the point " +
+                                  internal::to_string(line[i]));
+    if (!(length / spacing < 1e8))
+      throw std::invalid_argument("conforming_sites_2: the spacing " +
+                                  internal::number_to_string(spacing) +
+                                  " cuts a segment of length " +
+                                  internal::number_to_string(length) + " into too many steps");
+    const auto steps = std::size_t(std::ceil(length / spacing));
+    for (std::size_t j = 1; j < steps; ++j) {
+      const double t = double(j) / double(steps);
+      c.nodes.emplace_back(x(line[i]) + t * dx, y(line[i]) + t * dy);
+    }
+    c.nodes.push_back(line[i + 1]);
+  }
+  const std::size_t n = c.nodes.size();
+  std::vector<double> d(n - 1);
+  for (std::size_t k = 0; k + 1 < n; ++k)
+    d[k] = std::hypot(x(c.nodes[k + 1]) - x(c.nodes[k]), y(c.nodes[k + 1]) - y(c.nodes[k]));
+  c.radii.resize(n);
+  for (std::size_t k = 0; k < n; ++k)
+    c.radii[k] = std::max(k > 0 ? d[k - 1] : 0.0, k + 1 < n ? d[k] : 0.0) / std::sqrt(2.0);
+  // Two circles cross if their radii differ by less than the step: the larger shrinks to that
+  // (never below half its own steps' length, which the smaller already exceeds).
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t k = 0; k + 1 < n; ++k) {
+      double &a = c.radii[k], &b = c.radii[k + 1];
+      const double most = std::min(a, b) + 0.9 * d[k];
+      if (a > most) a = most, changed = true;
+      if (b > most) b = most, changed = true;
+    }
+  }
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    const double ux = (x(c.nodes[k + 1]) - x(c.nodes[k])) / d[k],
+                 uy = (y(c.nodes[k + 1]) - y(c.nodes[k])) / d[k];
+    const double a =
+        (c.radii[k] * c.radii[k] - c.radii[k + 1] * c.radii[k + 1] + d[k] * d[k]) / (2 * d[k]);
+    const double h = std::sqrt(std::max(0.0, c.radii[k] * c.radii[k] - a * a));
+    const double mx = x(c.nodes[k]) + a * ux, my = y(c.nodes[k]) + a * uy;
+    c.sites.emplace_back(mx - h * uy, my + h * ux);  // left
+    c.sites.emplace_back(mx + h * uy, my - h * ux);  // right
+  }
+  return c;
+}
+
+/// \ingroup PkgCvt2Ref
+/// The circles of conforming lines (`Conforming_sites::radii` around the nodes), to keep other
+/// generators out of: a random start drawn there is drawn again elsewhere, since a free
+/// generator at a node is a fixed point of Lloyd's iteration that breaks the line's faces.
+template <class Point_2>
+class Conforming_disks {
+ public:
+  /// adds the circles of `c`
+  void add(const Conforming_sites<Point_2>& c) {
+    for (std::size_t k = 0; k < c.nodes.size(); ++k) {
+      m_disks.push_back(
+          {CGAL::to_double(c.nodes[k].x()), CGAL::to_double(c.nodes[k].y()), c.radii[k]});
+      m_cell = std::max(m_cell, c.radii[k]);
+    }
+    m_buckets.clear();
+  }
+  /// whether `p` lies inside a circle by more than a rounding (1e-9 of its radius: the
+  /// generators of `Conforming_sites` lie on the circles)
+  bool contains(const Point_2& p) const {
+    if (m_disks.empty()) return false;
+    if (m_buckets.empty()) sort();
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
+    const long long i = cell(x), j = cell(y);
+    for (long long a = i - 1; a <= i + 1; ++a)
+      for (long long b = j - 1; b <= j + 1; ++b) {
+        const auto range = m_buckets.equal_range(key(a, b));
+        for (auto it = range.first; it != range.second; ++it) {
+          const Disk& d = m_disks[it->second];
+          if (std::hypot(x - d.x, y - d.y) < d.r * (1 - 1e-9)) return true;
+        }
+      }
+    return false;
+  }
+
+ private:
+  struct Disk {
+    double x, y, r;
+  };
+  long long cell(double v) const { return static_cast<long long>(std::floor(v / m_cell)); }
+  static long long key(long long a, long long b) { return a * 1000003LL + b; }
+  void sort() const {
+    for (std::size_t i = 0; i < m_disks.size(); ++i)
+      m_buckets.emplace(key(cell(m_disks[i].x), cell(m_disks[i].y)), i);
+  }
+  std::vector<Disk> m_disks;
+  double m_cell = 0;
+  mutable std::unordered_multimap<long long, std::size_t> m_buckets;
+};
+
+}  // namespace CVT_2
+
+#endif  // CVT_2_CONFORMING_SITES_2_H
