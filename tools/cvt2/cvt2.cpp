@@ -170,6 +170,7 @@ void print_help(std::ostream& os) {
         "                         crosses (a river; the LINESTRINGs of a .wkt or .geojson file),\n"
         "                         not a constraint: generators mirrored across it, fixed, so that\n"
         "                         faces lie on it, perpendicular to the line between the cells\n"
+        "                         beside it\n"
         "      --mesh-out PREFIX  the final triangulation: PREFIX.node, .ele, .edge (Triangle)\n"
         "      --domain-out FILE  the domain (resampled with --boundary resample) and its own\n"
         "                         generators as a Triangle .poly file\n"
