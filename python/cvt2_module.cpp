@@ -165,7 +165,8 @@ py::array_t<T> to_array(const std::vector<T>& v, py::ssize_t columns = 1) {
 // boundary, outside it by no more than `boundary_tolerance` (None: the library's default).
 std::vector<std::string> insert_points(CDT& cdt, const std::vector<Point_2>& points,
                                        const std::string& name,
-                                       std::optional<double> boundary_tolerance = {}) {
+                                       std::optional<double> boundary_tolerance = {},
+                                       std::vector<Point_2>* where = nullptr) {
   const auto row = [&name](std::size_t k) { return name + "[" + std::to_string(k) + "]"; };
   try {
     const auto r =
@@ -173,6 +174,10 @@ std::vector<std::string> insert_points(CDT& cdt, const std::vector<Point_2>& poi
             ? CVT_2::insert_generators_2(cdt, points,
                                          CVT_2::parameters::boundary_tolerance(*boundary_tolerance))
             : CVT_2::insert_generators_2(cdt, points);
+    if (where != nullptr) {  // where each point is now: as given, or moved onto the boundary
+      *where = points;
+      for (std::size_t i = 0; i < r.moved.size(); ++i) (*where)[r.moved[i]] = r.moved_to[i];
+    }
     const std::string note = CVT_2::internal::moved_points_note(r, points, row, row);
     return note.empty() ? std::vector<std::string>() : std::vector<std::string>{note};
   } catch (const CVT_2::internal::Generators_outside_error& e) {
@@ -734,7 +739,7 @@ struct Diagram {
       const std::vector<Point_2>& ends;
       const std::vector<std::int64_t>& items;
     } segments{domain->segment_ends, domain->segment_items};
-    return CVT_2::internal::input_items_of_constraints(*cdt, *mesh, segments);
+    return CVT_2::IO::constraint_items(*cdt, *mesh, segments);
   }
 
   // The mesh as a simulation grid, inner constraints all slits or all barriers.
@@ -927,7 +932,7 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
                                        std::optional<double> boundary_tolerance,
                                        const py::object& fixed_object) {
   const std::vector<Point_2> points = to_points(points_object, "points");
-  const std::vector<Point_2> fixed =
+  std::vector<Point_2> fixed =
       fixed_object.is_none() ? std::vector<Point_2>() : to_points(fixed_object, "fixed_points");
   if (algorithm != "lbfgs" && algorithm != "lloyd")
     throw py::value_error("algorithm must be 'lbfgs' or 'lloyd', not '" + algorithm + "'");
@@ -974,7 +979,7 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
     const std::optional<Sizing> sizing = choice.sizing(*cdt);
     out->notes = insert_points(*cdt, points, "points", boundary_tolerance);
     if (!fixed.empty()) {  // as cvt2 --fixed-points: inserted after the points
-      const std::vector<std::string> notes = insert_points(*cdt, fixed, "fixed_points", {});
+      const std::vector<std::string> notes = insert_points(*cdt, fixed, "fixed_points", {}, &fixed);
       out->notes.insert(out->notes.end(), notes.begin(), notes.end());
     }
     // The input row of each vertex (the first, for merged rows), kept as the vertices move.

@@ -103,8 +103,10 @@ PYTHONPATH="$build/python" /usr/bin/python3 "$root/python/examples/resample.py" 
   resample.png
 pngquant --force --output "$fig/resample.png" 64 resample.png
 
-PYTHONPATH="$build/python" /usr/bin/python3 "$root/python/examples/modflow_grid.py" "$data" \
-  modflow_grid.png
+"$build/tools/cvt2/cvt2" "$data/aquifer.geojson" --cells 2500 --quiet \
+  --fixed-points "$data/aquifer_wells.txt" --refine 480 640 12 300 --refine 1560 520 12 300 \
+  --geojson aquifer_cells.geojson > /dev/null
+/usr/bin/python3 "$root/scripts/plot_modflow_grid.py" aquifer_cells.geojson "$data" modflow_grid.png
 pngquant --force --output "$fig/modflow_grid.png" 64 modflow_grid.png
 
 "$ex/crack_interpolation" crack.txt

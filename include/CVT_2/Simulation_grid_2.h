@@ -6,6 +6,7 @@
 
 #include <CVT_2/internal/Simulation_grid_builder_2.h>
 
+#include <CGAL/Kernel/global_functions_2.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -29,12 +30,12 @@ enum Constraint_kind {
 /// At a **barrier** the cell of a generator on it is split into one cell per side, cut along the
 /// constraint through the generator: each part keeps the generator as its center, so its faces
 /// to the neighbours on its side stay bisectors, perpendicular to the line between the centers.
-/// A mesh vertex on a barrier is one grid vertex per side (same point, two numbers), so that the
-/// cells on the two sides share no edge: a simulator that connects cells by shared edges (as
-/// MODFLOW does) sees no connection across. Where a barrier ends inside the domain (a crack's
-/// tip), the generator's cell is not split (the constraint only enters it) and its vertices are
-/// shared: flow goes around the tip through that cell. A **slit** leaves the cells as the mesh
-/// has them.
+/// A mesh vertex on a barrier is one grid vertex per side (same point, two numbers; one where
+/// the barrier ends in a tip's cell), so that the cells on the two sides share no edge: a simulator
+/// that connects cells by shared edges (as MODFLOW does) sees no connection across. Where a barrier
+/// ends inside the domain (a crack's tip), the generator's cell is not split (the constraint only
+/// enters it) and its vertices are shared: flow goes around the tip through that cell. A **slit**
+/// leaves the cells as the mesh has them.
 ///
 /// Cells are numbered in the order of the mesh's cells, the parts of a split cell one after the
 /// other from its first visit of the generator; vertices by the mesh vertex they stand for,

@@ -122,13 +122,14 @@ class Conforming_disks {
           {CGAL::to_double(c.nodes[k].x()), CGAL::to_double(c.nodes[k].y()), c.radii[k]});
       m_cell = std::max(m_cell, c.radii[k]);
     }
-    m_buckets.clear();
+    m_buckets.clear();  // the buckets' size may have grown: all again
+    for (std::size_t i = 0; i < m_disks.size(); ++i)
+      m_buckets.emplace(key(cell(m_disks[i].x), cell(m_disks[i].y)), i);
   }
   /// whether `p` lies inside a circle by more than a rounding (1e-9 of its radius: the
   /// generators of `Conforming_sites` lie on the circles)
   bool contains(const Point_2& p) const {
     if (m_disks.empty()) return false;
-    if (m_buckets.empty()) sort();
     const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
     const long long i = cell(x), j = cell(y);
     for (long long a = i - 1; a <= i + 1; ++a)
@@ -148,13 +149,9 @@ class Conforming_disks {
   };
   long long cell(double v) const { return static_cast<long long>(std::floor(v / m_cell)); }
   static long long key(long long a, long long b) { return a * 1000003LL + b; }
-  void sort() const {
-    for (std::size_t i = 0; i < m_disks.size(); ++i)
-      m_buckets.emplace(key(cell(m_disks[i].x), cell(m_disks[i].y)), i);
-  }
   std::vector<Disk> m_disks;
   double m_cell = 0;
-  mutable std::unordered_multimap<long long, std::size_t> m_buckets;
+  std::unordered_multimap<long long, std::size_t> m_buckets;
 };
 
 }  // namespace CVT_2

@@ -807,7 +807,7 @@ class BoundedVoronoi:
     def to_disv(self, path, top=1.0, bottom=0.0, constraints="slit") -> None:
         """Writes the cells as a MODFLOW 6 DISV grid of one layer between ``bottom`` and
         ``top`` (``cvt2 --disv``; flopy), :meth:`metadata` in comment lines. Each pair of cells
-        shares one edge, the whole face between them. ``top`` and ``bottom``: a number, or one
+        shares one edge, the whole face between them, but across a slit. ``top`` and ``bottom``: a number, or one
         a cell of the grid (``cvt2 --top FILE``), each bottom below its top (else ValueError).
 
         ``constraints``: ``"slit"`` (the cells of this diagram: a constrained generator's cell

@@ -19,7 +19,6 @@
 #include <CVT_2/Point_refinement_sizing_2.h>
 #include <CVT_2/Simulation_grid_2.h>
 #include <CVT_2/conforming_sites_2.h>
-#include <CVT_2/internal/input_segments_of_constraints.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/mark_domain_2.h>
@@ -161,7 +160,8 @@ void print_help(std::ostream& os) {
         "                         cells along each input line, for boundary conditions\n"
         "                         (constraint: the .poly segment's row from 0, the .wkt line,\n"
         "                         the .geojson feature from 1; cell and other_cell: the DISV's\n"
-        "                         numbers, other_cell -1 on the boundary)\n"
+        "                         numbers, other_cell -1 on the boundary; with --boundary\n"
+        "                         resample, constraint is the row of --domain-out's segment)\n"
         "      --constraints C    slit | barrier | conforming (default slit): what the inner\n"
         "                         constraints are. slit: cells cross them (a constrained\n"
         "                         generator's cell lies on both sides). barrier: a wall; a cell\n"
@@ -170,7 +170,8 @@ void print_help(std::ostream& os) {
         "                         crosses (a river; the LINESTRINGs of a .wkt or .geojson file),\n"
         "                         not a constraint: generators mirrored across it, fixed, so that\n"
         "                         faces lie on it, perpendicular to the line between the cells\n"
-        "                         beside it\n"
+        "                         beside it. A GeoJSON feature's \"kind\" property (slit,\n"
+        "                         barrier, conforming) says it for its own lines\n"
         "      --mesh-out PREFIX  the final triangulation: PREFIX.node, .ele, .edge (Triangle)\n"
         "      --domain-out FILE  the domain (resampled with --boundary resample) and its own\n"
         "                         generators as a Triangle .poly file\n"
@@ -555,9 +556,24 @@ class Output_files {
   std::vector<std::pair<std::string, std::string>> m_files;
 };
 
+// What each inner constraint is, by the input item its lines come from: the GeoJSON features'
+// "kind" properties, --constraints for the others.
+struct Kinds {
+  std::vector<std::string> of_item;  // by item from 1; empty: --constraints
+  bool barrier_by_default = false;
+  bool barrier(std::int64_t item) const {
+    if (item >= 1 && std::size_t(item) <= of_item.size() && !of_item[std::size_t(item - 1)].empty())
+      return of_item[std::size_t(item - 1)] == "barrier";
+    return barrier_by_default;
+  }
+  bool any_barrier() const {
+    return barrier_by_default || std::count(of_item.begin(), of_item.end(), "barrier") > 0;
+  }
+};
+
 void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
-                   const CVT_2::IO::Metadata& metadata, const CDT& domain,
-                   const Segments& segments) {
+                   const CVT_2::IO::Metadata& metadata, const CDT& domain, const Segments& segments,
+                   const Kinds& kinds) {
   using namespace CVT_2::IO;
   Output_files out;
   if (!o.svg.empty()) out.write(o.svg, [&](std::ostream& os) { write_svg(os, bvd); });
@@ -566,14 +582,21 @@ void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
   if (!o.cells_out.empty()) out.write(o.cells_out, [&](std::ostream& os) { write_cells(os, bvd); });
   if (!o.geojson.empty() || !o.vtu.empty() || !o.disv.empty() || !o.cells_on_constraints.empty()) {
     const Mesh mesh(bvd, o.threads);
-    const Grid grid(mesh, o.barriers ? CVT_2::BARRIER : CVT_2::SLIT);
+    const std::vector<std::int64_t> items = segments.ends.empty()
+                                                ? std::vector<std::int64_t>()
+                                                : CVT_2::IO::constraint_items(cdt, mesh, segments);
+    const Grid grid = kinds.of_item.empty()
+                          ? Grid(mesh, o.barriers ? CVT_2::BARRIER : CVT_2::SLIT)
+                          : Grid(mesh, [&](Grid::Index c) {
+                              return kinds.barrier(c < items.size() ? items[c] : -1);
+                            });
     const auto write = [&](const auto& cells) {
       if (!o.geojson.empty())
         out.write(o.geojson, [&](std::ostream& os) { write_geojson(os, cells, metadata); });
       if (!o.vtu.empty())
         out.write(o.vtu, [&](std::ostream& os) { write_vtu(os, cells, metadata); });
     };
-    if (o.barriers)
+    if (kinds.any_barrier())
       write(grid);
     else
       write(mesh);  // the mesh's own cells and vertices, bit for bit
@@ -583,10 +606,8 @@ void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
                    number_or_values("--bottom", o.bottom), metadata);
       });
     if (!o.cells_on_constraints.empty())
-      out.write(o.cells_on_constraints, [&](std::ostream& os) {
-        write_cells_on_constraints(
-            os, grid, CVT_2::internal::input_items_of_constraints(cdt, mesh, segments));
-      });
+      out.write(o.cells_on_constraints,
+                [&](std::ostream& os) { write_cells_on_constraints(os, grid, items); });
   }
   if (!o.domain_out.empty())
     out.write(o.domain_out, [&](std::ostream& os) { write_poly(os, domain); });
@@ -680,16 +701,16 @@ double background_size(const Options& o, std::size_t cells, const CDT& cdt) {
 void insert_conforming_sites(const std::vector<std::vector<Point_2>>& lines, const Options& o,
                              std::size_t free_generators, CDT& cdt, std::vector<Point_2>& fixed,
                              CVT_2::Conforming_disks<Point_2>& disks) {
-  const std::size_t cells =
-      o.cells ? *o.cells : free_generators + vertices_in_domain(cdt) + fixed.size();
+  const std::size_t cells = o.cells ? *o.cells : free_generators + vertices_in_domain(cdt);
   const double spacing = background_size(o, cells, cdt);
   std::vector<Point_2> sites;
   std::size_t steps = 0, left_out = 0;
   CDT::Face_handle hint;
-  const auto strictly_inside = [&](const Point_2& p) {
+  const auto strictly_inside = [&](const Point_2& p) {  // in a domain face or on a free edge
     CDT::Locate_type lt;
     int li;
     hint = cdt.locate(p, lt, li, hint);
+    if (lt == CDT::EDGE) return !cdt.is_constrained({hint, li}) && hint->is_inside_domain();
     return lt == CDT::FACE && hint->is_inside_domain();
   };
   for (const auto& line : lines) {
@@ -716,17 +737,36 @@ int run(const Options& o) {
     throw std::runtime_error("cannot open the domain file '" + o.domain + "'");
   CDT cdt;
   auto data = CVT_2::IO::read_domain_data<K>(o.domain);
-  // --constraints conforming: the lines are not constraints, only where faces will lie.
+  // Conforming lines (--constraints conforming, or a GeoJSON feature's "kind") are not
+  // constraints, only where faces will lie.
+  Kinds kinds;
+  kinds.barrier_by_default = o.barriers;
   std::vector<std::vector<Point_2>> conforming_lines;
-  if (o.conforming) {
-    auto* w = std::get_if<1>(&data.description);
-    if (w == nullptr)
-      throw Usage_error(
-          "--constraints conforming takes its lines from a .wkt or .geojson file "
-          "(LINESTRING), not from a .poly file");
-    conforming_lines = std::move(w->polylines);
-    w->polylines.clear();
-    w->polyline_lines.clear();
+  if (auto* w = std::get_if<1>(&data.description)) {
+    kinds.of_item = w->item_kinds;
+    if (std::all_of(kinds.of_item.begin(), kinds.of_item.end(),
+                    [](const std::string& k) { return k.empty(); }))
+      kinds.of_item.clear();
+    if (!kinds.of_item.empty() && o.resample)
+      throw Usage_error("the GeoJSON features' \"kind\" properties need --boundary keep");
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < w->polylines.size(); ++i) {
+      const std::size_t item = w->polyline_lines[i];
+      const std::string& kind =
+          item >= 1 && item <= w->item_kinds.size() ? w->item_kinds[item - 1] : std::string();
+      if (kind == "conforming" || (kind.empty() && o.conforming)) {
+        conforming_lines.push_back(std::move(w->polylines[i]));
+      } else {
+        if (kept != i) w->polylines[kept] = std::move(w->polylines[i]);
+        w->polyline_lines[kept++] = item;
+      }
+    }
+    w->polylines.resize(kept);
+    w->polyline_lines.resize(kept);
+  } else if (o.conforming) {
+    throw Usage_error(
+        "--constraints conforming takes its lines from a .wkt or .geojson file (LINESTRING), "
+        "not from a .poly file");
   }
   CVT_2::IO::insert_domain(cdt, data);
   const CVT_2::IO::Domain_file& domain = data.file;
@@ -740,10 +780,11 @@ int run(const Options& o) {
   if (o.resample) resample(o, default_n, cdt, metadata);
   if (o.barriers || o.conforming)
     metadata.emplace_back("constraints", o.barriers ? "barrier" : "conforming");
+  if (!kinds.of_item.empty()) metadata.emplace_back("constraint_kinds", "by feature");
   // The input lines that --cells-on-constraints names: the file's, or the resampled domain's
   // (the segments of --domain-out).
   Segments segments;
-  if (!o.cells_on_constraints.empty()) {
+  if (!o.cells_on_constraints.empty() || !kinds.of_item.empty()) {
     CVT_2::IO::Domain_data<K> resampled;
     if (o.resample) resampled.description = CVT_2::IO::domain_poly_data(cdt);
     segments = CVT_2::IO::domain_segments(o.resample ? resampled : data);
@@ -822,7 +863,7 @@ int run(const Options& o) {
                    "near them are not on the lines\n";
   }
   const BVD bvd(cdt);
-  write_outputs(o, cdt, bvd, metadata, domain_alone, segments);
+  write_outputs(o, cdt, bvd, metadata, domain_alone, segments, kinds);
   print_summary(o, r, bvd, domain_area(cdt));
   return EXIT_SUCCESS;
 }

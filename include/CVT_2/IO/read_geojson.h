@@ -139,12 +139,14 @@ namespace IO {
 /// (`nlohmann-json3-dev` on Debian) parses the text.
 ///
 /// The data's "lines" number the features from 1 (a bare geometry is feature 1), and messages
-/// name a feature by its number and, if it has one, its `name` property or `id`.
+/// name a feature by its number and, if it has one, its `name` property or `id`. A feature's
+/// `kind` property (`slit`, `barrier` or `conforming`) says what its lines are to a simulation
+/// grid (`Wkt_data::item_kinds`; `cvt2 --constraints` for the others).
 /// \throws Parse_error: text that is not JSON (with the line and column), or not GeoJSON (with
 ///         the feature): an unknown geometry type, a position that is not 2 or 3 numbers, a
 ///         linear ring not closed or with fewer than 3 distinct positions, a LineString of one
-///         position, a coordinate that is not finite or exceeds 1e300 in magnitude, or no
-///         polygon at all.
+///         position, a coordinate that is not finite or exceeds 1e300 in magnitude, a `kind`
+///         property of another value, or no polygon at all.
 template <class K>
 Wkt_data<K> read_geojson(std::istream& is, const std::string& source = "<geojson>") {
   using json = nlohmann::json;
@@ -181,9 +183,18 @@ Wkt_data<K> read_geojson(std::istream& is, const std::string& source = "<geojson
   const auto read_feature = [&](const json& f, bool is_feature) {
     w.item_names.push_back(is_feature ? name(f, w.item_names.size() + 1)
                                       : "geometry " + std::to_string(w.item_names.size() + 1));
+    w.item_kinds.emplace_back();
     internal::Geojson_reader<K> r{w, w.item_names.size()};
     if (!is_feature) return r.geometry(f);
     if (!f.contains("geometry")) r.fail("a Feature needs a \"geometry\" (null for none)");
+    if (f.contains("properties") && f["properties"].is_object() &&
+        f["properties"].contains("kind")) {
+      const json& kind = f["properties"]["kind"];
+      if (!kind.is_string() || (kind != "slit" && kind != "barrier" && kind != "conforming"))
+        r.fail("the property \"kind\" must be \"slit\", \"barrier\" or \"conforming\", not " +
+               kind.dump().substr(0, 40));
+      w.item_kinds.back() = kind.get<std::string>();
+    }
     r.geometry(f["geometry"]);
   };
   if (!root.is_object() || !root.contains("type") || !root["type"].is_string())

@@ -49,6 +49,9 @@ struct Wkt_data {
   std::vector<std::array<std::size_t, 2>> repeated_points;
   /// for GeoJSON, what to call each feature in messages, by its number from 1
   std::vector<std::string> item_names;
+  /// for GeoJSON, each feature's `"kind"` property, by its number from 1: what its lines are to
+  /// a simulation grid (`slit`, `barrier`, `conforming`), or empty if it has none
+  std::vector<std::string> item_kinds;
 
   /// how messages name line or feature `n`: `file:n: `, or `file: feature n ('name'): `
   std::string where(std::size_t n) const {

@@ -4,8 +4,11 @@
 #define CVT_2_IO_WRITE_CELLS_ON_CONSTRAINTS_H
 
 #include <CVT_2/IO/internal/write_number.h>
+#include <CVT_2/internal/input_segments_of_constraints.h>
 
+#include <CGAL/Kernel/global_functions_2.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_2.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,11 +17,28 @@
 #include <fstream>
 #include <ostream>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace CVT_2 {
 namespace IO {
+
+/// \ingroup PkgCvt2IO
+/// For each constraint of `mesh` (a `Bvd_mesh_2` of `cdt`), the item of the input segment it
+/// lies on, or -1: the ids that `write_cells_on_constraints()` writes. `segments` has `ends`
+/// (two points a segment) and `items` (one a segment), as `Domain_segments` (from
+/// `domain_segments()`); each segment is walked from one end to the other along the
+/// constrained edges that lie on it.
+template <class CDT, class Mesh, class Segments>
+std::vector<std::int64_t> constraint_items(const CDT& cdt, const Mesh& mesh,
+                                           const Segments& segments) {
+  std::vector<std::int64_t> items =
+      internal::input_segments_of_constraints(cdt, mesh, segments.ends);
+  for (std::int64_t& i : items)
+    if (i >= 0) i = segments.items[std::size_t(i)];
+  return items;
+}
 
 /// \ingroup PkgCvt2IO
 /// Writes, as CSV with the header `constraint,cell,length,other_cell`, one row per piece of a
@@ -72,10 +92,14 @@ void write_cells_on_constraints(std::ostream& os, const Grid& grid,
       if (side.cell != k || side.constraint == Grid::none || p > q ||
           std::find(edges.begin(), edges.end(), std::make_pair(p, q)) != edges.end())
         continue;
+      // Every part has the generator: the other end says which part the piece lies in.
+      const auto is_generator = [&](Index i) {
+        return mesh.vertex_type(i) == std::decay_t<decltype(mesh)>::Cell_vertex::GENERATOR;
+      };
+      const Index outer = is_generator(p) ? q : p;
       const auto has_end = [&](std::size_t h) {
         for (std::size_t i = 0; i < grid.degree(h); ++i)
-          if (grid.mesh_vertex(grid.vertex(h, i)) == p || grid.mesh_vertex(grid.vertex(h, i)) == q)
-            return true;
+          if (grid.mesh_vertex(grid.vertex(h, i)) == outer) return true;
         return false;
       };
       std::size_t part = first;

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <fstream>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -29,11 +30,11 @@ namespace IO {
 /// with the cells bounded by inner constraints too. Cells are numbered as in the grid, from 1.
 ///
 /// MODFLOW 6 connects two cells through the first edge they share in their vertex lists and
-/// takes the distances from their centers to that edge's line: so each pair of cells shares one
-/// edge here. A vertex that only two cells use, between two pieces of the bisector they share
-/// (where the bisector crosses a slit, or met a vertex of a cell beyond a barrier), is left
-/// out, the face written whole. Cells on the two sides of a barrier share no vertex number and
-/// so no edge: MODFLOW sees no connection there.
+/// takes the distances from their centers to that edge's line: so a vertex that only two cells
+/// use, between two pieces of the bisector they share (where the bisector crosses a slit), is
+/// left out, the face written whole. Without inner constraints, and with barriers, each pair of
+/// cells then shares one edge (at a slit, the cells on its two sides also share its pieces).
+/// Cells on the two sides of a barrier share no edge: MODFLOW sees no connection there.
 /// `metadata`, if any, goes in comment lines after the first (`Metadata`).
 /// \tparam Mesh a `Bvd_mesh_2`.
 /// \throws std::invalid_argument if `top` or `bottom` has neither one value nor one a cell, or
@@ -130,7 +131,7 @@ void write_disv(std::ostream& os, const Simulation_grid_2<Mesh>& grid,
 
 /// \ingroup PkgCvt2IO
 /// Writes the cells of `grid` as a DISV grid (as above), its layer from `bottom` to `top`.
-/// \pre `bottom < top`
+/// \throws std::invalid_argument unless `bottom < top`.
 template <class Mesh>
 void write_disv(std::ostream& os, const Simulation_grid_2<Mesh>& grid, double top = 1,
                 double bottom = 0, const Metadata& metadata = {}) {
@@ -148,13 +149,16 @@ void write_disv(std::ostream& os, const Mesh& mesh, double top = 1, double botto
 
 /// \ingroup PkgCvt2IO
 /// Writes `mesh` (a `Bvd_mesh_2` or a `Simulation_grid_2`) to the DISV file `filename`; returns
-/// false if the file could not be written.
+/// false if the file could not be written. \throws std::invalid_argument as the stream version,
+/// before the file is opened.
 template <class Mesh>
 bool write_disv(const std::string& filename, const Mesh& mesh, double top = 1, double bottom = 0,
                 const Metadata& metadata = {}) {
+  std::ostringstream text;
+  write_disv(text, mesh, top, bottom, metadata);
   std::ofstream os(filename);
   if (!os) return false;
-  write_disv(os, mesh, top, bottom, metadata);
+  os << text.str();
   return static_cast<bool>(os);
 }
 

@@ -3,8 +3,8 @@
 #ifndef CVT_2_INTERNAL_SIMULATION_GRID_BUILDER_2_H
 #define CVT_2_INTERNAL_SIMULATION_GRID_BUILDER_2_H
 
+#include <CGAL/Kernel/global_functions_2.h>
 #include <CGAL/enum.h>
-#include <CGAL/predicates_on_points_2.h>
 
 #include <algorithm>
 #include <cstddef>

@@ -6,7 +6,7 @@
 #include <CVT_2/internal/snap_to_boundary.h>
 #include <CVT_2/mark_domain_2.h>
 
-#include <CGAL/predicates_on_points_2.h>
+#include <CGAL/Kernel/global_functions_2.h>
 
 #include <algorithm>
 #include <cmath>
@@ -87,16 +87,6 @@ std::vector<std::int64_t> input_segments_of_constraints(
     input.push_back(it == of_edge.end() ? -1 : it->second);
   }
   return input;
-}
-
-// The same, each constraint named by its segment's item (`IO::Domain_segments`), or -1.
-template <class CDT, class Mesh, class Segments>
-std::vector<std::int64_t> input_items_of_constraints(const CDT& cdt, const Mesh& mesh,
-                                                     const Segments& segments) {
-  std::vector<std::int64_t> items = input_segments_of_constraints(cdt, mesh, segments.ends);
-  for (std::int64_t& i : items)
-    if (i >= 0) i = segments.items[std::size_t(i)];
-  return items;
 }
 
 }  // namespace internal

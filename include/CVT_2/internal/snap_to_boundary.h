@@ -9,6 +9,7 @@
 #include <CGAL/Kernel/global_functions.h>
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_2.h>
 
 #include <algorithm>
 #include <array>
