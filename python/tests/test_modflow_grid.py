@@ -434,7 +434,7 @@ def test_conforming_lines_come_from_wkt_or_geojson(program, data):
 def test_kinds_by_feature_a_fault_and_a_river(program, data, tmp_path):
     """examples/data/aquifer.geojson: the fault's "kind" is "barrier", the river's
     "conforming": the fault splits its cells and nothing connects across it, the river lies on
-    faces, and the CSV lists both the boundary (feature 1) and the fault (feature 2)."""
+    faces, and the CSV lists the boundary (feature 1), the fault (2) and the river (3)."""
     import json
 
     csv = tmp_path / "aquifer.csv"
@@ -457,8 +457,12 @@ def test_kinds_by_feature_a_fault_and_a_river(program, data, tmp_path):
         on_river += np.hypot(*(b - a)) if on_a_segment(a, b, river, 1e-9 * 2000) else 0
     # A few free generators end inside the pairs' circles (cvt2 notes them): 87% at 1 500 cells.
     assert on_river > 0.8 * np.hypot(*np.diff(lines["river"], axis=0).T).sum()
-    item, _, _, _ = read_csv(csv)
-    assert set(item) == {1, 2}
+    item, cell, length, other = read_csv(csv)
+    assert set(item) == {1, 2, 3}
+    # The river's rows: a pair of cells sharing a face on it, from each side, its length.
+    river_rows = {(c, o, x) for i, c, o, x in zip(item, cell, other, length) if i == 3}
+    assert all((o, c, x) in river_rows for c, o, x in river_rows)
+    assert sum(x for _, _, x in river_rows) / 2 == pytest.approx(on_river, rel=1e-9)
     metadata = json.loads(files["geojson"].read_text())["metadata"]
     assert metadata["constraint_kinds"] == "by feature"
     # A kind of another name is an error that names the feature.

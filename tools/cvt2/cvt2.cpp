@@ -415,6 +415,12 @@ double physical_memory() {
 // minutes of work.
 double bytes_per_generator(const Options& o) { return o.lbfgs ? 750 : 360; }
 
+// The pair of generators of a step of a conforming line, and the line's input item.
+struct Conforming_pair {
+  Point_2 left, right;
+  std::int64_t item;
+};
+
 // The sizing field of --density lipschitz or of --refine, if any.
 struct Sizing_choice {
   std::optional<Sizing> lipschitz;
@@ -573,7 +579,7 @@ struct Kinds {
 
 void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
                    const CVT_2::IO::Metadata& metadata, const CDT& domain, const Segments& segments,
-                   const Kinds& kinds) {
+                   const Kinds& kinds, const std::vector<Conforming_pair>& pairs) {
   using namespace CVT_2::IO;
   Output_files out;
   if (!o.svg.empty()) out.write(o.svg, [&](std::ostream& os) { write_svg(os, bvd); });
@@ -606,8 +612,22 @@ void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
                    number_or_values("--bottom", o.bottom), metadata);
       });
     if (!o.cells_on_constraints.empty())
-      out.write(o.cells_on_constraints,
-                [&](std::ostream& os) { write_cells_on_constraints(os, grid, items); });
+      out.write(o.cells_on_constraints, [&](std::ostream& os) {
+        // The cells of each conforming pair, by their generators.
+        std::vector<std::size_t> first_part(mesh.number_of_cells(), Grid::none);
+        for (std::size_t g = grid.number_of_cells(); g-- > 0;) first_part[grid.mesh_cell(g)] = g;
+        std::vector<CVT_2::IO::Line_pair> sides;
+        for (const Conforming_pair& p : pairs) {
+          CDT::Locate_type lt[2];
+          int li[2];
+          const CDT::Face_handle f = cdt.locate(p.left, lt[0], li[0]);
+          const CDT::Face_handle g = cdt.locate(p.right, lt[1], li[1], f);
+          if (lt[0] == CDT::VERTEX && lt[1] == CDT::VERTEX)
+            sides.push_back({p.item, first_part[mesh.cell_of(f->vertex(li[0]))],
+                             first_part[mesh.cell_of(g->vertex(li[1]))]});
+        }
+        write_cells_on_constraints(os, grid, items, sides);
+      });
   }
   if (!o.domain_out.empty())
     out.write(o.domain_out, [&](std::ostream& os) { write_poly(os, domain); });
@@ -698,9 +718,12 @@ double background_size(const Options& o, std::size_t cells, const CDT& cdt) {
 
 // --constraints conforming: the pairs of generators mirrored across each line, fixed, those of
 // a step whose pair is not both strictly inside the domain left out (noted).
-void insert_conforming_sites(const std::vector<std::vector<Point_2>>& lines, const Options& o,
-                             std::size_t free_generators, CDT& cdt, std::vector<Point_2>& fixed,
-                             CVT_2::Conforming_disks<Point_2>& disks) {
+std::vector<Conforming_pair> insert_conforming_sites(const std::vector<std::vector<Point_2>>& lines,
+                                                     const std::vector<std::int64_t>& items,
+                                                     const Options& o, std::size_t free_generators,
+                                                     CDT& cdt, std::vector<Point_2>& fixed,
+                                                     CVT_2::Conforming_disks<Point_2>& disks) {
+  std::vector<Conforming_pair> pairs;
   const std::size_t cells = o.cells ? *o.cells : free_generators + vertices_in_domain(cdt);
   const double spacing = background_size(o, cells, cdt);
   std::vector<Point_2> sites;
@@ -713,13 +736,14 @@ void insert_conforming_sites(const std::vector<std::vector<Point_2>>& lines, con
     if (lt == CDT::EDGE) return !cdt.is_constrained({hint, li}) && hint->is_inside_domain();
     return lt == CDT::FACE && hint->is_inside_domain();
   };
-  for (const auto& line : lines) {
-    const auto c = CVT_2::conforming_sites_2(line, spacing);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const auto c = CVT_2::conforming_sites_2(lines[i], spacing);
     disks.add(c);
     for (std::size_t k = 0; k + 1 < c.sites.size(); k += 2, ++steps) {
       if (strictly_inside(c.sites[k]) && strictly_inside(c.sites[k + 1])) {
         sites.push_back(c.sites[k]);
         sites.push_back(c.sites[k + 1]);
+        pairs.push_back({c.sites[k], c.sites[k + 1], items[i]});
       } else {
         ++left_out;
       }
@@ -730,6 +754,7 @@ void insert_conforming_sites(const std::vector<std::vector<Point_2>>& lines, con
   if (left_out > 0 && !o.quiet)
     std::cerr << "cvt2: note: " << left_out << " of " << steps
               << " steps of the conforming lines have a generator outside the domain: left out\n";
+  return pairs;
 }
 
 int run(const Options& o) {
@@ -742,6 +767,7 @@ int run(const Options& o) {
   Kinds kinds;
   kinds.barrier_by_default = o.barriers;
   std::vector<std::vector<Point_2>> conforming_lines;
+  std::vector<std::int64_t> conforming_items;
   if (auto* w = std::get_if<1>(&data.description)) {
     kinds.of_item = w->item_kinds;
     if (std::all_of(kinds.of_item.begin(), kinds.of_item.end(),
@@ -756,6 +782,7 @@ int run(const Options& o) {
           item >= 1 && item <= w->item_kinds.size() ? w->item_kinds[item - 1] : std::string();
       if (kind == "conforming" || (kind.empty() && o.conforming)) {
         conforming_lines.push_back(std::move(w->polylines[i]));
+        conforming_items.push_back(std::int64_t(item));
       } else {
         if (kept != i) w->polylines[kept] = std::move(w->polylines[i]);
         w->polyline_lines[kept++] = item;
@@ -828,8 +855,10 @@ int run(const Options& o) {
     if (!note.empty()) std::cerr << "cvt2: note: " << note << '\n';
   }
   CVT_2::Conforming_disks<Point_2> disks;
-  if (!conforming_lines.empty())
-    insert_conforming_sites(conforming_lines, o, default_n, cdt, fixed, disks);
+  const std::vector<Conforming_pair> pairs =
+      conforming_lines.empty() ? std::vector<Conforming_pair>()
+                               : insert_conforming_sites(conforming_lines, conforming_items, o,
+                                                         default_n, cdt, fixed, disks);
   const std::size_t present = vertices_in_domain(cdt);
   std::size_t n = default_n;
   if (counted) {
@@ -863,7 +892,7 @@ int run(const Options& o) {
                    "near them are not on the lines\n";
   }
   const BVD bvd(cdt);
-  write_outputs(o, cdt, bvd, metadata, domain_alone, segments, kinds);
+  write_outputs(o, cdt, bvd, metadata, domain_alone, segments, kinds, pairs);
   print_summary(o, r, bvd, domain_area(cdt));
   return EXIT_SUCCESS;
 }

@@ -41,6 +41,15 @@ std::vector<std::int64_t> constraint_items(const CDT& cdt, const Mesh& mesh,
 }
 
 /// \ingroup PkgCvt2IO
+/// Two cells beside a line that is no constraint (a conforming line, `conforming_sites_2()`),
+/// for `write_cells_on_constraints()`: the line's id and the two cells of the grid.
+struct Line_pair {
+  std::int64_t line;  ///< written as the row's `constraint`
+  std::size_t cell;   ///< the grid cell on one side
+  std::size_t other;  ///< the grid cell on the other side
+};
+
+/// \ingroup PkgCvt2IO
 /// Writes, as CSV with the header `constraint,cell,length,other_cell`, one row per piece of a
 /// constraint that bounds or crosses a cell of `grid` (a `Simulation_grid_2`): `constraint` is
 /// `ids[c]` for the mesh's constraint `c` (the input line it lies on, say; -1 if `ids` is
@@ -50,10 +59,13 @@ std::vector<std::int64_t> constraint_items(const CDT& cdt, const Mesh& mesh,
 /// that is not a barrier, inside the cell of a generator on it) has one row, the cell its own
 /// other cell. The rows go cell after cell, the edges of each in order, its slits after them.
 /// This is what a MODFLOW 6 package needs for the cells along a line: CHD and GHB on the
-/// boundary, RIV and DRN along a river, HFB between the pairs of a wall.
+/// boundary, RIV and DRN along a river, HFB between the pairs of a wall. Then, for each of
+/// `pairs` whose cells share edges, a row from each side, `length` the edges' (the pairs of a
+/// conforming line; none where its face is not theirs).
 template <class Grid>
 void write_cells_on_constraints(std::ostream& os, const Grid& grid,
-                                const std::vector<std::int64_t>& ids) {
+                                const std::vector<std::int64_t>& ids,
+                                const std::vector<Line_pair>& pairs = {}) {
   using Index = typename Grid::Index;
   const auto& mesh = grid.mesh();
   const auto id = [&](Index c) { return c < ids.size() ? ids[c] : std::int64_t(-1); };
@@ -108,6 +120,21 @@ void write_cells_on_constraints(std::ostream& os, const Grid& grid,
       row(side.constraint, part, mesh.point(p), mesh.point(q), std::int64_t(part) + 1);
     }
   }
+  for (const Line_pair& pair : pairs) {
+    double length = 0;
+    for (std::size_t j = 0, n = grid.degree(pair.cell); j < n; ++j)
+      if (grid.side(pair.cell, j).cell == pair.other)
+        length += std::sqrt(CGAL::to_double(
+            CGAL::squared_distance(grid.point(grid.vertex(pair.cell, j)),
+                                   grid.point(grid.vertex(pair.cell, (j + 1) % n)))));
+    if (!(length > 0)) continue;
+    for (const auto& [a, b] :
+         {std::pair(pair.cell, pair.other), std::pair(pair.other, pair.cell)}) {
+      os << pair.line << ',' << a + 1 << ',';
+      internal::write_number(os, length);
+      os << ',' << b + 1 << '\n';
+    }
+  }
 }
 
 /// \ingroup PkgCvt2IO
@@ -115,10 +142,11 @@ void write_cells_on_constraints(std::ostream& os, const Grid& grid,
 /// the file could not be written.
 template <class Grid>
 bool write_cells_on_constraints(const std::string& filename, const Grid& grid,
-                                const std::vector<std::int64_t>& ids) {
+                                const std::vector<std::int64_t>& ids,
+                                const std::vector<Line_pair>& pairs = {}) {
   std::ofstream os(filename);
   if (!os) return false;
-  write_cells_on_constraints(os, grid, ids);
+  write_cells_on_constraints(os, grid, ids, pairs);
   return static_cast<bool>(os);
 }
 
