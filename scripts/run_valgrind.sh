@@ -31,5 +31,8 @@ printf '2.5 7.25\n7.125 2.75\n' > "$out/wells.txt"
 check "$root/build/tools/cvt2/cvt2" "$data/square_inner_constraints.wkt" -n 400 --iterations 5 --quiet \
   --constraints barrier --fixed-points "$out/wells.txt" --refine 2.5 7.25 0.1 2 --disv "$out/e.disv" \
   --geojson "$out/e.geojson" --vtu "$out/e.vtu" --cells-on-constraints "$out/e.csv"
+check "$root/build/tools/cvt2/cvt2" "$data/aquifer.geojson" --cells 600 --iterations 5 --quiet \
+  --fixed-points "$data/aquifer_wells.txt" --refine 480 640 12 300 --disv "$out/f.disv" \
+  --geojson "$out/f.geojson" --cells-on-constraints "$out/f.csv"  # a barrier and a river
 rm -r "$out"
 echo "valgrind: no error, no leak"
