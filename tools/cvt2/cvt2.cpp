@@ -591,11 +591,15 @@ void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
     const std::vector<std::int64_t> items = segments.ends.empty()
                                                 ? std::vector<std::int64_t>()
                                                 : CVT_2::IO::constraint_items(cdt, mesh, segments);
-    const Grid grid = kinds.of_item.empty()
-                          ? Grid(mesh, o.barriers ? CVT_2::BARRIER : CVT_2::SLIT)
-                          : Grid(mesh, [&](Grid::Index c) {
-                              return kinds.barrier(c < items.size() ? items[c] : -1);
-                            });
+    // The grid, only where it differs from the mesh or a file needs it (it costs a pass).
+    std::optional<Grid> grid_if;
+    if (kinds.any_barrier() || !o.disv.empty() || !o.cells_on_constraints.empty()) {
+      if (kinds.of_item.empty())
+        grid_if.emplace(mesh, o.barriers ? CVT_2::BARRIER : CVT_2::SLIT);
+      else
+        grid_if.emplace(
+            mesh, [&](Grid::Index c) { return kinds.barrier(c < items.size() ? items[c] : -1); });
+    }
     const auto write = [&](const auto& cells) {
       if (!o.geojson.empty())
         out.write(o.geojson, [&](std::ostream& os) { write_geojson(os, cells, metadata); });
@@ -603,17 +607,18 @@ void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
         out.write(o.vtu, [&](std::ostream& os) { write_vtu(os, cells, metadata); });
     };
     if (kinds.any_barrier())
-      write(grid);
+      write(*grid_if);
     else
       write(mesh);  // the mesh's own cells and vertices, bit for bit
     if (!o.disv.empty())
       out.write(o.disv, [&](std::ostream& os) {
-        write_disv(os, grid, number_or_values("--top", o.top),
+        write_disv(os, *grid_if, number_or_values("--top", o.top),
                    number_or_values("--bottom", o.bottom), metadata);
       });
     if (!o.cells_on_constraints.empty())
       out.write(o.cells_on_constraints, [&](std::ostream& os) {
         // The cells of each conforming pair, by their generators.
+        const Grid& grid = *grid_if;
         std::vector<std::size_t> first_part(mesh.number_of_cells(), Grid::none);
         for (std::size_t g = grid.number_of_cells(); g-- > 0;) first_part[grid.mesh_cell(g)] = g;
         std::vector<CVT_2::IO::Line_pair> sides;
