@@ -16,6 +16,7 @@
 #include <CVT_2/IO/write_wkb.h>
 #include <CVT_2/Simulation_grid_2.h>
 #include <CVT_2/density_response_2.h>
+#include <CVT_2/conforming_sites_2.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/internal/input_segments_of_constraints.h>
@@ -1183,6 +1184,17 @@ PYBIND11_MODULE(_cvt2, m) {
                              [](const Optimization& o) { return o.density_response; })
       .def("diagram", &Optimization::diagram, py::arg("threads") = 0);
 
+  m.def(
+      "conforming_sites",
+      [](py::handle line, double spacing) {
+        const auto c = CVT_2::conforming_sites_2(to_points(line, "line"), spacing);
+        py::dict out;
+        out["sites"] = to_array(c.sites);
+        out["nodes"] = to_array(c.nodes);
+        out["radii"] = py::array_t<double>(py::ssize_t(c.radii.size()), c.radii.data());
+        return out;
+      },
+      py::arg("line"), py::arg("spacing"));
   m.def("random_points", &random_points, py::arg("domain"), py::arg("n"), py::arg("seed"),
         py::arg("density"), py::arg("lipschitz_k"), py::arg("boundary_size"));
   m.def("optimize", &optimize, py::arg("domain"), py::arg("points"), py::arg("algorithm"),

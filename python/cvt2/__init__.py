@@ -54,6 +54,7 @@ __all__ = [
     "ParseError",
     "__version__",
     "bounded_voronoi",
+    "conforming_sites",
     "natural_neighbours",
     "optimize",
     "random_points",
@@ -448,8 +449,8 @@ def optimize(
 def _barriers(constraints):
     if constraints not in ("slit", "barrier"):
         if constraints == "conforming":
-            raise ValueError("constraints='conforming' (faces along the line perpendicular to it) is not built yet "
-                             "in the module (cvt2 --constraints conforming has it): use 'slit' or 'barrier'")
+            raise ValueError("constraints='conforming' is not built yet in the module's writers (cvt2 --constraints "
+                             "conforming has it; in Python, conforming_sites() as fixed_points): use 'slit' or 'barrier'")
         raise ValueError(f"constraints must be 'slit' or 'barrier', not {constraints!r}")
     return constraints == "barrier"
 
@@ -460,6 +461,19 @@ def _tolerance(value):
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
         raise TypeError(f"boundary_tolerance must be None or a number, not {type(value).__name__}")
     return float(value)
+
+
+def conforming_sites(line, spacing) -> dict:
+    """The generators that make ``line`` (float array (m, 2), a polyline) a *conforming* line of
+    the Voronoi diagram (``cvt2 --constraints conforming``): pairs mirrored across it, about
+    ``spacing`` apart along it, so that each step of the line is the face between its pair,
+    perpendicular to the line between them, while no other generator lies inside the circles
+    around the nodes. Returns a dict: ``sites`` (2k, 2), the pair of step k at rows 2k (left)
+    and 2k + 1 (right); ``nodes`` (k + 1, 2), the line's vertices and points between, the
+    Voronoi vertices between the pairs; ``radii`` (k + 1,), the circles' radii. A river in
+    Python: the domain without the line, the sites inside the domain as ``fixed_points`` of
+    :func:`optimize`, random points drawn outside the circles."""
+    return _cvt2.conforming_sites(line, float(spacing))
 
 
 def bounded_voronoi(domain, points, threads=0, *, boundary_tolerance=None) -> "BoundedVoronoi":

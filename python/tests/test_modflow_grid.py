@@ -473,3 +473,31 @@ def test_kinds_by_feature_a_fault_and_a_river(program, data, tmp_path):
 
     p = subprocess.run([program, str(tmp_path / "bad.geojson")], capture_output=True, text=True)
     assert p.returncode != 0 and 'feature 2 (fault)' in p.stderr and '"kind" must be' in p.stderr
+
+
+def test_conforming_sites_in_python(tmp_path):
+    """A river in Python: the domain without it, conforming_sites() as fixed points, random
+    starts outside the circles: faces on the river, perpendicular to the line between the cells."""
+    import cvt2
+
+    river = np.array([[0, 250], [300, 280], [550, 400], [800, 380], [1000, 450]], dtype=float)
+    domain = cvt2.Domain([[0, 0], [1000, 0], [1000, 600], [0, 600]], [[0, 1], [1, 2], [2, 3], [3, 0]])
+    c = cvt2.conforming_sites(river, 25.0)
+    assert c["sites"].shape == (2 * (len(c["nodes"]) - 1), 2) and len(c["radii"]) == len(c["nodes"])
+    inside = (c["sites"][:, 0] > 0) & (c["sites"][:, 0] < 1000)
+    keep = (inside[0::2] & inside[1::2]).repeat(2)
+    sites = c["sites"][keep]
+    points = cvt2.random_points(domain, 1400, seed=3)
+    far = np.all(np.hypot(*(points[:, None, :] - c["nodes"][None]).transpose(2, 0, 1)) >= c["radii"], axis=1)
+    result = cvt2.optimize(domain, points[far], fixed_points=sites)
+    result.bounded_voronoi().to_disv(tmp_path / "river.disv")
+    vertices, centers, cells = read_disv(tmp_path / "river.disv")
+    pairs = connections(cells)
+    rows = connection_geometry(vertices, centers, pairs)
+    assert max(r[5] for r in rows) < 1e-9
+    segments = np.stack([river[:-1], river[1:]], axis=1)
+    on_river = sum(r[2] for r, edges in zip(rows, pairs.values())
+                   if on_a_segment(vertices[edges[0][0]], vertices[edges[0][1]], segments, 1e-6))
+    assert on_river > 0.8 * np.hypot(*np.diff(river, axis=0).T).sum()
+    with pytest.raises(ValueError, match="spacing"):
+        cvt2.conforming_sites(river, 0)
