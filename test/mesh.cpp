@@ -513,9 +513,13 @@ TEST_CASE("a barrier splits the cells on it, one per side; no edge is shared acr
     for (std::size_t k = 0; k < grid.number_of_cells(); ++k) parts[grid.mesh_cell(k)].push_back(k);
     return parts;
   };
-  // Slits: the mesh's outlines, vertex for vertex.
+  // Slits: the mesh's outlines, vertex for vertex, one grid vertex a mesh vertex they use.
   const Grid slit(mesh);
   REQUIRE(slit.number_of_cells() == mesh.number_of_cells());
+  std::set<Mesh::Index> used;
+  for (std::size_t k = 0; k < mesh.number_of_cells(); ++k)
+    for (const auto i : mesh.outline(k)) used.insert(i);
+  CHECK(slit.number_of_vertices() == used.size());
   for (std::size_t k = 0; k < mesh.number_of_cells(); ++k) {
     const auto outline = mesh.outline(k);
     REQUIRE(slit.degree(k) == outline.size());

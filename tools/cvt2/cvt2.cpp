@@ -579,7 +579,8 @@ struct Kinds {
 
 void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
                    const CVT_2::IO::Metadata& metadata, const CDT& domain, const Segments& segments,
-                   const Kinds& kinds, const std::vector<Conforming_pair>& pairs) {
+                   const Kinds& kinds, const std::vector<Conforming_pair>& pairs,
+                   const std::vector<double>& top, const std::vector<double>& bottom) {
   using namespace CVT_2::IO;
   Output_files out;
   if (!o.svg.empty()) out.write(o.svg, [&](std::ostream& os) { write_svg(os, bvd); });
@@ -611,10 +612,7 @@ void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
     else
       write(mesh);  // the mesh's own cells and vertices, bit for bit
     if (!o.disv.empty())
-      out.write(o.disv, [&](std::ostream& os) {
-        write_disv(os, *grid_if, number_or_values("--top", o.top),
-                   number_or_values("--bottom", o.bottom), metadata);
-      });
+      out.write(o.disv, [&](std::ostream& os) { write_disv(os, *grid_if, top, bottom, metadata); });
     if (!o.cells_on_constraints.empty())
       out.write(o.cells_on_constraints, [&](std::ostream& os) {
         // The cells of each conforming pair, by their generators.
@@ -766,6 +764,9 @@ int run(const Options& o) {
   if (!std::ifstream(o.domain))
     throw std::runtime_error("cannot open the domain file '" + o.domain + "'");
   CDT cdt;
+  // The DISV's top and bottom read first: a bad file fails before the optimization.
+  const std::vector<double> top = number_or_values("--top", o.top);
+  const std::vector<double> bottom = number_or_values("--bottom", o.bottom);
   auto data = CVT_2::IO::read_domain_data<K>(o.domain);
   // Conforming lines (--constraints conforming, or a GeoJSON feature's "kind") are not
   // constraints, only where faces will lie.
@@ -897,7 +898,7 @@ int run(const Options& o) {
                    "near them are not on the lines\n";
   }
   const BVD bvd(cdt);
-  write_outputs(o, cdt, bvd, metadata, domain_alone, segments, kinds, pairs);
+  write_outputs(o, cdt, bvd, metadata, domain_alone, segments, kinds, pairs, top, bottom);
   print_summary(o, r, bvd, domain_area(cdt));
   return EXIT_SUCCESS;
 }
