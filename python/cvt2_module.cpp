@@ -15,8 +15,8 @@
 #include <CVT_2/IO/write_vtu.h>
 #include <CVT_2/IO/write_wkb.h>
 #include <CVT_2/Simulation_grid_2.h>
-#include <CVT_2/density_response_2.h>
 #include <CVT_2/conforming_sites_2.h>
+#include <CVT_2/density_response_2.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/internal/input_segments_of_constraints.h>
