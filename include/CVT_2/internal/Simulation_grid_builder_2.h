@@ -60,11 +60,26 @@ class Simulation_grid_builder_2 {
       return pos + 1 < offsets[g + 1] ? pos + 1 : offsets[g];
     };
 
-    // Each directed edge of the rings, and the constraint under each edge of the mesh.
-    std::unordered_map<std::uint64_t, std::pair<Index, std::size_t>> edge_at;  // cell, position
+    // The corners (positions in the rings) at each mesh vertex, in order: a counting sort. An
+    // edge's twin, q -> p for p -> q, starts at a corner of q.
+    std::vector<Index> cell_at(ring.size());
     for (std::size_t g = 0; g < cells; ++g)
-      for (std::size_t pos = offsets[g]; pos < offsets[g + 1]; ++pos)
-        edge_at.emplace(key(ring[pos], ring[next(g, pos)]), std::make_pair(Index(g), pos));
+      std::fill(cell_at.begin() + std::ptrdiff_t(offsets[g]),
+                cell_at.begin() + std::ptrdiff_t(offsets[g + 1]), Index(g));
+    std::vector<std::size_t> first(mesh.number_of_vertices() + 1, 0), corners(ring.size());
+    for (const Index v : ring) ++first[v + 1];
+    std::partial_sum(first.begin(), first.end(), first.begin());
+    {
+      std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+      for (std::size_t pos = 0; pos < ring.size(); ++pos) corners[fill[ring[pos]]++] = pos;
+    }
+    const auto twin = [&](std::size_t pos) -> std::size_t {  // its position, or none
+      const Index p = ring[pos], q = ring[next(cell_at[pos], pos)];
+      for (std::size_t i = first[q]; i < first[q + 1]; ++i)
+        if (ring[next(cell_at[corners[i]], corners[i])] == p) return corners[i];
+      return std::size_t(-1);
+    };
+    // The constraint under each constrained edge of the mesh.
     std::unordered_map<std::uint64_t, Index> constraint_of;
     for (std::size_t k = 0; k < mesh.number_of_cells(); ++k) {
       const auto c = mesh.cell(k);
@@ -92,9 +107,9 @@ class Simulation_grid_builder_2 {
         auto c = constraint_of.find(key(p, q));
         if (c == constraint_of.end()) c = constraint_of.find(key(q, p));
         if (c != constraint_of.end()) side.constraint = c->second;
-        const auto beyond = edge_at.find(key(q, p));
-        if (beyond == edge_at.end()) continue;  // the boundary
-        const auto [h, at] = beyond->second;
+        const std::size_t at = twin(pos);
+        if (at == std::size_t(-1)) continue;  // the boundary
+        const Index h = cell_at[at];
         side.cell = h;
         side.barrier = side.constraint != none && bool(is_barrier(side.constraint));
         if (!side.barrier) join(pos, next(h, at)), join(next(g, pos), at);
@@ -105,14 +120,9 @@ class Simulation_grid_builder_2 {
     }
 
     // One grid vertex a class, by mesh vertex, then by the first corner.
-    std::vector<std::size_t> order(ring.size());
-    std::iota(order.begin(), order.end(), std::size_t(0));
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return ring[a] != ring[b] ? ring[a] < ring[b] : a < b;
-    });
     std::vector<Index> number(ring.size(), none);
     grid.m_vertices.resize(ring.size());
-    for (const std::size_t pos : order) {
+    for (const std::size_t pos : corners) {
       Index& n = number[find(pos)];
       if (n == none) n = Index(grid.m_mesh_vertex.size()), grid.m_mesh_vertex.push_back(ring[pos]);
       grid.m_vertices[pos] = n;
