@@ -566,14 +566,15 @@ class Output_files {
 // "kind" properties, --constraints for the others.
 struct Kinds {
   std::vector<std::string> of_item;  // by item from 1; empty: --constraints
-  bool barrier_by_default = false;
-  bool barrier(std::int64_t item) const {
+  std::string by_default;            // --constraints
+  const std::string& of(std::int64_t item) const {
     if (item >= 1 && std::size_t(item) <= of_item.size() && !of_item[std::size_t(item - 1)].empty())
-      return of_item[std::size_t(item - 1)] == "barrier";
-    return barrier_by_default;
+      return of_item[std::size_t(item - 1)];
+    return by_default;
   }
+  bool barrier(std::int64_t item) const { return of(item) == "barrier"; }
   bool any_barrier() const {
-    return barrier_by_default || std::count(of_item.begin(), of_item.end(), "barrier") > 0;
+    return by_default == "barrier" || std::count(of_item.begin(), of_item.end(), "barrier") > 0;
   }
 };
 
@@ -771,7 +772,7 @@ int run(const Options& o) {
   // Conforming lines (--constraints conforming, or a GeoJSON feature's "kind") are not
   // constraints, only where faces will lie.
   Kinds kinds;
-  kinds.barrier_by_default = o.barriers;
+  kinds.by_default = o.barriers ? "barrier" : o.conforming ? "conforming" : "slit";
   std::vector<std::vector<Point_2>> conforming_lines;
   std::vector<std::int64_t> conforming_items;
   if (auto* w = std::get_if<1>(&data.description)) {
@@ -784,9 +785,7 @@ int run(const Options& o) {
     std::size_t kept = 0;
     for (std::size_t i = 0; i < w->polylines.size(); ++i) {
       const std::size_t item = w->polyline_lines[i];
-      const std::string& kind =
-          item >= 1 && item <= w->item_kinds.size() ? w->item_kinds[item - 1] : std::string();
-      if (kind == "conforming" || (kind.empty() && o.conforming)) {
+      if (kinds.of(std::int64_t(item)) == "conforming") {
         conforming_lines.push_back(std::move(w->polylines[i]));
         conforming_items.push_back(std::int64_t(item));
       } else {
