@@ -4,6 +4,7 @@
 #include "support/random_domain.h"
 #include "support/support.h"
 
+#include <CVT_2/Constraint_editor_2.h>
 #include <CVT_2/Cvt_triangulation_2.h>
 #include <CVT_2/Lloyd_optimizer_2.h>
 #include <CVT_2/internal/layout/sort_faces.h>
@@ -21,8 +22,10 @@
 #include <algorithm>
 #include <array>
 #include <cstdlib>
+#include <iostream>
 #include <map>
 #include <set>
+#include <tuple>
 
 using namespace support;
 
@@ -781,4 +784,124 @@ TEST_CASE("no plane: neither pass over the faces visits a cell", "[bvd][degenera
     CHECK(visits == 0);
   }
   CHECK(cdt.dimension() == 1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Constraint_editor_2: edits with a local update.
+
+namespace {
+
+using Editor = CVT_2::Constraint_editor_2<Cdt>;
+using Cells = std::map<Cdt::Vertex_handle, std::vector<Point>>;
+
+Cells all_cells(const Cdt& cdt, const Bvd& bvd) {
+  Cells cells;
+  Cell cell;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    bvd.cell(v, cell);
+    auto& points = cells[v];
+    for (const auto& x : cell) points.push_back(x.point);
+  }
+  return cells;
+}
+
+// Whether the tags and domain marks are those of a rebuild (Triangle's rule from the hole
+// seeds, then Algorithm 1 on every face); leaves the rebuilt ones, which are then the same.
+bool as_rebuilt(Cdt& cdt, Bvd& bvd, const std::vector<Point>& holes) {
+  std::vector<std::tuple<Cdt::Face_handle, bool, bool, Cdt::Edge>> tags;
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
+    tags.emplace_back(f, f->is_inside_domain(), f->is_blinded(),
+                      f->is_blinded() ? f->blinding_edge() : Cdt::Edge());
+  CVT_2::mark_domain_2(cdt, holes);
+  bvd.update();
+  std::size_t wrong_marks = 0, wrong_tags = 0;
+  for (const auto& [f, inside, blinded, e] : tags) {
+    wrong_marks += f->is_inside_domain() != inside;
+    wrong_tags += f->is_blinded() != blinded || (blinded && f->blinding_edge() != e);
+  }
+  CHECK(wrong_marks == 0);
+  CHECK(wrong_tags == 0);
+  return wrong_marks == 0 && wrong_tags == 0;
+}
+
+// Random edits on a domain with random generators: after each, the tags and marks of a rebuild,
+// and every cell the report does not name is the cell it was; every few, the invariants.
+void random_edits(const std::string& file, std::size_t points, int edits, unsigned seed) {
+  Domain d;
+  load_domain(d, file);
+  insert_random_points(d, points, seed);
+  Cdt& cdt = d.cdt;
+  Bvd bvd(cdt);
+  Editor editor(cdt, bvd);
+  std::mt19937_64 rng(seed);
+  const double h = std::sqrt(domain_area(cdt) / double(cdt.number_of_vertices()));
+  const auto random_step = [&](const Point& from, double lo, double hi) {
+    const double angle = uniform(rng, 0, 6.283185307179586), r = uniform(rng, lo, hi) * h;
+    return Point(from.x() + r * std::cos(angle), from.y() + r * std::sin(angle));
+  };
+  std::vector<Editor::Constraint_id> live;
+  std::map<std::string, int> done, refused;
+  Cells before = all_cells(cdt, bvd);
+  for (int k = 0; k < edits; ++k) {
+    const std::size_t vertices = cdt.number_of_vertices(), faces = cdt.number_of_faces();
+    const int what = live.empty() ? 0 : uniform_int(rng, 0, 9);
+    const std::string name = what < 3   ? "insert"
+                             : what < 6 ? "extend"
+                             : what < 8 ? "move"
+                                        : "remove";
+    INFO("edit " << k << ": " << name);
+    try {
+      if (name == "insert") {
+        std::vector<Point> line = random_points_in_domain(cdt, 1, unsigned(rng()));
+        for (int i = uniform_int(rng, 1, 3); i > 0; --i)
+          line.push_back(random_step(line.back(), 0.5, 3));
+        live.push_back(editor.insert_constraint(line));
+      } else {
+        const std::size_t j = std::size_t(uniform_int(rng, 0, int(live.size()) - 1));
+        const auto id = live[j];
+        const auto& line = editor.vertices_in_constraint(id);
+        if (name == "extend") {
+          editor.extend_constraint(id, random_step(line.back()->point(), 0.5, 2),
+                                   uniform_int(rng, 0, 1) * 0.5 * h);
+        } else if (name == "move") {
+          const auto v = line[std::size_t(uniform_int(rng, 0, int(line.size()) - 1))];
+          editor.move_constrained_vertex(v, random_step(v->point(), 0.05, 0.4));
+        } else {
+          editor.remove_constraint(id);
+          live.erase(live.begin() + std::ptrdiff_t(j));
+        }
+      }
+      ++done[name];
+    } catch (const CVT_2::Domain_error&) {
+      ++refused[name];
+      CHECK(cdt.number_of_vertices() == vertices);  // a refused edit changes nothing
+      if (name != "move") CHECK(cdt.number_of_faces() == faces);
+    }
+    if (!as_rebuilt(cdt, bvd, d.poly.holes)) break;
+    const Cells after = all_cells(cdt, bvd);
+    const auto& changed = editor.report().changed_cells;
+    std::size_t unreported = 0;
+    for (const auto& [v, cell] : before)
+      if (std::find(changed.begin(), changed.end(), v) == changed.end() && after.at(v) != cell)
+        ++unreported;
+    CHECK(unreported == 0);
+    before = after;
+    if (k % 25 == 24) check_diagram(bvd, 100, seed + unsigned(k));
+  }
+  INFO(file);
+  for (const char* name : {"insert", "extend", "move", "remove"}) {
+    INFO(name << ": " << done[name] << " done, " << refused[name] << " refused");
+    CHECK(done[name] >= edits / 40);
+    if (std::getenv("CVT_2_EDIT_STATS"))
+      std::cout << file << ' ' << name << ": " << done[name] << " done, " << refused[name]
+                << " refused\n";
+  }
+}
+
+}  // namespace
+
+TEST_CASE("Constraint_editor_2: random edits give the tags and marks of a rebuild", "[bvd][edit]") {
+  random_edits("square_inner_constraints.poly", 1500, 300, 7);
+  random_edits("us_massachusetts_counties.poly", 1500, 300, 8);
+  random_edits("earcut_dude.poly", 800, 200, 9);
 }

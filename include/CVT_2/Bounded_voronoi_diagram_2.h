@@ -24,6 +24,9 @@
 
 namespace CVT_2 {
 
+template <class CDT, class Traits>
+class Constraint_editor_2;
+
 /// \ingroup PkgCvt2Ref
 /// The bounded Voronoi diagram (BVD) of a constrained Delaunay triangulation, its pseudo-dual
 /// (Seidel): the cell of a generator \f$x_i\f$ is the set of points of the domain that see
@@ -146,19 +149,31 @@ class Bounded_voronoi_diagram_2 {
   }
 
   /// Tags the blind faces again, after the triangulation or its domain changed.
-  void update() { m_number_of_blinded_faces = internal::tag_blind_faces(m_cdt, m_traits); }
+  void update() {
+    m_number_of_blinded_faces = internal::tag_blind_faces(m_cdt, m_traits);
+    m_count_stale = false;
+  }
   /// \cond SKIP_IN_MANUAL
   // update(), its pass over the faces on `threads` threads, in the chunks of the optimizers
   // (up to date with the triangulation); the same tags.
   void update(const internal::Face_chunks<CDT>& chunks, unsigned threads) {
     m_number_of_blinded_faces = internal::tag_blind_faces(m_cdt, m_traits, chunks, threads);
+    m_count_stale = false;
   }
   /// \endcond
 
   const CDT& triangulation() const { return m_cdt; }      ///< the triangulation
   const Traits& geom_traits() const { return m_traits; }  ///< the traits
   /// the number of domain faces that a constraint hides from their circumcenter
-  std::size_t number_of_blinded_faces() const { return m_number_of_blinded_faces; }
+  std::size_t number_of_blinded_faces() const {
+    if (m_count_stale) {  // after a Constraint_editor_2's edits
+      m_number_of_blinded_faces = 0;
+      for (auto f = m_cdt.finite_faces_begin(); f != m_cdt.finite_faces_end(); ++f)
+        m_number_of_blinded_faces += f->is_blinded() ? 1 : 0;
+      m_count_stale = false;
+    }
+    return m_number_of_blinded_faces;
+  }
 
   /// whether `v` lies in the closed domain, and so has a cell.
   bool has_cell(Vertex_handle v) const { return internal::has_domain_face(m_cdt, v); }
@@ -200,9 +215,14 @@ class Bounded_voronoi_diagram_2 {
   }
 
  private:
+  template <class, class>
+  friend class Constraint_editor_2;
+  void tags_changed() { m_count_stale = true; }  // the editor tagged some faces again
+
   const CDT& m_cdt;
   Traits m_traits;
-  std::size_t m_number_of_blinded_faces = 0;
+  mutable std::size_t m_number_of_blinded_faces = 0;
+  mutable bool m_count_stale = false;
 };
 
 }  // namespace CVT_2

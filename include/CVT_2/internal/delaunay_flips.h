@@ -51,8 +51,11 @@ void push_edges_around_flip(typename CDT::Face_handle f, typename CDT::Face_hand
 // Lawson's flips: an edge on the stack that is not constrained and fails the (symbolically
 // perturbed) empty-circle test is flipped, and the four edges around it are examined in turn.
 // From any valid constrained triangulation this ends at the constrained Delaunay one.
-template <class CDT>
-void lawson_flips(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
+// `flipped(f, g)` sees the two faces of each flip, after it.
+template <class CDT, class Flipped = void (*)(typename CDT::Face_handle, typename CDT::Face_handle)>
+void lawson_flips(
+    CDT& cdt, std::vector<Flip_candidate<CDT>>& stack,
+    Flipped flipped = [](typename CDT::Face_handle, typename CDT::Face_handle) {}) {
   using Face_handle = typename CDT::Face_handle;
   while (!stack.empty()) {
     Flip_candidate<CDT> e = stack.back();
@@ -62,6 +65,7 @@ void lawson_flips(CDT& cdt, std::vector<Flip_candidate<CDT>>& stack) {
     Face_handle f = e.f;
     const Face_handle g = f->neighbor(e.i);
     cdt.flip(f, e.i);
+    flipped(f, g);
     push_edges_around_flip<CDT>(f, g, stack);
   }
 }

@@ -6,9 +6,12 @@
 #include <CVT_2/internal/parallel/Face_chunks.h>
 
 #include <CGAL/enum.h>
+#include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 namespace CVT_2 {
@@ -21,9 +24,23 @@ bool is_same_constraint(const typename CDT::Edge& e1, const typename CDT::Edge& 
   return (a1 == a2 && b1 == b2) || (a1 == b2 && b1 == a2);
 }
 
+// An order of the constrained edges that does not depend on memory: their endpoints, the
+// smaller first, compared lexicographically. It breaks the ties of blinds_first().
+template <class CDT>
+bool edge_key_less(const typename CDT::Edge& e1, const typename CDT::Edge& e2) {
+  const auto key = [](const typename CDT::Edge& e) {
+    const auto& a = e.first->vertex(CDT::ccw(e.second))->point();
+    const auto& b = e.first->vertex(CDT::cw(e.second))->point();
+    return b < a ? std::make_pair(b, a) : std::make_pair(a, b);
+  };
+  return key(e1) < key(e2);
+}
+
 // Which of two blinding edges a face keeps: the first one met on the way to its circumcenter,
 // where Algorithm 2 must clip (with nested constraints the farther one is not). True if e, met
-// now, replaces the face's tag t.
+// now, replaces the face's tag t. Two edges met at once (at a vertex they share) are ordered by
+// edge_key_less, so that the tag does not depend on the order the edges are met in: a local
+// update then gives the tags of a rebuild.
 template <class CDT, class Traits>
 bool blinds_first(const Traits& traits, typename CDT::Face_handle f, const typename CDT::Edge& e,
                   const typename CDT::Edge& t) {
@@ -32,9 +49,28 @@ bool blinds_first(const Traits& traits, typename CDT::Face_handle f, const typen
   const auto& b = e.first->vertex(CDT::cw(e.second))->point();
   const auto& ta = t.first->vertex(CDT::ccw(t.second))->point();
   const auto& tb = t.first->vertex(CDT::cw(t.second))->point();
-  return traits.compare_blinding_distance_2_object()(f->vertex(0)->point(), f->vertex(1)->point(),
-                                                     f->vertex(2)->point(), a, b, ta,
-                                                     tb) == CGAL::SMALLER;
+  const CGAL::Comparison_result c = traits.compare_blinding_distance_2_object()(
+      f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(), a, b, ta, tb);
+  return c == CGAL::SMALLER || (c == CGAL::EQUAL && edge_key_less<CDT>(e, t));
+}
+
+// The side of the constrained edge e that a face blinded by it stores: the domain face on the
+// side of e's line where most of f's vertices lie (the left of the edge's endpoints in
+// lexicographic order on a tie). Which side a walk reached f from does not matter, so neither
+// does the order of the walks.
+template <class CDT>
+typename CDT::Edge side_toward(const CDT& cdt, typename CDT::Face_handle f,
+                               const typename CDT::Edge& e) {
+  typename CDT::Edge left = e, right = cdt.mirror_edge(e);  // left.first is left of a -> b
+  const auto* a = &e.first->vertex(CDT::ccw(e.second))->point();
+  const auto* b = &e.first->vertex(CDT::cw(e.second))->point();
+  if (*b < *a) std::swap(left, right), std::swap(a, b);
+  const auto orientation = cdt.geom_traits().orientation_2_object();
+  int sum = 0;
+  for (int i = 0; i < 3; ++i) sum += int(orientation(*a, *b, f->vertex(i)->point()));
+  typename CDT::Edge pick = sum >= 0 ? left : right, other = sum >= 0 ? right : left;
+  if (cdt.is_infinite(pick.first) || !pick.first->is_inside_domain()) std::swap(pick, other);
+  return pick;
 }
 
 // Clears every tag of the faces [first, last) (writing only to the faces that have one) and
@@ -69,9 +105,7 @@ std::size_t tag_blind_faces_from(const CDT& cdt, const Traits& traits,
   using Edge = typename CDT::Edge;
   const auto is_blinded = traits.is_blinded_2_object();
   const auto tagged_by = [](Face_handle f, const Edge& e) {
-    if (!f->is_blinded()) return false;
-    const Edge t = f->blinding_edge();
-    return t.first == e.first && t.second == e.second;
+    return f->is_blinded() && is_same_constraint<CDT>(f->blinding_edge(), e);
   };
   std::size_t count = 0;
   std::vector<Face_handle> stack;
@@ -88,10 +122,10 @@ std::size_t tag_blind_faces_from(const CDT& cdt, const Traits& traits,
       if (!is_blinded(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(), a, b))
         continue;
       if (!f->is_blinded()) {
-        f->set_blinding_edge(e);
+        f->set_blinding_edge(side_toward(cdt, f, e));
         ++count;
       } else if (blinds_first<CDT>(traits, f, e, f->blinding_edge())) {
-        f->set_blinding_edge(e);
+        f->set_blinding_edge(side_toward(cdt, f, e));
       } else {
         elsewhere.insert(f);
       }
@@ -100,6 +134,110 @@ std::size_t tag_blind_faces_from(const CDT& cdt, const Traits& traits,
         if (!f->is_constrained(i) && !cdt.is_infinite(n) && n->is_inside_domain())
           stack.push_back(n);
       }
+    }
+  }
+  return count;
+}
+
+// The faces of the domain that the constrained edge e blinds, into `out`: Algorithm 1's walk
+// from each of its domain sides. `seen` and `stack` are scratch.
+template <class CDT, class Traits, class Faces>
+void faces_blinded_by(const CDT& cdt, const Traits& traits, const typename CDT::Edge& e, Faces& out,
+                      std::unordered_set<typename CDT::Face_handle>& seen,
+                      std::vector<typename CDT::Face_handle>& stack) {
+  const auto is_blinded = traits.is_blinded_2_object();
+  const auto& a = e.first->vertex(CDT::ccw(e.second))->point();
+  const auto& b = e.first->vertex(CDT::cw(e.second))->point();
+  seen.clear();
+  stack.clear();
+  for (const auto& side : {e, cdt.mirror_edge(e)})
+    if (!cdt.is_infinite(side.first) && side.first->is_inside_domain()) stack.push_back(side.first);
+  while (!stack.empty()) {
+    const auto f = stack.back();
+    stack.pop_back();
+    if (!seen.insert(f).second) continue;
+    if (!is_blinded(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(), a, b))
+      continue;
+    out.insert(f);
+    for (int i = 0; i < 3; ++i) {
+      const auto n = f->neighbor(i);
+      if (!f->is_constrained(i) && !cdt.is_infinite(n) && n->is_inside_domain()) stack.push_back(n);
+    }
+  }
+}
+
+// The tag Algorithm 1 gives the domain face f, found from f alone: among the constrained edges
+// with a side in the domain that blind f, the first met (blinds_first), on the side
+// side_toward() picks; false if none blinds f. An edge that blinds f meets the segment from
+// f's centroid to its circumcenter, inside f's circumdisk, so a walk over the faces whose edges
+// meet the disk (widened for the rounded centre) finds them all. That this is Algorithm 1's
+// tag rests on what Algorithm 1 rests on: the faces an edge blinds are connected to it.
+template <class CDT, class Traits>
+bool first_blinding_edge(const CDT& cdt, const Traits& traits, typename CDT::Face_handle f,
+                         typename CDT::Edge& first,
+                         std::unordered_set<typename CDT::Face_handle>& seen,
+                         std::vector<typename CDT::Face_handle>& stack) {
+  using Point_2 = typename CDT::Point_2;
+  const auto is_blinded = traits.is_blinded_2_object();
+  const Point_2 &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
+  const Point_2 c = traits.construct_circumcenter_2_object()(p, q, r);
+  const double cx = CGAL::to_double(c.x()), cy = CGAL::to_double(c.y());
+  const auto d2 = [&](const Point_2& x) {
+    const double dx = CGAL::to_double(x.x()) - cx, dy = CGAL::to_double(x.y()) - cy;
+    return dx * dx + dy * dy;
+  };
+  const double r2 = std::max({d2(p), d2(q), d2(r)}) * (1 + 1e-6);
+  const auto meets_disk = [&](const Point_2& a, const Point_2& b) {
+    const double ax = CGAL::to_double(a.x()) - cx, ay = CGAL::to_double(a.y()) - cy;
+    const double dx = CGAL::to_double(b.x()) - CGAL::to_double(a.x());
+    const double dy = CGAL::to_double(b.y()) - CGAL::to_double(a.y());
+    const double len2 = dx * dx + dy * dy;
+    double t = len2 > 0 ? -(ax * dx + ay * dy) / len2 : 0;
+    t = t < 0 ? 0 : (t > 1 ? 1 : t);
+    const double x = ax + t * dx, y = ay + t * dy;
+    return x * x + y * y <= r2;
+  };
+  bool found = false;
+  seen.clear();
+  stack.assign(1, f);
+  seen.insert(f);
+  while (!stack.empty()) {
+    const auto h = stack.back();
+    stack.pop_back();
+    for (int i = 0; i < 3; ++i) {
+      const auto va = h->vertex(CDT::ccw(i)), vb = h->vertex(CDT::cw(i));
+      if (cdt.is_infinite(va) || cdt.is_infinite(vb) || !meets_disk(va->point(), vb->point()))
+        continue;
+      const auto n = h->neighbor(i);
+      if (h->is_constrained(i) && ((!cdt.is_infinite(h) && h->is_inside_domain()) ||
+                                   (!cdt.is_infinite(n) && n->is_inside_domain()))) {
+        const typename CDT::Edge e(h, i);
+        if (is_blinded(p, q, r, va->point(), vb->point()) &&
+            (!found || blinds_first<CDT>(traits, f, e, first)))
+          first = e, found = true;
+      }
+      if (!cdt.is_infinite(n) && seen.insert(n).second) stack.push_back(n);
+    }
+  }
+  if (found) first = side_toward(cdt, f, first);
+  return found;
+}
+
+// Tags the faces `faces` again, each from itself (first_blinding_edge()); the other faces keep
+// their tags. Returns how many of them are blinded.
+template <class CDT, class Traits, class Faces>
+std::size_t retag_faces(const CDT& cdt, const Traits& traits, const Faces& faces) {
+  std::unordered_set<typename CDT::Face_handle> seen;
+  std::vector<typename CDT::Face_handle> stack;
+  std::size_t count = 0;
+  for (const auto f : faces) {
+    typename CDT::Edge e;
+    if (!cdt.is_infinite(f) && f->is_inside_domain() &&
+        first_blinding_edge(cdt, traits, f, e, seen, stack)) {
+      f->set_blinding_edge(e);
+      ++count;
+    } else if (f->is_blinded()) {
+      f->clear_blinding();
     }
   }
   return count;

@@ -1,0 +1,527 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Constraint_editor_2: insert, extend, move and remove constraints; the diagram stays current.
+#ifndef CVT_2_CONSTRAINT_EDITOR_2_H
+#define CVT_2_CONSTRAINT_EDITOR_2_H
+
+#include <CVT_2/Bounded_voronoi_diagram_2.h>
+#include <CVT_2/exceptions.h>
+#include <CVT_2/internal/constraint_edits.h>
+#include <CVT_2/internal/delaunay_flips.h>
+#include <CVT_2/internal/move_vertex.h>
+#include <CVT_2/internal/tag_blind_faces.h>
+
+#include <CGAL/Kernel/global_functions_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace CVT_2 {
+
+/// \ingroup PkgCvt2Ref
+/// Edits the inner constraints of a triangulation while its bounded Voronoi diagram stays
+/// current, with work local to the edit: cracks that grow, slits inserted, moved and removed
+/// (the paper's "constraints [that] move in an unpredictable manner").
+///
+/// After each edit the blind tags and the domain marks are those a rebuild on the edited
+/// triangulation gives (`Bounded_voronoi_diagram_2::update()`), but only these faces are
+/// re-tagged: the faces the edit created or changed, the faces the constrained edges around
+/// them blind, and the faces the removed or moved edges blinded (a face can be blinded only by
+/// a constraint that meets its circumdisk). `report()` says which cells changed.
+///
+/// Each polyline inserted here gets an id, 0, 1, ... in order; the vertices CGAL inserts on it
+/// (where it passes through a vertex, or where another edit's point splits it) join it. The
+/// domain's own constraints have no id: they are never removed, but their vertices can move.
+/// Constraints inserted here lie in the closed domain and meet other constraints only at
+/// vertices (or end on them: the point is inserted there, no intersection is constructed); an
+/// edit that would break these rules is an error that names both, and changes nothing.
+/// \tparam CDT as for `Bounded_voronoi_diagram_2`, with CGAL's default
+///         `No_constraint_intersection_requiring_constructions_tag` or a stricter one.
+/// \tparam Traits as for `Bounded_voronoi_diagram_2`.
+template <class CDT, class Traits = Bvd_traits_2<typename CDT::Geom_traits>>
+class Constraint_editor_2 {
+ public:
+  using Diagram = Bounded_voronoi_diagram_2<CDT, Traits>;  ///< the diagram kept current
+  using Point_2 = typename CDT::Point_2;                   ///< a point
+  using FT = typename CDT::Geom_traits::FT;                ///< a number
+  using Vertex_handle = typename CDT::Vertex_handle;       ///< a vertex, a cell
+  using Face_handle = typename CDT::Face_handle;           ///< a face
+  using Constraint_id = std::size_t;                       ///< a polyline inserted here
+
+  /// What an edit changed.
+  struct Edit_report {
+    /// the vertices whose cell changed (the rows a solver assembles again), new ones included
+    std::vector<Vertex_handle> changed_cells;
+    std::vector<Vertex_handle> new_vertices;  ///< the vertices the edit inserted, in order
+    std::size_t retagged_faces = 0;           ///< the faces whose blind tag was computed again
+  };
+
+  /// An editor of `cdt`, whose diagram `diagram` is (`diagram.triangulation()` is `cdt`).
+  Constraint_editor_2(CDT& cdt, Diagram& diagram) : m_cdt(cdt), m_diagram(diagram) {
+    if (&diagram.triangulation() != &cdt)
+      throw std::invalid_argument("Constraint_editor_2: the diagram is not the triangulation's");
+  }
+
+  /// Inserts the polyline through `points` (at least two distinct points; a repeated point in a
+  /// row counts once) as a new constraint and returns its id.
+  /// \throws Domain_error if a point lies outside the domain, or a segment leaves the domain,
+  ///         crosses or overlaps another constraint or the polyline itself.
+  template <class PointRange>
+  Constraint_id insert_constraint(const PointRange& points) {
+    std::vector<Point_2> path;
+    for (const Point_2& p : points)
+      if (path.empty() || path.back() != p) path.push_back(p);
+    if (path.size() < 2)
+      throw Domain_error("insert_constraint: a constraint needs two distinct points");
+    const Constraint_id id = m_polylines.size();
+    check_path(path, "the new constraint " + std::to_string(id));
+    begin_edit();
+    m_polylines.emplace_back();
+    m_removed.push_back(false);
+    std::vector<Vertex_handle> vertices;
+    for (const Point_2& p : path) vertices.push_back(insert_point(p));
+    m_polylines[id].push_back(vertices.front());
+    for (std::size_t i = 0; i + 1 < vertices.size(); ++i)
+      insert_segment(id, vertices[i], vertices[i + 1]);
+    finish_edit();
+    return id;
+  }
+
+  /// Extends constraint `id` from its last vertex to `tip` (a crack that grows), with vertices
+  /// at most `spacing` apart along the new piece if `spacing` is positive. A tip on another
+  /// constraint is inserted on it.
+  /// \throws Domain_error as `insert_constraint()`, or if `id` was removed or is unknown.
+  void extend_constraint(Constraint_id id, const Point_2& tip, FT spacing = FT(0)) {
+    check_id(id, "extend_constraint");
+    const Point_2 from = m_polylines[id].back()->point();
+    if (tip == from) return;
+    std::vector<Point_2> path{from};
+    const double length = std::sqrt(CGAL::to_double(CGAL::squared_distance(from, tip)));
+    const double h = CGAL::to_double(spacing);
+    const std::size_t pieces = h > 0 ? std::size_t(std::ceil(length / h)) : 1;
+    for (std::size_t k = 1; k < pieces; ++k) {
+      const double t = double(k) / double(pieces);
+      path.emplace_back(from.x() + t * (tip.x() - from.x()), from.y() + t * (tip.y() - from.y()));
+    }
+    path.push_back(tip);
+    check_path(path, "the extension of constraint " + std::to_string(id));
+    begin_edit();
+    Vertex_handle previous = m_polylines[id].back();
+    for (std::size_t k = 1; k < path.size(); ++k) {
+      const Vertex_handle v = insert_point(path[k]);
+      insert_segment(id, previous, v);
+      previous = v;
+    }
+    finish_edit();
+  }
+
+  /// Moves the constrained vertex `v` to `to`; its constraints follow, and the free generators
+  /// stay where they are (those the moved edges sweep over end up on their other side). If
+  /// the edges can follow without sweeping over a vertex, the vertex moves within its star,
+  /// edges flipping behind it, and keeps its handle; otherwise it is removed and inserted
+  /// again, and the handle returned is the new one.
+  /// \throws Domain_error if `v` is not constrained, is on the convex hull, if another vertex
+  ///         is at `to`, or if an edge of `v` would then cross or run along another
+  ///         constraint, or (but for a vertex of the domain's boundary) leave the domain.
+  Vertex_handle move_constrained_vertex(Vertex_handle v, const Point_2& to) {
+    const std::string what = "move_constrained_vertex: " + internal::to_string(v->point());
+    if (!m_cdt.are_there_incident_constraints(v)) throw Domain_error(what + " is on no constraint");
+    if (!std::isfinite(CGAL::to_double(to.x())) || !std::isfinite(CGAL::to_double(to.y())))
+      throw Domain_error(what + ": the target is not finite");
+    bool boundary = false;
+    auto fc = m_cdt.incident_faces(v), done = fc;
+    do {
+      if (m_cdt.is_infinite(fc))
+        throw Domain_error(what + " is on the convex hull, which an editor does not move");
+      boundary = boundary || !fc->is_inside_domain();
+    } while (++fc != done);
+    if (to == v->point()) {
+      begin_edit();
+      finish_edit();
+      return v;
+    }
+    typename CDT::Locate_type lt;
+    int li;
+    m_cdt.locate(to, lt, li, v->face());
+    if (lt == CDT::VERTEX)
+      throw Domain_error(what + " cannot go to " + internal::to_string(to) +
+                         ": another vertex is there");
+    std::vector<Edge> incident;
+    m_cdt.incident_constraints(v, std::back_inserter(incident));
+    std::vector<Vertex_handle> ends;
+    for (const Edge& e : incident) {
+      const Vertex_handle x = e.first->vertex(CDT::ccw(e.second)) == v
+                                  ? e.first->vertex(CDT::cw(e.second))
+                                  : e.first->vertex(CDT::ccw(e.second));
+      ends.push_back(x);
+      internal::check_segment(
+          m_cdt, x->point(), to,
+          [&](Vertex_handle a, Vertex_handle b) { return constraint_name(a, b); },
+          what + " cannot go to " + internal::to_string(to), v, !boundary);
+    }
+    for (std::size_t i = 0; i < ends.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (internal::pieces_meet(ends[i]->point(), to, to, ends[j]->point(), true))
+          throw Domain_error(what + " cannot go to " + internal::to_string(to) +
+                             ": two of its edges would overlap");
+    begin_edit();
+    for (const Edge& e : incident) blinded_before(e);
+    const Point_2 from = v->point();
+    if (slide(v, to)) {
+      finish_edit(v);
+      return v;
+    }
+    slide(v, from);  // back the way it came, then the long way
+    const Vertex_handle w = reinsert(v, to, ends);
+    finish_edit(w);
+    return w;
+  }
+
+  /// Removes constraint `id`: its edges are no longer constrained (but those another constraint
+  /// shares), and its vertices stay, as free generators where no other constraint holds them.
+  /// \throws Domain_error if `id` was removed or is unknown.
+  void remove_constraint(Constraint_id id) {
+    check_id(id, "remove_constraint");
+    begin_edit();
+    const auto& vertices = m_polylines[id];
+    std::vector<internal::Flip_candidate<CDT>> stack;
+    std::vector<typename CDT::Edge> edges;
+    for (std::size_t i = 0; i + 1 < vertices.size(); ++i) {
+      Face_handle f;
+      int k = 0;
+      if (!m_cdt.is_edge(vertices[i], vertices[i + 1], f, k))
+        throw std::logic_error("remove_constraint: a constraint edge is missing");
+      edges.emplace_back(f, k);
+      m_edge_owner.erase(key(vertices[i], vertices[i + 1]));
+    }
+    for (const auto& e : edges) blinded_before(e);
+    for (const auto& [f, k] : edges) {
+      const Face_handle n = f->neighbor(k);
+      f->set_constraint(k, false);
+      n->set_constraint(n->index(f), false);
+      m_modified.push_back(f);
+      m_modified.push_back(n);
+      stack.push_back(internal::Flip_candidate<CDT>::of(f, k));
+    }
+    internal::lawson_flips(m_cdt, stack, [&](Face_handle f, Face_handle g) {
+      m_modified.push_back(f);
+      m_modified.push_back(g);
+    });
+    m_removed[id] = true;
+    finish_edit();
+  }
+
+  /// the vertices of constraint `id`, in order along it (those of a removed one as they were)
+  const std::vector<Vertex_handle>& vertices_in_constraint(Constraint_id id) const {
+    return m_polylines.at(id);
+  }
+  bool is_removed(Constraint_id id) const { return m_removed.at(id); }  ///< removed?
+  /// the number of constraints inserted here, removed ones included (the next id)
+  std::size_t number_of_constraints() const { return m_polylines.size(); }
+  const Edit_report& report() const { return m_report; }  ///< what the last edit changed
+
+ private:
+  using Edge = typename CDT::Edge;
+  using Edge_key = std::pair<Vertex_handle, Vertex_handle>;
+
+  static Edge_key key(Vertex_handle a, Vertex_handle b) {
+    return b < a ? Edge_key(b, a) : Edge_key(a, b);
+  }
+  static Edge_key key(const Edge& e) {
+    return key(e.first->vertex(CDT::ccw(e.second)), e.first->vertex(CDT::cw(e.second)));
+  }
+
+  void check_id(Constraint_id id, const char* what) const {
+    if (id >= m_polylines.size())
+      throw Domain_error(std::string(what) + ": there is no constraint " + std::to_string(id));
+    if (m_removed[id])
+      throw Domain_error(std::string(what) + ": constraint " + std::to_string(id) + " was removed");
+  }
+
+  // The name of the constrained edge (a, b) in an error.
+  std::string constraint_name(Vertex_handle a, Vertex_handle b) const {
+    const auto it = m_edge_owner.find(key(a, b));
+    const std::string where =
+        " (" + internal::to_string(a->point()) + " - " + internal::to_string(b->point()) + ")";
+    return it == m_edge_owner.end() ? "a constraint of the domain" + where
+                                    : "constraint " + std::to_string(it->second) + where;
+  }
+
+  // Checks, before anything changes, that the polyline `path` can be inserted: every piece
+  // lies in the closed domain and meets the constraints and the other pieces only at vertices
+  // or at its own ends (internal::check_segment).
+  void check_path(const std::vector<Point_2>& path, const std::string& what) const {
+    const auto name = [&](Vertex_handle a, Vertex_handle b) { return constraint_name(a, b); };
+    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+      internal::check_segment(m_cdt, path[i], path[i + 1], name, what);
+      for (std::size_t j = 0; j < i; ++j)
+        if (internal::pieces_meet(path[j], path[j + 1], path[i], path[i + 1], j + 1 == i))
+          throw Domain_error(what + " crosses itself: " + internal::to_string(path[j]) + " - " +
+                             internal::to_string(path[j + 1]) + " and " +
+                             internal::to_string(path[i]) + " - " +
+                             internal::to_string(path[i + 1]));
+    }
+  }
+
+  void begin_edit() {
+    m_report = Edit_report();
+    m_modified.clear();
+    m_before.clear();
+  }
+
+  // The faces the constrained edge e blinds now, to tag again after the edit (e goes or moves).
+  void blinded_before(const Edge& e) {
+    internal::faces_blinded_by(m_cdt, m_diagram.geom_traits(), e, m_before, m_seen, m_stack);
+  }
+
+  // Inserts p (a vertex already there is returned as is), marks the new faces' domain flag as
+  // the face or the side of the edge p was in, and splits the constraint p lies on, if any.
+  Vertex_handle insert_point(const Point_2& p) {
+    typename CDT::Locate_type lt;
+    int li;
+    const Face_handle f = m_cdt.locate(p, lt, li);
+    if (lt == CDT::VERTEX) return f->vertex(li);
+    // check_path() made sure that p is in the closed domain
+    Vertex_handle a, b;
+    bool split = false, left = false, right = false, inside = false;
+    if (lt == CDT::EDGE && f->is_constrained(li)) {
+      split = true;
+      a = f->vertex(CDT::ccw(li)), b = f->vertex(CDT::cw(li));  // f is left of a -> b
+      const Face_handle n = f->neighbor(li);
+      left = !m_cdt.is_infinite(f) && f->is_inside_domain();
+      right = !m_cdt.is_infinite(n) && n->is_inside_domain();
+    } else {
+      inside = !m_cdt.is_infinite(f) && f->is_inside_domain();
+    }
+    const Vertex_handle v = m_cdt.insert(p, lt, f, li);
+    const auto orientation = m_cdt.geom_traits().orientation_2_object();
+    auto fc = m_cdt.incident_faces(v), done = fc;
+    do {
+      m_modified.push_back(fc);
+      if (m_cdt.is_infinite(fc)) {
+        fc->set_inside_domain(false);
+      } else if (split) {
+        const int i = fc->index(v);
+        const int side =
+            int(orientation(a->point(), b->point(), fc->vertex(CDT::ccw(i))->point())) +
+            int(orientation(a->point(), b->point(), fc->vertex(CDT::cw(i))->point()));
+        fc->set_inside_domain(side > 0 ? left : right);
+      } else {
+        fc->set_inside_domain(inside);
+      }
+    } while (++fc != done);
+    if (split) {
+      const auto owner = m_edge_owner.find(key(a, b));
+      if (owner != m_edge_owner.end()) {
+        const Constraint_id id = owner->second;
+        m_edge_owner.erase(owner);
+        auto& line = m_polylines[id];
+        for (std::size_t i = 0; i + 1 < line.size(); ++i)
+          if (key(line[i], line[i + 1]) == key(a, b)) {
+            line.insert(line.begin() + std::ptrdiff_t(i) + 1, v);
+            break;
+          }
+        m_edge_owner[key(a, v)] = id;
+        m_edge_owner[key(v, b)] = id;
+      }
+    }
+    m_report.new_vertices.push_back(v);
+    return v;
+  }
+
+  // Inserts the constrained segment from the last vertex of constraint `id`, u, to w, through
+  // the vertices on it, which join the constraint; gives the new faces their domain flag.
+  void insert_segment(Constraint_id id, Vertex_handle u, Vertex_handle w) {
+    if (u == w) return;
+    std::vector<Face_handle> created;
+    static_cast<typename CDT::Ctr&>(m_cdt).insert_constraint(u, w, std::back_inserter(created));
+    // the vertices on the way, which CGAL split the segment at
+    std::vector<Vertex_handle> chain{u};
+    while (chain.back() != w) {
+      const Vertex_handle x = internal::next_along(m_cdt, chain.back(), w);
+      chain.push_back(x);
+    }
+    std::unordered_set<Face_handle> fresh(created.begin(), created.end());
+    std::unordered_set<Edge_key, internal::Pair_hash> chain_keys;
+    for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+      chain_keys.insert(key(chain[i], chain[i + 1]));
+      m_edge_owner[key(chain[i], chain[i + 1])] = id;
+      m_polylines[id].push_back(chain[i + 1]);
+      Face_handle f;
+      int k = 0;
+      if (m_cdt.is_edge(chain[i], chain[i + 1], f, k)) {
+        m_modified.push_back(f);
+        m_modified.push_back(f->neighbor(k));
+      }
+    }
+    internal::flood_domain_marks(m_cdt, fresh, [&](Face_handle f, int i) {
+      return chain_keys.count(key(f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i)))) != 0;
+    });
+    m_modified.insert(m_modified.end(), created.begin(), created.end());
+  }
+
+  // The move of v to `to` when its edges would sweep over vertices: its constraints to the
+  // vertices `ends` are lifted, v is removed and inserted at `to`, and the constraints go
+  // back, each in its polyline. The new faces' domain flags flood from the old faces around.
+  Vertex_handle reinsert(Vertex_handle v, const Point_2& to,
+                         const std::vector<Vertex_handle>& ends) {
+    std::vector<std::optional<Constraint_id>> owners;
+    std::vector<internal::Flip_candidate<CDT>> stack;
+    for (const Vertex_handle x : ends) {
+      const auto it = m_edge_owner.find(key(v, x));
+      owners.push_back(it == m_edge_owner.end() ? std::nullopt : std::optional(it->second));
+      if (it != m_edge_owner.end()) m_edge_owner.erase(it);
+      Face_handle f;
+      int k = 0;
+      if (!m_cdt.is_edge(v, x, f, k))
+        throw std::logic_error("move_constrained_vertex: a constrained edge is missing");
+      f->set_constraint(k, false);
+      f->neighbor(k)->set_constraint(f->neighbor(k)->index(f), false);
+      stack.push_back(internal::Flip_candidate<CDT>::of(f, k));
+    }
+    // constrained Delaunay again before CGAL removes v (its hole filling expects it)
+    internal::lawson_flips(m_cdt, stack, [&](Face_handle f, Face_handle g) {
+      m_modified.push_back(f);
+      m_modified.push_back(g);
+    });
+    std::vector<Vertex_handle> link;
+    auto vc = m_cdt.incident_vertices(v), done = vc;
+    do link.push_back(vc);
+    while (++vc != done);
+    m_cdt.remove(v);
+    for (const Vertex_handle x : link) note_star(x);  // the faces of the hole among them
+    const Vertex_handle w = insert_point(to);
+    for (auto& line : m_polylines) std::replace(line.begin(), line.end(), v, w);
+    for (std::size_t i = 0; i < ends.size(); ++i) {
+      std::vector<Face_handle> created;
+      static_cast<typename CDT::Ctr&>(m_cdt).insert_constraint(ends[i], w,
+                                                               std::back_inserter(created));
+      m_modified.insert(m_modified.end(), created.begin(), created.end());
+      std::vector<Vertex_handle> chain{ends[i]};
+      while (chain.back() != w) chain.push_back(internal::next_along(m_cdt, chain.back(), w));
+      for (std::size_t j = 0; j + 1 < chain.size(); ++j) {
+        Face_handle f;
+        int k = 0;
+        if (m_cdt.is_edge(chain[j], chain[j + 1], f, k)) {
+          m_modified.push_back(f);
+          m_modified.push_back(f->neighbor(k));
+        }
+      }
+      if (!owners[i]) continue;
+      for (std::size_t j = 0; j + 1 < chain.size(); ++j)
+        m_edge_owner[key(chain[j], chain[j + 1])] = *owners[i];
+      // the vertices on the way join the polyline, between ends[i] and w
+      auto& line = m_polylines[*owners[i]];
+      for (std::size_t j = 0; j + 1 < line.size(); ++j) {
+        const bool forward = line[j] == ends[i] && line[j + 1] == w;
+        if (!forward && !(line[j] == w && line[j + 1] == ends[i])) continue;
+        std::vector<Vertex_handle> inner(chain.begin() + 1, chain.end() - 1);
+        if (!forward) std::reverse(inner.begin(), inner.end());
+        line.insert(line.begin() + std::ptrdiff_t(j) + 1, inner.begin(), inner.end());
+        break;
+      }
+    }
+    const auto& faces = m_cdt.tds().faces();
+    std::unordered_set<Face_handle> fresh;
+    for (const Face_handle f : m_modified)
+      if (faces.is_used(f)) fresh.insert(f);
+    internal::flood_domain_marks(m_cdt, fresh, [&](Face_handle f, int i) {
+      return m_edge_owner.count(key(f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i)))) != 0;
+    });
+    m_report.new_vertices.assign(1, w);
+    return w;
+  }
+
+  // Moves v to `to` by steps within its star, with Lawson's flips after each; false if it
+  // gets stuck (an edge of v would have to cross a vertex or a constraint).
+  bool slide(Vertex_handle v, const Point_2& to) {
+    std::vector<internal::Flip_candidate<CDT>> stack;
+    for (int step = 0; step < 200 && v->point() != to; ++step) {
+      note_star(v);
+      const double done = internal::move_free_vertex(m_cdt, v, to);
+      note_star(v);
+      auto fc = m_cdt.incident_faces(v), end = fc;
+      do
+        for (int i = 0; i < 3; ++i) stack.push_back(internal::Flip_candidate<CDT>::of(fc, i));
+      while (++fc != end);
+      internal::lawson_flips(m_cdt, stack, [&](Face_handle f, Face_handle g) {
+        m_modified.push_back(f);
+        m_modified.push_back(g);
+      });
+      if (done == 0) return false;
+    }
+    return v->point() == to;
+  }
+
+  void note_star(Vertex_handle v) {
+    auto fc = m_cdt.incident_faces(v), done = fc;
+    do m_modified.push_back(fc);
+    while (++fc != done);
+  }
+
+  // Tags again the faces the edit can have changed and fills the report; `moved` is the vertex
+  // a move moved (its edges' tags change though their vertices do not).
+  void finish_edit(Vertex_handle moved = Vertex_handle()) {
+    const auto& faces = m_cdt.tds().faces();
+    std::unordered_set<Face_handle> modified, region;
+    for (const Face_handle f : m_modified)
+      if (faces.is_used(f)) modified.insert(f);
+    for (const Face_handle f : m_before)
+      if (faces.is_used(f)) region.insert(f);
+    // the faces the constrained edges around the changed faces blind: their tag may be stale
+    std::unordered_set<Edge_key, internal::Pair_hash> edges;
+    for (const Face_handle f : modified)
+      for (int i = 0; i < 3; ++i)
+        if (f->is_constrained(i) && edges.insert(key(Edge(f, i))).second)
+          internal::faces_blinded_by(m_cdt, m_diagram.geom_traits(), Edge(f, i), region, m_seen,
+                                     m_stack);
+    region.insert(modified.begin(), modified.end());
+    // the tags of the old faces before, by their edges' vertices (a stale one is a change)
+    std::vector<std::pair<Face_handle, Edge_key>> old;
+    for (const Face_handle f : region)
+      if (modified.count(f) == 0)
+        old.emplace_back(f, f->is_blinded() && faces.is_used(f->blinding_edge().first)
+                                ? key(f->blinding_edge())
+                                : Edge_key());
+    internal::retag_faces(m_cdt, m_diagram.geom_traits(), region);
+    std::unordered_set<Vertex_handle> changed;
+    const auto add_face = [&](Face_handle f) {
+      for (int i = 0; i < 3; ++i)
+        if (!m_cdt.is_infinite(f->vertex(i))) changed.insert(f->vertex(i));
+    };
+    for (const Face_handle f : modified) add_face(f);
+    for (const auto& [f, was] : old) {
+      const Edge_key now = f->is_blinded() ? key(f->blinding_edge()) : Edge_key();
+      if (now != was || (moved != Vertex_handle() && (now.first == moved || now.second == moved)))
+        add_face(f);
+    }
+    m_report.changed_cells.assign(changed.begin(), changed.end());
+    std::sort(m_report.changed_cells.begin(), m_report.changed_cells.end(),
+              [](Vertex_handle a, Vertex_handle b) { return a->point() < b->point(); });
+    m_report.retagged_faces = region.size();
+    m_diagram.tags_changed();
+  }
+
+  CDT& m_cdt;
+  Diagram& m_diagram;
+  std::vector<std::vector<Vertex_handle>> m_polylines;
+  std::vector<bool> m_removed;
+  std::map<Edge_key, Constraint_id> m_edge_owner;  // the edges of the constraints made here
+  Edit_report m_report;
+  std::vector<Face_handle> m_modified;       // faces the edit created or changed (some may be gone)
+  std::unordered_set<Face_handle> m_before;  // faces blinded by edges that went or moved
+  std::unordered_set<Face_handle> m_seen;    // scratch
+  std::vector<Face_handle> m_stack;          // scratch
+};
+
+}  // namespace CVT_2
+
+#endif  // CVT_2_CONSTRAINT_EDITOR_2_H

@@ -1,0 +1,201 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Helpers of Constraint_editor_2: the checks before an edit, and the domain flags of new faces.
+#ifndef CVT_2_INTERNAL_CONSTRAINT_EDITS_H
+#define CVT_2_INTERNAL_CONSTRAINT_EDITS_H
+
+#include <CVT_2/exceptions.h>
+#include <CVT_2/internal/to_string.h>
+#include <CVT_2/mark_domain_2.h>
+
+#include <CGAL/Kernel/global_functions_2.h>
+#include <CGAL/enum.h>
+#include <CGAL/intersections.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace CVT_2 {
+namespace internal {
+
+// A hash of a pair of handles (an edge by its two vertices).
+struct Pair_hash {
+  template <class H>
+  std::size_t operator()(const std::pair<H, H>& p) const {
+    const std::size_t a = std::hash<H>()(p.first), b = std::hash<H>()(p.second);
+    return a ^ (b + 0x9e3779b97f4a7c15ULL + (a << 6) + (a >> 2));
+  }
+};
+
+// Whether the point of locate(p) -> (f, lt, li) lies in the closed domain.
+template <class CDT>
+bool located_in_domain(const CDT& cdt, typename CDT::Face_handle f, typename CDT::Locate_type lt,
+                       int li) {
+  const auto inside = [&](typename CDT::Face_handle h) {
+    return !cdt.is_infinite(h) && h->is_inside_domain();
+  };
+  switch (lt) {
+    case CDT::VERTEX:
+      return has_domain_face(cdt, f->vertex(li));
+    case CDT::EDGE:
+      return inside(f) || inside(f->neighbor(li));
+    case CDT::FACE:
+      return inside(f);
+    default:
+      return false;
+  }
+}
+
+// Checks that the segment [p, q] can become a constraint: it lies in the closed domain and
+// meets the constrained edges only at vertices or at p or q (which then split them). Throws a
+// Domain_error that starts with `what` and names the edge with `name(a, b)` otherwise.
+// Exact: orientation tests, and the triangles that meet [p, q]; only the domain test of each
+// piece between the vertices on the segment locates a constructed midpoint.
+// The constrained edges of `ignored` (a vertex about to move) do not count; with `domain`
+// false, neither does the domain.
+template <class CDT, class Name>
+void check_segment(const CDT& cdt, const typename CDT::Point_2& p, const typename CDT::Point_2& q,
+                   const Name& name, const std::string& what,
+                   typename CDT::Vertex_handle ignored = typename CDT::Vertex_handle(),
+                   bool domain = true) {
+  using Point_2 = typename CDT::Point_2;
+  using Face_handle = typename CDT::Face_handle;
+  const auto orientation = cdt.geom_traits().orientation_2_object();
+  const std::string segment = to_string(p) + " - " + to_string(q);
+  typename CDT::Locate_type lt;
+  int li;
+  const Face_handle start = cdt.locate(p, lt, li);
+  if (cdt.dimension() < 2 || cdt.is_infinite(start))
+    throw Domain_error(what + ": " + to_string(p) + " is outside the triangulation");
+  for (const Point_2* x : {&p, &q}) {
+    const Face_handle f = cdt.locate(*x, lt, li, start);
+    if (domain && !located_in_domain(cdt, f, lt, li))
+      throw Domain_error(what + ": " + to_string(*x) + " is outside the domain");
+  }
+  const typename CDT::Geom_traits::Segment_2 s(p, q);
+  std::vector<Face_handle> stack{start};
+  std::unordered_set<Face_handle> seen{start};
+  std::vector<Point_2> on_segment;
+  while (!stack.empty()) {
+    const Face_handle h = stack.back();
+    stack.pop_back();
+    for (int i = 0; i < 3; ++i) {
+      const auto& x = h->vertex(i)->point();
+      if (orientation(p, q, x) == CGAL::COLLINEAR &&
+          CGAL::collinear_are_strictly_ordered_along_line(p, x, q))
+        on_segment.push_back(x);
+      if (!h->is_constrained(i) || h->vertex(CDT::ccw(i)) == ignored ||
+          h->vertex(CDT::cw(i)) == ignored)
+        continue;
+      const auto& a = h->vertex(CDT::ccw(i))->point();
+      const auto& b = h->vertex(CDT::cw(i))->point();
+      const int o1 = orientation(p, q, a), o2 = orientation(p, q, b);
+      const int o3 = orientation(a, b, p), o4 = orientation(a, b, q);
+      if (o1 * o2 < 0 && o3 * o4 < 0)
+        throw Domain_error(what + ": " + segment + " crosses " +
+                           name(h->vertex(CDT::ccw(i)), h->vertex(CDT::cw(i))) + " at no vertex");
+      if (o1 == 0 && o2 == 0) {
+        const Point_2 lo = std::max(std::min(p, q), std::min(a, b));
+        const Point_2 hi = std::min(std::max(p, q), std::max(a, b));
+        if (lo < hi)
+          throw Domain_error(what + ": " + segment + " runs along " +
+                             name(h->vertex(CDT::ccw(i)), h->vertex(CDT::cw(i))));
+      }
+    }
+    for (int i = 0; i < 3; ++i) {
+      const Face_handle n = h->neighbor(i);
+      if (!cdt.is_infinite(n) && seen.count(n) == 0 && CGAL::do_intersect(cdt.triangle(n), s)) {
+        seen.insert(n);
+        stack.push_back(n);
+      }
+    }
+  }
+  // each piece between the vertices on the segment lies in one region: its midpoint's
+  std::sort(on_segment.begin(), on_segment.end(), [&](const Point_2& x, const Point_2& y) {
+    return CGAL::compare_distance_to_point(p, x, y) == CGAL::SMALLER;
+  });
+  on_segment.erase(std::unique(on_segment.begin(), on_segment.end()), on_segment.end());
+  on_segment.insert(on_segment.begin(), p);
+  on_segment.push_back(q);
+  for (std::size_t k = 0; domain && k + 1 < on_segment.size(); ++k) {
+    const Point_2 m = CGAL::midpoint(on_segment[k], on_segment[k + 1]);
+    const Face_handle f = cdt.locate(m, lt, li, start);
+    if (!located_in_domain(cdt, f, lt, li))
+      throw Domain_error(what + ": " + segment + " leaves the domain near " + to_string(m));
+  }
+}
+
+// Whether two pieces of one polyline meet where they must not: anywhere if they are not
+// consecutive, beyond their shared end (folding back) if they are.
+template <class Point_2>
+bool pieces_meet(const Point_2& a, const Point_2& b, const Point_2& c, const Point_2& d,
+                 bool consecutive) {
+  if (consecutive)  // b == c
+    return CGAL::collinear(a, b, d) && !CGAL::collinear_are_ordered_along_line(a, b, d);
+  using K = typename CGAL::Kernel_traits<Point_2>::Kernel;
+  return CGAL::do_intersect(typename K::Segment_2(a, b), typename K::Segment_2(c, d));
+}
+
+// The next vertex from u toward w along a constrained edge: w, or a vertex strictly between.
+template <class CDT>
+typename CDT::Vertex_handle next_along(const CDT& cdt, typename CDT::Vertex_handle u,
+                                       typename CDT::Vertex_handle w) {
+  std::vector<typename CDT::Edge> edges;
+  cdt.incident_constraints(u, std::back_inserter(edges));
+  for (const auto& e : edges) {
+    auto x = e.first->vertex(CDT::ccw(e.second));
+    if (x == u) x = e.first->vertex(CDT::cw(e.second));
+    if (x == w ||
+        (CGAL::collinear(u->point(), x->point(), w->point()) &&
+         CGAL::collinear_are_strictly_ordered_along_line(u->point(), x->point(), w->point())))
+      return x;
+  }
+  throw std::logic_error("Constraint_editor_2: a constraint inserted is not in the triangulation");
+}
+
+// The domain flags of the faces `fresh` that a constraint insertion created: those of the old
+// faces beside them across unconstrained edges, then across the new constraint (whose two
+// sides lie in one region, being in the domain), flooding within the new faces.
+template <class CDT, class Inner>
+void flood_domain_marks(const CDT& cdt, const std::unordered_set<typename CDT::Face_handle>& fresh,
+                        const Inner& is_new_constraint) {
+  std::vector<typename CDT::Face_handle> stack;
+  std::unordered_set<typename CDT::Face_handle> done;
+  for (const auto f : fresh)
+    for (int i = 0; i < 3; ++i) {
+      const auto n = f->neighbor(i);
+      if (fresh.count(n) == 0 && !f->is_constrained(i)) {
+        f->set_inside_domain(!cdt.is_infinite(n) && n->is_inside_domain() && !cdt.is_infinite(f));
+        done.insert(f);
+        stack.push_back(f);
+        break;
+      }
+    }
+  for (int pass = 0; pass < 2; ++pass) {
+    while (!stack.empty()) {
+      const auto f = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        const auto n = f->neighbor(i);
+        if (fresh.count(n) == 0 || done.count(n) != 0) continue;
+        if (f->is_constrained(i) && (pass == 0 || !is_new_constraint(f, i))) continue;
+        n->set_inside_domain(f->is_inside_domain() && !cdt.is_infinite(n));
+        done.insert(n);
+        stack.push_back(n);
+      }
+    }
+    for (const auto f : done) stack.push_back(f);  // second pass: across the new constraint
+  }
+  for (const auto f : fresh)
+    if (done.count(f) == 0) f->set_inside_domain(!cdt.is_infinite(f));  // enclosed: in the domain
+}
+
+}  // namespace internal
+}  // namespace CVT_2
+
+#endif  // CVT_2_INTERNAL_CONSTRAINT_EDITS_H
