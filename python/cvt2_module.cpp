@@ -6,6 +6,7 @@
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/Bvd_mesh_2.h>
+#include <CVT_2/Constraint_editor_2.h>
 #include <CVT_2/Cvt_triangulation_2.h>
 #include <CVT_2/IO/read_domain.h>
 #include <CVT_2/IO/write_cells_on_constraints.h>
@@ -826,6 +827,86 @@ std::shared_ptr<Diagram> bounded_voronoi(const std::shared_ptr<const Domain>& do
   return diagram;
 }
 
+// --- constraint edits ---------------------------------------------------------------------------
+
+// A diagram whose constraints change (Constraint_editor_2): each edit returns its report, with
+// cells named by their generators' coordinates (a snapshot's numbering changes with each edit).
+struct Editing {
+  std::shared_ptr<const Domain> domain;
+  std::shared_ptr<CDT> cdt;
+  std::unique_ptr<BVD> bvd;
+  std::unique_ptr<CVT_2::Constraint_editor_2<CDT>> editor;
+  std::vector<Point_2> given;
+  std::vector<std::string> notes;
+
+  Editing(const std::shared_ptr<const Domain>& d, py::handle points_object,
+          std::optional<double> boundary_tolerance)
+      : domain(d), given(to_points(points_object, "points")) {
+    cdt = domain->triangulation();
+    notes = insert_points(*cdt, given, "points", boundary_tolerance);
+    bvd = std::make_unique<BVD>(*cdt);
+    editor = std::make_unique<CVT_2::Constraint_editor_2<CDT>>(*cdt, *bvd);
+  }
+
+  py::dict report() const {
+    const auto& r = editor->report();
+    std::vector<Point_2> changed, added;
+    for (const auto v : r.changed_cells) changed.push_back(v->point());
+    for (const auto v : r.new_vertices) added.push_back(v->point());
+    py::dict out;
+    out["changed_cells"] = to_array(changed);
+    out["new_vertices"] = to_array(added);
+    out["retagged_faces"] = r.retagged_faces;
+    return out;
+  }
+  std::int64_t insert(py::handle points_object) {
+    return std::int64_t(editor->insert_constraint(to_points(points_object, "points")));
+  }
+  std::size_t id(std::int64_t id) const {
+    if (id < 0) throw CVT_2::Domain_error("there is no constraint " + std::to_string(id));
+    return std::size_t(id);
+  }
+  Point_2 point(py::handle object, const std::string& what) const {
+    const std::vector<Point_2> p =
+        to_points(py::array_t<double>::ensure(object).reshape({1, 2}), what);
+    return p.at(0);
+  }
+  py::dict extend(std::int64_t c, py::handle tip, double spacing) {
+    if (!(spacing >= 0) || !std::isfinite(spacing))
+      throw py::value_error("spacing must be a finite number >= 0");
+    editor->extend_constraint(id(c), point(tip, "tip"), spacing);
+    return report();
+  }
+  py::dict move(py::handle from, py::handle to) {
+    const Point_2 p = point(from, "vertex"), q = point(to, "to");
+    CDT::Locate_type lt;
+    int li;
+    const CDT::Face_handle f = cdt->locate(p, lt, li);
+    if (lt != CDT::VERTEX)
+      throw CVT_2::Domain_error("move_constrained_vertex: no vertex at " +
+                                CVT_2::internal::to_string(p));
+    editor->move_constrained_vertex(f->vertex(li), q);
+    return report();
+  }
+  py::dict remove(std::int64_t c) {
+    editor->remove_constraint(id(c));
+    return report();
+  }
+  Array constraint_vertices(std::int64_t c) const {
+    std::vector<Point_2> p;
+    for (const auto v : editor->vertices_in_constraint(id(c))) p.push_back(v->point());
+    return to_array(p);
+  }
+  // A snapshot: the diagram of a copy of the triangulation, which later edits leave alone.
+  std::shared_ptr<Diagram> diagram(std::int64_t threads) const {
+    const unsigned t = unsigned(checked_count(threads, "threads"));
+    auto copy = std::make_shared<CDT>(*cdt);
+    auto d = std::make_shared<Diagram>(std::move(copy), domain, t);
+    d->given = given;
+    return d;
+  }
+};
+
 // --- natural-neighbour coordinates -------------------------------------------------------------
 
 // The natural-neighbour coordinates of `queries` on the bounded Voronoi diagram of the domain and
@@ -1150,6 +1231,22 @@ PYBIND11_MODULE(_cvt2, m) {
                CVT_2::IO::write_cells_on_constraints(os, d.grid(barriers), d.input_items());
              });
            });
+
+  py::class_<Editing, std::shared_ptr<Editing>>(m, "ConstraintEditor")
+      .def(py::init<const std::shared_ptr<const Domain>&, py::handle, std::optional<double>>(),
+           py::arg("domain"), py::arg("points"), py::arg("boundary_tolerance"))
+      .def("insert_constraint", &Editing::insert, py::arg("points"))
+      .def("extend_constraint", &Editing::extend, py::arg("id"), py::arg("tip"), py::arg("spacing"))
+      .def("move_constrained_vertex", &Editing::move, py::arg("vertex"), py::arg("to"))
+      .def("remove_constraint", &Editing::remove, py::arg("id"))
+      .def("report", &Editing::report)
+      .def("constraint_vertices", &Editing::constraint_vertices, py::arg("id"))
+      .def("number_of_constraints",
+           [](const Editing& e) { return e.editor->number_of_constraints(); })
+      .def("is_removed",
+           [](const Editing& e, std::int64_t c) { return e.editor->is_removed(e.id(c)); })
+      .def("diagram", &Editing::diagram, py::arg("threads") = 0)
+      .def_property_readonly("notes", [](const Editing& e) { return e.notes; });
 
   py::class_<Optimization, std::shared_ptr<Optimization>>(m, "Optimization")
       .def_property_readonly("points", [](const Optimization& o) { return to_array(o.points); })

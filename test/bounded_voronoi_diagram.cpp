@@ -839,6 +839,12 @@ void random_edits(const std::string& file, std::size_t points, int edits, unsign
     const double angle = uniform(rng, 0, 6.283185307179586), r = uniform(rng, lo, hi) * h;
     return Point(from.x() + r * std::cos(angle), from.y() + r * std::sin(angle));
   };
+  std::vector<std::pair<Point, Point>> on_axis_edges;
+  for (auto e = cdt.constrained_edges_begin(); e != cdt.constrained_edges_end(); ++e) {
+    const Point& a = e->first->vertex(Cdt::ccw(e->second))->point();
+    const Point& b = e->first->vertex(Cdt::cw(e->second))->point();
+    if (a.x() == b.x() || a.y() == b.y()) on_axis_edges.emplace_back(a, b);
+  }
   std::vector<Editor::Constraint_id> live;
   std::map<std::string, int> done, refused;
   Cells before = all_cells(cdt, bvd);
@@ -853,6 +859,21 @@ void random_edits(const std::string& file, std::size_t points, int edits, unsign
     try {
       if (name == "insert") {
         std::vector<Point> line = random_points_in_domain(cdt, 1, unsigned(rng()));
+        // or from a constrained edge parallel to an axis (a point exactly on it, which splits
+        // it), or from a constrained vertex (a junction)
+        const int from = uniform_int(rng, 0, 3);
+        if (from < 2 && !on_axis_edges.empty()) {
+          const auto& [a, b] =
+              on_axis_edges[std::size_t(uniform_int(rng, 0, int(on_axis_edges.size()) - 1))];
+          const double t = uniform(rng, 0.1, 0.9);
+          line[0] = a.x() == b.x() ? Point(a.x(), a.y() + t * (b.y() - a.y()))
+                                   : Point(a.x() + t * (b.x() - a.x()), a.y());
+        } else if (from == 2) {
+          std::vector<Point> constrained;
+          for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+            if (cdt.are_there_incident_constraints(v)) constrained.push_back(v->point());
+          line[0] = constrained[std::size_t(uniform_int(rng, 0, int(constrained.size()) - 1))];
+        }
         for (int i = uniform_int(rng, 1, 3); i > 0; --i)
           line.push_back(random_step(line.back(), 0.5, 3));
         live.push_back(editor.insert_constraint(line));
@@ -885,6 +906,15 @@ void random_edits(const std::string& file, std::size_t points, int edits, unsign
       if (std::find(changed.begin(), changed.end(), v) == changed.end() && after.at(v) != cell)
         ++unreported;
     CHECK(unreported == 0);
+    if (unreported != 0 && std::getenv("CVT_2_EDIT_DEBUG")) {
+      std::cout << "edit " << k << " " << name << " refused=" << refused[name] << "\n";
+      for (const auto& [v, cell] : before)
+        if (std::find(changed.begin(), changed.end(), v) == changed.end() && after.at(v) != cell)
+          std::cout << "  " << v->point()
+                    << " constrained=" << cdt.are_there_incident_constraints(v) << " cell "
+                    << cell.size() << " -> " << after.at(v).size() << "\n";
+      for (const auto v : changed) std::cout << "  reported " << v->point() << "\n";
+    }
     before = after;
     if (k % 25 == 24) check_diagram(bvd, 100, seed + unsigned(k));
   }

@@ -5,6 +5,7 @@
 
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/exceptions.h>
+#include <CVT_2/internal/Handle_set.h>
 #include <CVT_2/internal/constraint_edits.h>
 #include <CVT_2/internal/delaunay_flips.h>
 #include <CVT_2/internal/move_vertex.h>
@@ -20,7 +21,6 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -87,7 +87,9 @@ class Constraint_editor_2 {
     m_polylines.emplace_back();
     m_removed.push_back(false);
     std::vector<Vertex_handle> vertices;
-    for (const Point_2& p : path) vertices.push_back(insert_point(p));
+    for (const Point_2& p : path)
+      vertices.push_back(
+          insert_point(p, vertices.empty() ? Face_handle() : vertices.back()->face()));
     m_polylines[id].push_back(vertices.front());
     for (std::size_t i = 0; i + 1 < vertices.size(); ++i)
       insert_segment(id, vertices[i], vertices[i + 1]);
@@ -112,11 +114,12 @@ class Constraint_editor_2 {
       path.emplace_back(from.x() + t * (tip.x() - from.x()), from.y() + t * (tip.y() - from.y()));
     }
     path.push_back(tip);
-    check_path(path, "the extension of constraint " + std::to_string(id));
+    check_path(path, "the extension of constraint " + std::to_string(id),
+               m_polylines[id].back()->face());
     begin_edit();
     Vertex_handle previous = m_polylines[id].back();
     for (std::size_t k = 1; k < path.size(); ++k) {
-      const Vertex_handle v = insert_point(path[k]);
+      const Vertex_handle v = insert_point(path[k], previous->face());
       insert_segment(id, previous, v);
       previous = v;
     }
@@ -165,7 +168,7 @@ class Constraint_editor_2 {
       internal::check_segment(
           m_cdt, x->point(), to,
           [&](Vertex_handle a, Vertex_handle b) { return constraint_name(a, b); },
-          what + " cannot go to " + internal::to_string(to), v, !boundary);
+          what + " cannot go to " + internal::to_string(to), v, !boundary, x->face());
     }
     for (std::size_t i = 0; i < ends.size(); ++i)
       for (std::size_t j = 0; j < i; ++j)
@@ -258,10 +261,11 @@ class Constraint_editor_2 {
   // Checks, before anything changes, that the polyline `path` can be inserted: every piece
   // lies in the closed domain and meets the constraints and the other pieces only at vertices
   // or at its own ends (internal::check_segment).
-  void check_path(const std::vector<Point_2>& path, const std::string& what) const {
+  void check_path(const std::vector<Point_2>& path, const std::string& what,
+                  Face_handle hint = Face_handle()) const {
     const auto name = [&](Vertex_handle a, Vertex_handle b) { return constraint_name(a, b); };
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-      internal::check_segment(m_cdt, path[i], path[i + 1], name, what);
+      internal::check_segment(m_cdt, path[i], path[i + 1], name, what, Vertex_handle(), true, hint);
       for (std::size_t j = 0; j < i; ++j)
         if (internal::pieces_meet(path[j], path[j + 1], path[i], path[i + 1], j + 1 == i))
           throw Domain_error(what + " crosses itself: " + internal::to_string(path[j]) + " - " +
@@ -284,10 +288,10 @@ class Constraint_editor_2 {
 
   // Inserts p (a vertex already there is returned as is), marks the new faces' domain flag as
   // the face or the side of the edge p was in, and splits the constraint p lies on, if any.
-  Vertex_handle insert_point(const Point_2& p) {
+  Vertex_handle insert_point(const Point_2& p, Face_handle hint = Face_handle()) {
     typename CDT::Locate_type lt;
     int li;
-    const Face_handle f = m_cdt.locate(p, lt, li);
+    const Face_handle f = m_cdt.locate(p, lt, li, hint);
     if (lt == CDT::VERTEX) return f->vertex(li);
     // check_path() made sure that p is in the closed domain
     Vertex_handle a, b;
@@ -349,10 +353,11 @@ class Constraint_editor_2 {
       const Vertex_handle x = internal::next_along(m_cdt, chain.back(), w);
       chain.push_back(x);
     }
-    std::unordered_set<Face_handle> fresh(created.begin(), created.end());
-    std::unordered_set<Edge_key, internal::Pair_hash> chain_keys;
+    internal::Handle_set<Face_handle> fresh;
+    for (const Face_handle f : created) fresh.insert(f);
+    std::vector<Edge_key> chain_keys;
     for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
-      chain_keys.insert(key(chain[i], chain[i + 1]));
+      chain_keys.push_back(key(chain[i], chain[i + 1]));
       m_edge_owner[key(chain[i], chain[i + 1])] = id;
       m_polylines[id].push_back(chain[i + 1]);
       Face_handle f;
@@ -363,7 +368,8 @@ class Constraint_editor_2 {
       }
     }
     internal::flood_domain_marks(m_cdt, fresh, [&](Face_handle f, int i) {
-      return chain_keys.count(key(f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i)))) != 0;
+      const Edge_key k = key(f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i)));
+      return std::find(chain_keys.begin(), chain_keys.end(), k) != chain_keys.end();
     });
     m_modified.insert(m_modified.end(), created.begin(), created.end());
   }
@@ -430,7 +436,7 @@ class Constraint_editor_2 {
       }
     }
     const auto& faces = m_cdt.tds().faces();
-    std::unordered_set<Face_handle> fresh;
+    internal::Handle_set<Face_handle> fresh;
     for (const Face_handle f : m_modified)
       if (faces.is_used(f)) fresh.insert(f);
     internal::flood_domain_marks(m_cdt, fresh, [&](Face_handle f, int i) {
@@ -471,42 +477,55 @@ class Constraint_editor_2 {
   // a move moved (its edges' tags change though their vertices do not).
   void finish_edit(Vertex_handle moved = Vertex_handle()) {
     const auto& faces = m_cdt.tds().faces();
-    std::unordered_set<Face_handle> modified, region;
+    m_alive.clear();
+    m_region.clear();
     for (const Face_handle f : m_modified)
-      if (faces.is_used(f)) modified.insert(f);
+      if (faces.is_used(f)) m_alive.insert(f);
     for (const Face_handle f : m_before)
-      if (faces.is_used(f)) region.insert(f);
+      if (faces.is_used(f)) m_region.insert(f);
     // the faces the constrained edges around the changed faces blind: their tag may be stale
-    std::unordered_set<Edge_key, internal::Pair_hash> edges;
-    for (const Face_handle f : modified)
+    m_edges.clear();
+    for (const Face_handle f : m_alive)
       for (int i = 0; i < 3; ++i)
-        if (f->is_constrained(i) && edges.insert(key(Edge(f, i))).second)
-          internal::faces_blinded_by(m_cdt, m_diagram.geom_traits(), Edge(f, i), region, m_seen,
-                                     m_stack);
-    region.insert(modified.begin(), modified.end());
-    // the tags of the old faces before, by their edges' vertices (a stale one is a change)
-    std::vector<std::pair<Face_handle, Edge_key>> old;
-    for (const Face_handle f : region)
-      if (modified.count(f) == 0)
-        old.emplace_back(f, f->is_blinded() && faces.is_used(f->blinding_edge().first)
-                                ? key(f->blinding_edge())
-                                : Edge_key());
-    internal::retag_faces(m_cdt, m_diagram.geom_traits(), region);
-    std::unordered_set<Vertex_handle> changed;
+        if (f->is_constrained(i)) m_edges.emplace_back(key(Edge(f, i)), Edge(f, i));
+    std::sort(m_edges.begin(), m_edges.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (std::size_t i = 0; i < m_edges.size(); ++i)
+      if (i == 0 || m_edges[i].first != m_edges[i - 1].first)
+        internal::faces_blinded_by(m_cdt, m_diagram.geom_traits(), m_edges[i].second, m_region,
+                                   m_seen, m_stack);
+    // the tags of the old faces before, by their edges' vertices; one whose edge's face the
+    // edit changed (gone, or another edge at that index now) counts as changed
+    m_old.clear();
+    for (const Face_handle f : m_region)
+      if (!m_alive.contains(f)) {
+        if (!f->is_blinded()) {
+          m_old.emplace_back(f, Edge_key());
+        } else if (faces.is_used(f->blinding_edge().first) &&
+                   !m_alive.contains(f->blinding_edge().first)) {
+          m_old.emplace_back(f, key(f->blinding_edge()));
+        } else {
+          m_old.emplace_back(f, Edge_key(m_cdt.infinite_vertex(), m_cdt.infinite_vertex()));
+        }
+      }
+    for (const Face_handle f : m_alive) m_region.insert(f);
+    internal::retag_faces(m_cdt, m_diagram.geom_traits(), m_region, m_seen, m_stack);
+    m_changed.clear();
     const auto add_face = [&](Face_handle f) {
       for (int i = 0; i < 3; ++i)
-        if (!m_cdt.is_infinite(f->vertex(i))) changed.insert(f->vertex(i));
+        if (!m_cdt.is_infinite(f->vertex(i))) m_changed.push_back(f->vertex(i));
     };
-    for (const Face_handle f : modified) add_face(f);
-    for (const auto& [f, was] : old) {
+    for (const Face_handle f : m_alive) add_face(f);
+    for (const auto& [f, was] : m_old) {
       const Edge_key now = f->is_blinded() ? key(f->blinding_edge()) : Edge_key();
       if (now != was || (moved != Vertex_handle() && (now.first == moved || now.second == moved)))
         add_face(f);
     }
-    m_report.changed_cells.assign(changed.begin(), changed.end());
-    std::sort(m_report.changed_cells.begin(), m_report.changed_cells.end(),
-              [](Vertex_handle a, Vertex_handle b) { return a->point() < b->point(); });
-    m_report.retagged_faces = region.size();
+    const auto by_point = [](Vertex_handle a, Vertex_handle b) { return a->point() < b->point(); };
+    std::sort(m_changed.begin(), m_changed.end(), by_point);
+    m_changed.erase(std::unique(m_changed.begin(), m_changed.end()), m_changed.end());
+    m_report.changed_cells.assign(m_changed.begin(), m_changed.end());
+    m_report.retagged_faces = m_region.size();
     m_diagram.tags_changed();
   }
 
@@ -516,10 +535,14 @@ class Constraint_editor_2 {
   std::vector<bool> m_removed;
   std::map<Edge_key, Constraint_id> m_edge_owner;  // the edges of the constraints made here
   Edit_report m_report;
-  std::vector<Face_handle> m_modified;       // faces the edit created or changed (some may be gone)
-  std::unordered_set<Face_handle> m_before;  // faces blinded by edges that went or moved
-  std::unordered_set<Face_handle> m_seen;    // scratch
-  std::vector<Face_handle> m_stack;          // scratch
+  std::vector<Face_handle> m_modified;  // faces the edit created or changed (some may be gone)
+  internal::Handle_set<Face_handle> m_before;  // faces blinded by edges that went or moved
+  // scratch of finish_edit() and the walks
+  internal::Handle_set<Face_handle> m_alive, m_region, m_seen;
+  std::vector<Face_handle> m_stack;
+  std::vector<std::pair<Edge_key, Edge>> m_edges;
+  std::vector<std::pair<Face_handle, Edge_key>> m_old;
+  std::vector<Vertex_handle> m_changed;
 };
 
 }  // namespace CVT_2

@@ -47,6 +47,7 @@ from ._cvt2 import DomainError, ParseError, __version__
 
 __all__ = [
     "BoundedVoronoi",
+    "ConstraintEditor",
     "CsrMatrix",
     "Domain",
     "DomainError",
@@ -548,6 +549,70 @@ def natural_neighbours(domain, nodes, queries, method="sibson", threads=0, *, bo
         matrix = scipy.sparse.csr_matrix((m["data"], m["indices"], m["indptr"]), shape=m["shape"])
     matrix.inside = m["inside"]
     return matrix
+
+
+class ConstraintEditor:
+    """A bounded Voronoi diagram whose constraints change: cracks that grow, slits inserted,
+    moved and removed, with work local to each edit (``CVT_2::Constraint_editor_2``). Built from
+    a domain and ``points`` (float (n, 2)) as :func:`bounded_voronoi` is.
+
+    Each edit returns its report, a dict: ``changed_cells`` float (k, 2), the generators whose
+    cells changed (the rows a solver assembles again, named by their coordinates, since a
+    snapshot's numbering changes with each edit); ``new_vertices`` float (m, 2), the vertices
+    it inserted; ``retagged_faces``, how many faces were tagged again. Polylines inserted here
+    get ids 0, 1, ... in order; the domain's own constraints have none (their vertices can
+    move). A point outside the domain, or an edge that would cross another constraint off a
+    vertex, raises DomainError naming both, and changes nothing.
+
+    :meth:`bounded_voronoi` takes a snapshot (a :class:`BoundedVoronoi`) that later edits
+    leave alone.
+    """
+
+    def __init__(self, domain, points, *, boundary_tolerance=None):
+        self._domain = domain
+        self._impl = _cvt2.ConstraintEditor(_impl(domain), points, _tolerance(boundary_tolerance))
+
+    def insert_constraint(self, points) -> int:
+        """Inserts the polyline through ``points`` (float (k, 2), k >= 2); returns its id."""
+        return self._impl.insert_constraint(points)
+
+    def extend_constraint(self, id, tip, spacing=0.0) -> dict:
+        """Grows constraint ``id`` from its last vertex to ``tip``, with vertices at most
+        ``spacing`` apart on the way if it is positive; a tip on another constraint is inserted
+        on it. Returns the report."""
+        return self._impl.extend_constraint(_count(id, "id"), tip, float(spacing))
+
+    def move_constrained_vertex(self, vertex, to) -> dict:
+        """Moves the constrained vertex at ``vertex`` (x, y) to ``to``; its constraints follow,
+        free generators stay. Returns the report."""
+        return self._impl.move_constrained_vertex(vertex, to)
+
+    def remove_constraint(self, id) -> dict:
+        """Removes constraint ``id``; its vertices stay, as free generators where no other
+        constraint holds them. Returns the report."""
+        return self._impl.remove_constraint(_count(id, "id"))
+
+    @property
+    def report(self) -> dict:
+        """The last edit's report."""
+        return self._impl.report()
+
+    def constraint_vertices(self, id) -> np.ndarray:
+        """Float (k, 2): the vertices of constraint ``id`` in order (a removed one's as they
+        were)."""
+        return self._impl.constraint_vertices(_count(id, "id"))
+
+    @property
+    def number_of_constraints(self) -> int:
+        """The constraints inserted here, removed ones included (the next id)."""
+        return self._impl.number_of_constraints()
+
+    def is_removed(self, id) -> bool:
+        return self._impl.is_removed(_count(id, "id"))
+
+    def bounded_voronoi(self, threads=0) -> "BoundedVoronoi":
+        """The diagram as it is now, as :func:`bounded_voronoi` returns it."""
+        return BoundedVoronoi(self._impl.diagram(_count(threads, "threads")), self._domain)
 
 
 class CsrMatrix:

@@ -4,6 +4,7 @@
 #define CVT_2_INTERNAL_CONSTRAINT_EDITS_H
 
 #include <CVT_2/exceptions.h>
+#include <CVT_2/internal/Handle_set.h>
 #include <CVT_2/internal/to_string.h>
 #include <CVT_2/mark_domain_2.h>
 
@@ -16,21 +17,11 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
 namespace CVT_2 {
 namespace internal {
-
-// A hash of a pair of handles (an edge by its two vertices).
-struct Pair_hash {
-  template <class H>
-  std::size_t operator()(const std::pair<H, H>& p) const {
-    const std::size_t a = std::hash<H>()(p.first), b = std::hash<H>()(p.second);
-    return a ^ (b + 0x9e3779b97f4a7c15ULL + (a << 6) + (a >> 2));
-  }
-};
 
 // Whether the point of locate(p) -> (f, lt, li) lies in the closed domain.
 template <class CDT>
@@ -58,18 +49,36 @@ bool located_in_domain(const CDT& cdt, typename CDT::Face_handle f, typename CDT
 // piece between the vertices on the segment locates a constructed midpoint.
 // The constrained edges of `ignored` (a vertex about to move) do not count; with `domain`
 // false, neither does the domain.
+// Whether the closed triangle abc (counterclockwise) and the closed segment [p, q] meet: no
+// line through a side of either separates them (exact orientation tests).
+template <class Orientation, class Point_2>
+bool triangle_meets_segment(const Orientation& orientation, const Point_2& a, const Point_2& b,
+                            const Point_2& c, const Point_2& p, const Point_2& q) {
+  for (const Point_2* v : {&a, &b, &c})  // an end of the segment: no degenerate test
+    if (*v == p || *v == q) return true;
+  const int oa = orientation(p, q, a), ob = orientation(p, q, b), oc = orientation(p, q, c);
+  if ((oa > 0 && ob > 0 && oc > 0) || (oa < 0 && ob < 0 && oc < 0)) return false;
+  const Point_2* v[3] = {&a, &b, &c};
+  for (int i = 0; i < 3; ++i) {
+    const Point_2 &u = *v[i], &w = *v[(i + 1) % 3];
+    if (orientation(u, w, p) < 0 && orientation(u, w, q) < 0) return false;
+  }
+  return true;
+}
+
 template <class CDT, class Name>
 void check_segment(const CDT& cdt, const typename CDT::Point_2& p, const typename CDT::Point_2& q,
                    const Name& name, const std::string& what,
                    typename CDT::Vertex_handle ignored = typename CDT::Vertex_handle(),
-                   bool domain = true) {
+                   bool domain = true,
+                   typename CDT::Face_handle hint = typename CDT::Face_handle()) {
   using Point_2 = typename CDT::Point_2;
   using Face_handle = typename CDT::Face_handle;
   const auto orientation = cdt.geom_traits().orientation_2_object();
   const std::string segment = to_string(p) + " - " + to_string(q);
   typename CDT::Locate_type lt;
   int li;
-  const Face_handle start = cdt.locate(p, lt, li);
+  const Face_handle start = cdt.locate(p, lt, li, hint);
   if (cdt.dimension() < 2 || cdt.is_infinite(start))
     throw Domain_error(what + ": " + to_string(p) + " is outside the triangulation");
   for (const Point_2* x : {&p, &q}) {
@@ -77,16 +86,16 @@ void check_segment(const CDT& cdt, const typename CDT::Point_2& p, const typenam
     if (domain && !located_in_domain(cdt, f, lt, li))
       throw Domain_error(what + ": " + to_string(*x) + " is outside the domain");
   }
-  const typename CDT::Geom_traits::Segment_2 s(p, q);
   std::vector<Face_handle> stack{start};
-  std::unordered_set<Face_handle> seen{start};
+  Handle_set<Face_handle> seen;
+  seen.insert(start);
   std::vector<Point_2> on_segment;
   while (!stack.empty()) {
     const Face_handle h = stack.back();
     stack.pop_back();
     for (int i = 0; i < 3; ++i) {
       const auto& x = h->vertex(i)->point();
-      if (orientation(p, q, x) == CGAL::COLLINEAR &&
+      if (x != p && x != q && orientation(p, q, x) == CGAL::COLLINEAR &&
           CGAL::collinear_are_strictly_ordered_along_line(p, x, q))
         on_segment.push_back(x);
       if (!h->is_constrained(i) || h->vertex(CDT::ccw(i)) == ignored ||
@@ -94,6 +103,17 @@ void check_segment(const CDT& cdt, const typename CDT::Point_2& p, const typenam
         continue;
       const auto& a = h->vertex(CDT::ccw(i))->point();
       const auto& b = h->vertex(CDT::cw(i))->point();
+      const bool a_end = a == p || a == q, b_end = b == p || b == q;
+      if (a_end || b_end) {  // an edge at an end of [p, q]: only running along it is wrong
+        const Point_2& shared = a_end ? a : b;
+        const Point_2& other = a_end ? b : a;
+        const Point_2& far = shared == p ? q : p;
+        if ((a_end && b_end) || (orientation(shared, far, other) == CGAL::COLLINEAR &&
+                                 !CGAL::collinear_are_ordered_along_line(other, shared, far)))
+          throw Domain_error(what + ": " + segment + " runs along " +
+                             name(h->vertex(CDT::ccw(i)), h->vertex(CDT::cw(i))));
+        continue;
+      }
       const int o1 = orientation(p, q, a), o2 = orientation(p, q, b);
       const int o3 = orientation(a, b, p), o4 = orientation(a, b, q);
       if (o1 * o2 < 0 && o3 * o4 < 0)
@@ -109,7 +129,9 @@ void check_segment(const CDT& cdt, const typename CDT::Point_2& p, const typenam
     }
     for (int i = 0; i < 3; ++i) {
       const Face_handle n = h->neighbor(i);
-      if (!cdt.is_infinite(n) && seen.count(n) == 0 && CGAL::do_intersect(cdt.triangle(n), s)) {
+      if (!cdt.is_infinite(n) && !seen.contains(n) &&
+          triangle_meets_segment(orientation, n->vertex(0)->point(), n->vertex(1)->point(),
+                                 n->vertex(2)->point(), p, q)) {
         seen.insert(n);
         stack.push_back(n);
       }
@@ -162,14 +184,14 @@ typename CDT::Vertex_handle next_along(const CDT& cdt, typename CDT::Vertex_hand
 // faces beside them across unconstrained edges, then across the new constraint (whose two
 // sides lie in one region, being in the domain), flooding within the new faces.
 template <class CDT, class Inner>
-void flood_domain_marks(const CDT& cdt, const std::unordered_set<typename CDT::Face_handle>& fresh,
+void flood_domain_marks(const CDT& cdt, const Handle_set<typename CDT::Face_handle>& fresh,
                         const Inner& is_new_constraint) {
   std::vector<typename CDT::Face_handle> stack;
-  std::unordered_set<typename CDT::Face_handle> done;
+  Handle_set<typename CDT::Face_handle> done;
   for (const auto f : fresh)
     for (int i = 0; i < 3; ++i) {
       const auto n = f->neighbor(i);
-      if (fresh.count(n) == 0 && !f->is_constrained(i)) {
+      if (!fresh.contains(n) && !f->is_constrained(i)) {
         f->set_inside_domain(!cdt.is_infinite(n) && n->is_inside_domain() && !cdt.is_infinite(f));
         done.insert(f);
         stack.push_back(f);
@@ -182,7 +204,7 @@ void flood_domain_marks(const CDT& cdt, const std::unordered_set<typename CDT::F
       stack.pop_back();
       for (int i = 0; i < 3; ++i) {
         const auto n = f->neighbor(i);
-        if (fresh.count(n) == 0 || done.count(n) != 0) continue;
+        if (!fresh.contains(n) || done.contains(n)) continue;
         if (f->is_constrained(i) && (pass == 0 || !is_new_constraint(f, i))) continue;
         n->set_inside_domain(f->is_inside_domain() && !cdt.is_infinite(n));
         done.insert(n);
@@ -192,7 +214,7 @@ void flood_domain_marks(const CDT& cdt, const std::unordered_set<typename CDT::F
     for (const auto f : done) stack.push_back(f);  // second pass: across the new constraint
   }
   for (const auto f : fresh)
-    if (done.count(f) == 0) f->set_inside_domain(!cdt.is_infinite(f));  // enclosed: in the domain
+    if (!done.contains(f)) f->set_inside_domain(!cdt.is_infinite(f));  // enclosed: in the domain
 }
 
 }  // namespace internal

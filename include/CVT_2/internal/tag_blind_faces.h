@@ -3,6 +3,7 @@
 #ifndef CVT_2_INTERNAL_TAG_BLIND_FACES_H
 #define CVT_2_INTERNAL_TAG_BLIND_FACES_H
 
+#include <CVT_2/internal/Handle_set.h>
 #include <CVT_2/internal/parallel/Face_chunks.h>
 
 #include <CGAL/enum.h>
@@ -143,7 +144,7 @@ std::size_t tag_blind_faces_from(const CDT& cdt, const Traits& traits,
 // from each of its domain sides. `seen` and `stack` are scratch.
 template <class CDT, class Traits, class Faces>
 void faces_blinded_by(const CDT& cdt, const Traits& traits, const typename CDT::Edge& e, Faces& out,
-                      std::unordered_set<typename CDT::Face_handle>& seen,
+                      Handle_set<typename CDT::Face_handle>& seen,
                       std::vector<typename CDT::Face_handle>& stack) {
   const auto is_blinded = traits.is_blinded_2_object();
   const auto& a = e.first->vertex(CDT::ccw(e.second))->point();
@@ -155,7 +156,7 @@ void faces_blinded_by(const CDT& cdt, const Traits& traits, const typename CDT::
   while (!stack.empty()) {
     const auto f = stack.back();
     stack.pop_back();
-    if (!seen.insert(f).second) continue;
+    if (!seen.insert(f)) continue;
     if (!is_blinded(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(), a, b))
       continue;
     out.insert(f);
@@ -166,37 +167,51 @@ void faces_blinded_by(const CDT& cdt, const Traits& traits, const typename CDT::
   }
 }
 
+// Whether the segment [a, b] passes within sqrt(tol2) of the segment [p, q], in floating point
+// (the walk below widens by tol2 what it follows, the exact predicate decides).
+inline bool segments_near(double px, double py, double qx, double qy, double ax, double ay,
+                          double bx, double by, double tol2) {
+  const auto cross = [](double ux, double uy, double vx, double vy) { return ux * vy - uy * vx; };
+  const double d1 = cross(qx - px, qy - py, ax - px, ay - py);
+  const double d2 = cross(qx - px, qy - py, bx - px, by - py);
+  const double d3 = cross(bx - ax, by - ay, px - ax, py - ay);
+  const double d4 = cross(bx - ax, by - ay, qx - ax, qy - ay);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+    return true;  // they cross
+  const auto point_segment = [](double x, double y, double ux, double uy, double vx, double vy) {
+    const double dx = vx - ux, dy = vy - uy, len2 = dx * dx + dy * dy;
+    double t = len2 > 0 ? ((x - ux) * dx + (y - uy) * dy) / len2 : 0;
+    t = t < 0 ? 0 : (t > 1 ? 1 : t);
+    const double ex = ux + t * dx - x, ey = uy + t * dy - y;
+    return ex * ex + ey * ey;
+  };
+  return std::min({point_segment(ax, ay, px, py, qx, qy), point_segment(bx, by, px, py, qx, qy),
+                   point_segment(px, py, ax, ay, bx, by), point_segment(qx, qy, ax, ay, bx, by)}) <=
+         tol2;
+}
+
 // The tag Algorithm 1 gives the domain face f, found from f alone: among the constrained edges
-// with a side in the domain that blind f, the first met (blinds_first), on the side
-// side_toward() picks; false if none blinds f. An edge that blinds f meets the segment from
-// f's centroid to its circumcenter, inside f's circumdisk, so a walk over the faces whose edges
-// meet the disk (widened for the rounded centre) finds them all. That this is Algorithm 1's
-// tag rests on what Algorithm 1 rests on: the faces an edge blinds are connected to it.
+// that blind f, the first met (blinds_first), on the side side_toward() picks; false if none
+// blinds f. The first edge met on the way from f's centroid g to its circumcenter c is reached
+// from f through unconstrained edges that the way crosses: a walk through the faces whose
+// edges pass near [g, c] (widened for the rounded g and c) finds it, in as many faces as the
+// way crosses. That this is Algorithm 1's tag rests on what Algorithm 1 rests on: the faces an
+// edge blinds are connected to it.
 template <class CDT, class Traits>
 bool first_blinding_edge(const CDT& cdt, const Traits& traits, typename CDT::Face_handle f,
-                         typename CDT::Edge& first,
-                         std::unordered_set<typename CDT::Face_handle>& seen,
+                         typename CDT::Edge& first, Handle_set<typename CDT::Face_handle>& seen,
                          std::vector<typename CDT::Face_handle>& stack) {
   using Point_2 = typename CDT::Point_2;
   const auto is_blinded = traits.is_blinded_2_object();
   const Point_2 &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
   const Point_2 c = traits.construct_circumcenter_2_object()(p, q, r);
-  const double cx = CGAL::to_double(c.x()), cy = CGAL::to_double(c.y());
-  const auto d2 = [&](const Point_2& x) {
-    const double dx = CGAL::to_double(x.x()) - cx, dy = CGAL::to_double(x.y()) - cy;
-    return dx * dx + dy * dy;
-  };
-  const double r2 = std::max({d2(p), d2(q), d2(r)}) * (1 + 1e-6);
-  const auto meets_disk = [&](const Point_2& a, const Point_2& b) {
-    const double ax = CGAL::to_double(a.x()) - cx, ay = CGAL::to_double(a.y()) - cy;
-    const double dx = CGAL::to_double(b.x()) - CGAL::to_double(a.x());
-    const double dy = CGAL::to_double(b.y()) - CGAL::to_double(a.y());
-    const double len2 = dx * dx + dy * dy;
-    double t = len2 > 0 ? -(ax * dx + ay * dy) / len2 : 0;
-    t = t < 0 ? 0 : (t > 1 ? 1 : t);
-    const double x = ax + t * dx, y = ay + t * dy;
-    return x * x + y * y <= r2;
-  };
+  const auto x = [](const Point_2& a) { return CGAL::to_double(a.x()); };
+  const auto y = [](const Point_2& a) { return CGAL::to_double(a.y()); };
+  const double gx = (x(p) + x(q) + x(r)) / 3, gy = (y(p) + y(q) + y(r)) / 3;
+  const double cx = x(c), cy = y(c);
+  const double size = std::abs(cx - gx) + std::abs(cy - gy) + std::abs(x(q) - x(p)) +
+                      std::abs(y(q) - y(p)) + std::abs(x(r) - x(p)) + std::abs(y(r) - y(p));
+  const double tol2 = (1e-7 * size) * (1e-7 * size);
   bool found = false;
   seen.clear();
   stack.assign(1, f);
@@ -206,17 +221,17 @@ bool first_blinding_edge(const CDT& cdt, const Traits& traits, typename CDT::Fac
     stack.pop_back();
     for (int i = 0; i < 3; ++i) {
       const auto va = h->vertex(CDT::ccw(i)), vb = h->vertex(CDT::cw(i));
-      if (cdt.is_infinite(va) || cdt.is_infinite(vb) || !meets_disk(va->point(), vb->point()))
-        continue;
-      const auto n = h->neighbor(i);
-      if (h->is_constrained(i) && ((!cdt.is_infinite(h) && h->is_inside_domain()) ||
-                                   (!cdt.is_infinite(n) && n->is_inside_domain()))) {
+      if (cdt.is_infinite(va) || cdt.is_infinite(vb)) continue;
+      const Point_2 &a = va->point(), &b = vb->point();
+      if (!segments_near(gx, gy, cx, cy, x(a), y(a), x(b), y(b), tol2)) continue;
+      if (h->is_constrained(i)) {
         const typename CDT::Edge e(h, i);
-        if (is_blinded(p, q, r, va->point(), vb->point()) &&
-            (!found || blinds_first<CDT>(traits, f, e, first)))
+        if (is_blinded(p, q, r, a, b) && (!found || blinds_first<CDT>(traits, f, e, first)))
           first = e, found = true;
+        continue;
       }
-      if (!cdt.is_infinite(n) && seen.insert(n).second) stack.push_back(n);
+      const auto n = h->neighbor(i);
+      if (!cdt.is_infinite(n) && seen.insert(n)) stack.push_back(n);
     }
   }
   if (found) first = side_toward(cdt, f, first);
@@ -224,11 +239,11 @@ bool first_blinding_edge(const CDT& cdt, const Traits& traits, typename CDT::Fac
 }
 
 // Tags the faces `faces` again, each from itself (first_blinding_edge()); the other faces keep
-// their tags. Returns how many of them are blinded.
+// their tags. Returns how many of them are blinded. `seen` and `stack` are scratch.
 template <class CDT, class Traits, class Faces>
-std::size_t retag_faces(const CDT& cdt, const Traits& traits, const Faces& faces) {
-  std::unordered_set<typename CDT::Face_handle> seen;
-  std::vector<typename CDT::Face_handle> stack;
+std::size_t retag_faces(const CDT& cdt, const Traits& traits, const Faces& faces,
+                        Handle_set<typename CDT::Face_handle>& seen,
+                        std::vector<typename CDT::Face_handle>& stack) {
   std::size_t count = 0;
   for (const auto f : faces) {
     typename CDT::Edge e;

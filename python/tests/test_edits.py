@@ -1,0 +1,78 @@
+# Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+# cvt2.ConstraintEditor: after a sequence of edits, the diagram is the one built from scratch on
+# the equivalent domain (the remaining polylines as inner constraints, a removed polyline's
+# vertices as free points); a refused edit changes nothing; the reports are numpy arrays.
+import numpy as np
+import pytest
+
+import cvt2
+
+SQUARE = np.array([[0, 0], [10, 0], [10, 10], [0, 10]], dtype=float)
+RING = np.array([[0, 1], [1, 2], [2, 3], [3, 0]])
+
+
+def cells_by_generator(diagram):
+    """Area and centroid of each cell, rows sorted by generator."""
+    order = np.lexsort((diagram.points[:, 1], diagram.points[:, 0]))
+    return diagram.points[order], diagram.areas[order], diagram.centroids[order]
+
+
+def scratch(editor, points, removed_points):
+    vertices, segments = [SQUARE], [RING]
+    n = len(SQUARE)
+    for i in range(editor.number_of_constraints):
+        if editor.is_removed(i):
+            continue
+        line = editor.constraint_vertices(i)
+        vertices.append(line)
+        segments.append(np.column_stack([np.arange(n, n + len(line) - 1), np.arange(n + 1, n + len(line))]))
+        n += len(line)
+    domain = cvt2.Domain(np.vstack(vertices), np.vstack(segments))
+    return cvt2.bounded_voronoi(domain, np.vstack([points] + removed_points))
+
+
+def test_edits_match_a_rebuild():
+    rng = np.random.default_rng(3)
+    points = rng.uniform(0, 10, (800, 2))
+    editor = cvt2.ConstraintEditor(cvt2.Domain(SQUARE, RING), points)
+    crack = editor.insert_constraint([[0, 3.05], [0.7, 3.2]])
+    assert crack == 0
+    for k in range(1, 12):
+        report = editor.extend_constraint(crack, [0.7 + 0.35 * k, 3.2 + 0.1 * np.sin(k)], spacing=0.2)
+        assert report["changed_cells"].shape[1] == 2 and len(report["changed_cells"]) > 0
+        assert report["new_vertices"].shape == (len(report["new_vertices"]), 2)
+        assert report["retagged_faces"] > 0
+    slit = editor.insert_constraint([[5, 8], [6, 8.6], [7, 8.1]])
+    editor.move_constrained_vertex([6, 8.6], [6.1, 8.2])  # sweeps over free generators
+    assert np.allclose(editor.constraint_vertices(slit)[1], [6.1, 8.2])
+    other = editor.insert_constraint([[2, 7], [3, 6]])
+    removed = [editor.constraint_vertices(other)]
+    editor.remove_constraint(other)
+    assert editor.is_removed(other)
+    got = cells_by_generator(editor.bounded_voronoi())
+    want = cells_by_generator(scratch(editor, points, removed))
+    assert len(got[0]) == len(want[0])
+    assert np.array_equal(got[0], want[0])
+    assert np.allclose(got[1], want[1], rtol=1e-9, atol=1e-12)
+    assert np.allclose(got[2], want[2], rtol=1e-9, atol=1e-12)
+    assert abs(got[1].sum() - 100) < 1e-9
+
+
+def test_refused_edits_change_nothing():
+    rng = np.random.default_rng(4)
+    editor = cvt2.ConstraintEditor(cvt2.Domain(SQUARE, RING), rng.uniform(0, 10, (300, 2)))
+    editor.insert_constraint([[1, 1], [3, 3]])
+    before = cells_by_generator(editor.bounded_voronoi())
+    with pytest.raises(cvt2.DomainError, match=r"crosses constraint 0"):
+        editor.insert_constraint([[1, 3], [3, 1]])
+    with pytest.raises(cvt2.DomainError, match=r"outside the domain"):
+        editor.extend_constraint(0, [12, 3])
+    with pytest.raises(cvt2.DomainError, match=r"crosses itself"):
+        editor.insert_constraint([[5, 5], [6, 6], [6, 5], [5, 6]])
+    with pytest.raises(cvt2.DomainError, match=r"no constraint 7"):
+        editor.remove_constraint(7)
+    with pytest.raises(cvt2.DomainError, match=r"no vertex"):
+        editor.move_constrained_vertex([4.5, 4.5], [4.6, 4.6])
+    after = cells_by_generator(editor.bounded_voronoi())
+    assert all(np.array_equal(a, b) for a, b in zip(before, after))
+    assert editor.number_of_constraints == 1  # the refused insertions took no id
