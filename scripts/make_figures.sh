@@ -112,6 +112,9 @@ pngquant --force --output "$fig/modflow_grid.png" 64 modflow_grid.png
 "$ex/crack_interpolation" crack.txt
 /usr/bin/python3 "$root/scripts/plot_crack_interpolation.py" crack.txt crack.png
 pngquant --force --output "$fig/crack_interpolation.png" 64 crack.png
+
+PYTHONPATH="$build/python" /usr/bin/python3 "$root/scripts/plot_crack_growth.py" crack_growth.png
+pngquant --force --output "$fig/crack_growth.png" 64 crack_growth.png
 fi
 
 if [ -n "$csv" ] && [ "$1" != speed ]; then

@@ -5,9 +5,10 @@
 set -e
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install_dependencies.sh" valgrind
-if [ ! -x "$root/build/tools/cvt2/cvt2" ] || [ ! -x "$root/build/examples/bvd_cells" ]; then
+if [ ! -x "$root/build/tools/cvt2/cvt2" ] || [ ! -x "$root/build/examples/bvd_cells" ] ||
+   [ ! -x "$root/build/examples/bvd_edit" ]; then
   cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release > /dev/null
-  cmake --build "$root/build" --target cvt2 bvd_cells -j 2
+  cmake --build "$root/build" --target cvt2 bvd_cells bvd_edit -j 2
 fi
 data="$root/examples/data"
 out=$(mktemp -d)
@@ -16,6 +17,9 @@ check() {
 }
 check "$root/build/examples/bvd_cells" "$data/four_clusters.poly" "$data/four_clusters_points.txt" \
   "$out/bvd.svg" > /dev/null
+check "$root/build/examples/bvd_edit" "$data/square_inner_constraints.poly" "$data/square_points.txt" \
+  "$data/square_edits.txt" --verify --relax-rings 2 --relax-iterations 3 --cells-out "$out/edit.txt" \
+  > /dev/null
 check "$root/build/tools/cvt2/cvt2" "$data/four_clusters.poly" --iterations 10 --quiet \
   --svg "$out/a.svg" --geojson "$out/a.geojson" --vtu "$out/a.vtu" --disv "$out/a.disv" \
   --cells-out "$out/a.txt" --mesh-out "$out/a"

@@ -82,7 +82,7 @@ class Constraint_editor_2 {
     if (path.size() < 2)
       throw Domain_error("insert_constraint: a constraint needs two distinct points");
     const Constraint_id id = m_polylines.size();
-    check_path(path, "the new constraint " + std::to_string(id));
+    check_path(path, [id] { return "the new constraint " + std::to_string(id); });
     begin_edit();
     m_polylines.emplace_back();
     m_removed.push_back(false);
@@ -114,8 +114,9 @@ class Constraint_editor_2 {
       path.emplace_back(from.x() + t * (tip.x() - from.x()), from.y() + t * (tip.y() - from.y()));
     }
     path.push_back(tip);
-    check_path(path, "the extension of constraint " + std::to_string(id),
-               m_polylines[id].back()->face());
+    check_path(
+        path, [id] { return "the extension of constraint " + std::to_string(id); },
+        m_polylines[id].back()->face());
     begin_edit();
     Vertex_handle previous = m_polylines[id].back();
     for (std::size_t k = 1; k < path.size(); ++k) {
@@ -168,7 +169,8 @@ class Constraint_editor_2 {
       internal::check_segment(
           m_cdt, x->point(), to,
           [&](Vertex_handle a, Vertex_handle b) { return constraint_name(a, b); },
-          what + " cannot go to " + internal::to_string(to), v, !boundary, x->face());
+          [&] { return what + " cannot go to " + internal::to_string(to); }, v, !boundary,
+          x->face());
     }
     for (std::size_t i = 0; i < ends.size(); ++i)
       for (std::size_t j = 0; j < i; ++j)
@@ -261,14 +263,15 @@ class Constraint_editor_2 {
   // Checks, before anything changes, that the polyline `path` can be inserted: every piece
   // lies in the closed domain and meets the constraints and the other pieces only at vertices
   // or at its own ends (internal::check_segment).
-  void check_path(const std::vector<Point_2>& path, const std::string& what,
+  template <class What>
+  void check_path(const std::vector<Point_2>& path, const What& what,
                   Face_handle hint = Face_handle()) const {
     const auto name = [&](Vertex_handle a, Vertex_handle b) { return constraint_name(a, b); };
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
       internal::check_segment(m_cdt, path[i], path[i + 1], name, what, Vertex_handle(), true, hint);
       for (std::size_t j = 0; j < i; ++j)
         if (internal::pieces_meet(path[j], path[j + 1], path[i], path[i + 1], j + 1 == i))
-          throw Domain_error(what + " crosses itself: " + internal::to_string(path[j]) + " - " +
+          throw Domain_error(what() + " crosses itself: " + internal::to_string(path[j]) + " - " +
                              internal::to_string(path[j + 1]) + " and " +
                              internal::to_string(path[i]) + " - " +
                              internal::to_string(path[i + 1]));
@@ -345,16 +348,13 @@ class Constraint_editor_2 {
   // the vertices on it, which join the constraint; gives the new faces their domain flag.
   void insert_segment(Constraint_id id, Vertex_handle u, Vertex_handle w) {
     if (u == w) return;
-    std::vector<Face_handle> created;
+    auto& created = m_stack;  // free between walks
+    created.clear();
     static_cast<typename CDT::Ctr&>(m_cdt).insert_constraint(u, w, std::back_inserter(created));
     // the vertices on the way, which CGAL split the segment at
-    std::vector<Vertex_handle> chain{u};
-    while (chain.back() != w) {
-      const Vertex_handle x = internal::next_along(m_cdt, chain.back(), w);
-      chain.push_back(x);
-    }
-    internal::Handle_set<Face_handle> fresh;
-    for (const Face_handle f : created) fresh.insert(f);
+    auto& chain = m_changed;  // free until finish_edit()
+    chain.assign(1, u);
+    while (chain.back() != w) chain.push_back(internal::next_along(m_cdt, chain.back(), w));
     std::vector<Edge_key> chain_keys;
     for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
       chain_keys.push_back(key(chain[i], chain[i + 1]));
@@ -367,7 +367,10 @@ class Constraint_editor_2 {
         m_modified.push_back(f->neighbor(k));
       }
     }
-    internal::flood_domain_marks(m_cdt, fresh, [&](Face_handle f, int i) {
+    if (created.empty()) return;  // an edge there already: no new face
+    m_seen.clear();
+    for (const Face_handle f : created) m_seen.insert(f);
+    internal::flood_domain_marks(m_cdt, m_seen, [&](Face_handle f, int i) {
       const Edge_key k = key(f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i)));
       return std::find(chain_keys.begin(), chain_keys.end(), k) != chain_keys.end();
     });

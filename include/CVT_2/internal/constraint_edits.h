@@ -44,7 +44,8 @@ bool located_in_domain(const CDT& cdt, typename CDT::Face_handle f, typename CDT
 
 // Checks that the segment [p, q] can become a constraint: it lies in the closed domain and
 // meets the constrained edges only at vertices or at p or q (which then split them). Throws a
-// Domain_error that starts with `what` and names the edge with `name(a, b)` otherwise.
+// Domain_error that starts with `what()` and names the edge with `name(a, b)` otherwise (the
+// messages are made only then).
 // Exact: orientation tests, and the triangles that meet [p, q]; only the domain test of each
 // piece between the vertices on the segment locates a constructed midpoint.
 // The constrained edges of `ignored` (a vertex about to move) do not count; with `domain`
@@ -66,25 +67,25 @@ bool triangle_meets_segment(const Orientation& orientation, const Point_2& a, co
   return true;
 }
 
-template <class CDT, class Name>
+template <class CDT, class Name, class What>
 void check_segment(const CDT& cdt, const typename CDT::Point_2& p, const typename CDT::Point_2& q,
-                   const Name& name, const std::string& what,
+                   const Name& name, const What& what,
                    typename CDT::Vertex_handle ignored = typename CDT::Vertex_handle(),
                    bool domain = true,
                    typename CDT::Face_handle hint = typename CDT::Face_handle()) {
   using Point_2 = typename CDT::Point_2;
   using Face_handle = typename CDT::Face_handle;
   const auto orientation = cdt.geom_traits().orientation_2_object();
-  const std::string segment = to_string(p) + " - " + to_string(q);
+  const auto segment = [&] { return to_string(p) + " - " + to_string(q); };
   typename CDT::Locate_type lt;
   int li;
   const Face_handle start = cdt.locate(p, lt, li, hint);
   if (cdt.dimension() < 2 || cdt.is_infinite(start))
-    throw Domain_error(what + ": " + to_string(p) + " is outside the triangulation");
+    throw Domain_error(what() + ": " + to_string(p) + " is outside the triangulation");
   for (const Point_2* x : {&p, &q}) {
     const Face_handle f = cdt.locate(*x, lt, li, start);
     if (domain && !located_in_domain(cdt, f, lt, li))
-      throw Domain_error(what + ": " + to_string(*x) + " is outside the domain");
+      throw Domain_error(what() + ": " + to_string(*x) + " is outside the domain");
   }
   std::vector<Face_handle> stack{start};
   Handle_set<Face_handle> seen;
@@ -110,20 +111,20 @@ void check_segment(const CDT& cdt, const typename CDT::Point_2& p, const typenam
         const Point_2& far = shared == p ? q : p;
         if ((a_end && b_end) || (orientation(shared, far, other) == CGAL::COLLINEAR &&
                                  !CGAL::collinear_are_ordered_along_line(other, shared, far)))
-          throw Domain_error(what + ": " + segment + " runs along " +
+          throw Domain_error(what() + ": " + segment() + " runs along " +
                              name(h->vertex(CDT::ccw(i)), h->vertex(CDT::cw(i))));
         continue;
       }
       const int o1 = orientation(p, q, a), o2 = orientation(p, q, b);
       const int o3 = orientation(a, b, p), o4 = orientation(a, b, q);
       if (o1 * o2 < 0 && o3 * o4 < 0)
-        throw Domain_error(what + ": " + segment + " crosses " +
+        throw Domain_error(what() + ": " + segment() + " crosses " +
                            name(h->vertex(CDT::ccw(i)), h->vertex(CDT::cw(i))) + " at no vertex");
       if (o1 == 0 && o2 == 0) {
         const Point_2 lo = std::max(std::min(p, q), std::min(a, b));
         const Point_2 hi = std::min(std::max(p, q), std::max(a, b));
         if (lo < hi)
-          throw Domain_error(what + ": " + segment + " runs along " +
+          throw Domain_error(what() + ": " + segment() + " runs along " +
                              name(h->vertex(CDT::ccw(i)), h->vertex(CDT::cw(i))));
       }
     }
@@ -148,7 +149,7 @@ void check_segment(const CDT& cdt, const typename CDT::Point_2& p, const typenam
     const Point_2 m = CGAL::midpoint(on_segment[k], on_segment[k + 1]);
     const Face_handle f = cdt.locate(m, lt, li, start);
     if (!located_in_domain(cdt, f, lt, li))
-      throw Domain_error(what + ": " + segment + " leaves the domain near " + to_string(m));
+      throw Domain_error(what() + ": " + segment() + " leaves the domain near " + to_string(m));
   }
 }
 
@@ -167,16 +168,16 @@ bool pieces_meet(const Point_2& a, const Point_2& b, const Point_2& c, const Poi
 template <class CDT>
 typename CDT::Vertex_handle next_along(const CDT& cdt, typename CDT::Vertex_handle u,
                                        typename CDT::Vertex_handle w) {
-  std::vector<typename CDT::Edge> edges;
-  cdt.incident_constraints(u, std::back_inserter(edges));
-  for (const auto& e : edges) {
-    auto x = e.first->vertex(CDT::ccw(e.second));
-    if (x == u) x = e.first->vertex(CDT::cw(e.second));
+  auto ec = cdt.incident_edges(u), done = ec;
+  do {
+    if (!ec->first->is_constrained(ec->second)) continue;
+    auto x = ec->first->vertex(CDT::ccw(ec->second));
+    if (x == u) x = ec->first->vertex(CDT::cw(ec->second));
     if (x == w ||
-        (CGAL::collinear(u->point(), x->point(), w->point()) &&
+        (!cdt.is_infinite(x) && CGAL::collinear(u->point(), x->point(), w->point()) &&
          CGAL::collinear_are_strictly_ordered_along_line(u->point(), x->point(), w->point())))
       return x;
-  }
+  } while (++ec != done);
   throw std::logic_error("Constraint_editor_2: a constraint inserted is not in the triangulation");
 }
 
