@@ -846,6 +846,7 @@ struct Editing {
     notes = insert_points(*cdt, given, "points", boundary_tolerance);
     bvd = std::make_unique<BVD>(*cdt);
     editor = std::make_unique<CVT_2::Constraint_editor_2<CDT>>(*cdt, *bvd);
+    editor->carry_weights(true);
   }
 
   py::dict report() const {
@@ -857,6 +858,17 @@ struct Editing {
     out["changed_cells"] = to_array(changed);
     out["new_vertices"] = to_array(added);
     out["retagged_faces"] = r.retagged_faces;
+    // the carried weights in compressed rows: new vertex k's in [indptr[k], indptr[k + 1])
+    std::vector<std::int64_t> indptr{0};
+    std::vector<Point_2> nodes;
+    std::vector<double> weights;
+    for (const auto& row : r.carried_weights) {
+      for (const auto& [v, w] : row) nodes.push_back(v->point()), weights.push_back(w);
+      indptr.push_back(std::int64_t(nodes.size()));
+    }
+    out["weights_indptr"] = to_array(indptr);
+    out["weights_nodes"] = to_array(nodes);
+    out["weights"] = to_array(weights);
     return out;
   }
   std::int64_t insert(py::handle points_object) {

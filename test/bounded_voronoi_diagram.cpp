@@ -833,6 +833,7 @@ void random_edits(const std::string& file, std::size_t points, int edits, unsign
   Cdt& cdt = d.cdt;
   Bvd bvd(cdt);
   Editor editor(cdt, bvd);
+  editor.carry_weights(true);
   std::mt19937_64 rng(seed);
   const double h = std::sqrt(domain_area(cdt) / double(cdt.number_of_vertices()));
   const auto random_step = [&](const Point& from, double lo, double hi) {
@@ -856,6 +857,7 @@ void random_edits(const std::string& file, std::size_t points, int edits, unsign
                              : what < 8 ? "move"
                                         : "remove";
     INFO("edit " << k << ": " << name);
+    bool succeeded = false;
     try {
       if (name == "insert") {
         std::vector<Point> line = random_points_in_domain(cdt, 1, unsigned(rng()));
@@ -893,12 +895,24 @@ void random_edits(const std::string& file, std::size_t points, int edits, unsign
         }
       }
       ++done[name];
+      succeeded = true;
     } catch (const CVT_2::Domain_error&) {
       ++refused[name];
       CHECK(cdt.number_of_vertices() == vertices);  // a refused edit changes nothing
       if (name != "move") CHECK(cdt.number_of_faces() == faces);
     }
     if (!as_rebuilt(cdt, bvd, d.poly.holes)) break;
+    const auto& report = editor.report();
+    if (succeeded && (name == "insert" || name == "extend")) {  // Sibson before, normalized
+      CHECK(report.carried_weights.size() == report.new_vertices.size());
+      for (const auto& weights : report.carried_weights) {
+        double sum = 0;
+        std::size_t negative = 0;
+        for (const auto& vw : weights) sum += vw.second, negative += vw.second < 0;
+        CHECK(negative == 0);
+        CHECK(std::abs(sum - 1) < 1e-12);
+      }
+    }
     const Cells after = all_cells(cdt, bvd);
     const auto& changed = editor.report().changed_cells;
     std::size_t unreported = 0;

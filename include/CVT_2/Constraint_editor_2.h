@@ -10,6 +10,7 @@
 #include <CVT_2/internal/delaunay_flips.h>
 #include <CVT_2/internal/move_vertex.h>
 #include <CVT_2/internal/tag_blind_faces.h>
+#include <CVT_2/natural_neighbor_coordinates_2.h>
 
 #include <CGAL/Kernel/global_functions_2.h>
 
@@ -62,6 +63,11 @@ class Constraint_editor_2 {
     std::vector<Vertex_handle> changed_cells;
     std::vector<Vertex_handle> new_vertices;  ///< the vertices the edit inserted, in order
     std::size_t retagged_faces = 0;           ///< the faces whose blind tag was computed again
+    /// With `carry_weights(true)`, for each vertex an insertion or an extension inserted (in
+    /// the order of `new_vertices`): its Sibson coordinates in the diagram before the edit,
+    /// normalized, which carry a field over to it (empty outside the closed domain). They do
+    /// not yet tell the two lips of the new constraint apart.
+    std::vector<std::vector<std::pair<Vertex_handle, FT>>> carried_weights;
   };
 
   /// An editor of `cdt`, whose diagram `diagram` is (`diagram.triangulation()` is `cdt`).
@@ -69,6 +75,10 @@ class Constraint_editor_2 {
     if (&diagram.triangulation() != &cdt)
       throw std::invalid_argument("Constraint_editor_2: the diagram is not the triangulation's");
   }
+
+  /// Whether insertions and extensions fill `Edit_report::carried_weights` (a natural-neighbour
+  /// query a new vertex, before the edit); default false.
+  void carry_weights(bool b) { m_carry = b; }
 
   /// Inserts the polyline through `points` (at least two distinct points; a repeated point in a
   /// row counts once) as a new constraint and returns its id.
@@ -83,13 +93,16 @@ class Constraint_editor_2 {
       throw Domain_error("insert_constraint: a constraint needs two distinct points");
     const Constraint_id id = m_polylines.size();
     check_path(path, [id] { return "the new constraint " + std::to_string(id); });
+    const auto weights = old_weights(path, 0);
     begin_edit();
     m_polylines.emplace_back();
     m_removed.push_back(false);
     std::vector<Vertex_handle> vertices;
-    for (const Point_2& p : path)
+    for (std::size_t k = 0; k < path.size(); ++k) {
       vertices.push_back(
-          insert_point(p, vertices.empty() ? Face_handle() : vertices.back()->face()));
+          insert_point(path[k], vertices.empty() ? Face_handle() : vertices.back()->face()));
+      carry(weights, k);
+    }
     m_polylines[id].push_back(vertices.front());
     for (std::size_t i = 0; i + 1 < vertices.size(); ++i)
       insert_segment(id, vertices[i], vertices[i + 1]);
@@ -117,10 +130,12 @@ class Constraint_editor_2 {
     check_path(
         path, [id] { return "the extension of constraint " + std::to_string(id); },
         m_polylines[id].back()->face());
+    const auto weights = old_weights(path, 1);
     begin_edit();
     Vertex_handle previous = m_polylines[id].back();
     for (std::size_t k = 1; k < path.size(); ++k) {
       const Vertex_handle v = insert_point(path[k], previous->face());
+      carry(weights, k);
       insert_segment(id, previous, v);
       previous = v;
     }
@@ -231,7 +246,8 @@ class Constraint_editor_2 {
   bool is_removed(Constraint_id id) const { return m_removed.at(id); }  ///< removed?
   /// the number of constraints inserted here, removed ones included (the next id)
   std::size_t number_of_constraints() const { return m_polylines.size(); }
-  const Edit_report& report() const { return m_report; }  ///< what the last edit changed
+  /// what the last edit changed (one that threw changed nothing and leaves it as it was)
+  const Edit_report& report() const { return m_report; }
 
  private:
   using Edge = typename CDT::Edge;
@@ -276,6 +292,24 @@ class Constraint_editor_2 {
                              internal::to_string(path[i]) + " - " +
                              internal::to_string(path[i + 1]));
     }
+  }
+
+  using Weights = std::vector<std::pair<Vertex_handle, FT>>;
+
+  // With carry_weights(true), the Sibson coordinates of path[first...] in the diagram as it is.
+  std::vector<Weights> old_weights(const std::vector<Point_2>& path, std::size_t first) const {
+    std::vector<Weights> out(m_carry ? path.size() : 0);
+    for (std::size_t k = first; k < out.size(); ++k) {
+      const auto r = natural_neighbor_coordinates_2(m_diagram, path[k], std::back_inserter(out[k]));
+      if (!r.third || r.second == 0) out[k].clear();
+      for (auto& [v, w] : out[k]) w /= r.second;
+    }
+    return out;
+  }
+  // Notes path[k]'s weights in the report if insert_point() just inserted a vertex there.
+  void carry(const std::vector<Weights>& weights, std::size_t k) {
+    if (m_carry && m_report.carried_weights.size() < m_report.new_vertices.size())
+      m_report.carried_weights.push_back(weights[k]);
   }
 
   void begin_edit() {
@@ -538,6 +572,7 @@ class Constraint_editor_2 {
   std::vector<bool> m_removed;
   std::map<Edge_key, Constraint_id> m_edge_owner;  // the edges of the constraints made here
   Edit_report m_report;
+  bool m_carry = false;
   std::vector<Face_handle> m_modified;  // faces the edit created or changed (some may be gone)
   internal::Handle_set<Face_handle> m_before;  // faces blinded by edges that went or moved
   // scratch of finish_edit() and the walks

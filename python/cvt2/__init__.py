@@ -559,7 +559,12 @@ class ConstraintEditor:
     Each edit returns its report, a dict: ``changed_cells`` float (k, 2), the generators whose
     cells changed (the rows a solver assembles again, named by their coordinates, since a
     snapshot's numbering changes with each edit); ``new_vertices`` float (m, 2), the vertices
-    it inserted; ``retagged_faces``, how many faces were tagged again. Polylines inserted here
+    it inserted; ``retagged_faces``, how many faces were tagged again; and the weights that
+    carry a field over to the new vertices (their Sibson coordinates in the diagram before the
+    edit, each row summing to 1), in compressed rows: new vertex k's nodes are
+    ``weights_nodes[weights_indptr[k]:weights_indptr[k + 1]]`` (float (., 2), by coordinates)
+    with ``weights`` (empty outside the domain; lips of the new constraint are not told apart
+    yet). Polylines inserted here
     get ids 0, 1, ... in order; the domain's own constraints have none (their vertices can
     move). A point outside the domain, or an edge that would cross another constraint off a
     vertex, raises DomainError naming both, and changes nothing.

@@ -42,6 +42,12 @@ def test_edits_match_a_rebuild():
         assert report["changed_cells"].shape[1] == 2 and len(report["changed_cells"]) > 0
         assert report["new_vertices"].shape == (len(report["new_vertices"]), 2)
         assert report["retagged_faces"] > 0
+        indptr, nodes, weights = report["weights_indptr"], report["weights_nodes"], report["weights"]
+        assert len(indptr) == len(report["new_vertices"]) + 1 and len(nodes) == len(weights)
+        for k, q in enumerate(report["new_vertices"]):  # Sibson before the edit: sums to 1
+            w, x = weights[indptr[k]:indptr[k + 1]], nodes[indptr[k]:indptr[k + 1]]
+            assert abs(w.sum() - 1) < 1e-12 and (w >= 0).all()
+            assert np.linalg.norm(w @ x - q) < 1.0  # the nodes around it
     slit = editor.insert_constraint([[5, 8], [6, 8.6], [7, 8.1]])
     editor.move_constrained_vertex([6, 8.6], [6.1, 8.2])  # sweeps over free generators
     assert np.allclose(editor.constraint_vertices(slit)[1], [6.1, 8.2])
