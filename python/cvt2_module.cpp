@@ -879,9 +879,16 @@ struct Editing {
     return std::size_t(id);
   }
   Point_2 point(py::handle object, const std::string& what) const {
-    const std::vector<Point_2> p =
-        to_points(py::array_t<double>::ensure(object).reshape({1, 2}), what);
-    return p.at(0);
+    // numpy raises for what it cannot read; then one row of two numbers, finite
+    const py::object rows =
+        py::module_::import("numpy").attr("asarray")(object, "float64").attr("reshape")(-1, 2);
+    const std::vector<Point_2> p = to_points(rows, what);
+    if (p.size() != 1) throw py::value_error(what + " must be one point (x, y)");
+    if (!CVT_2::internal::is_valid_point(p[0]))
+      throw CVT_2::Domain_error(
+          what + ": " +
+          CVT_2::internal::invalid_point_message("point " + CVT_2::internal::to_string(p[0])));
+    return p[0];
   }
   py::dict extend(std::int64_t c, py::handle tip, double spacing) {
     if (!(spacing >= 0) || !std::isfinite(spacing))

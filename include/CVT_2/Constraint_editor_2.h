@@ -10,6 +10,7 @@
 #include <CVT_2/internal/delaunay_flips.h>
 #include <CVT_2/internal/move_vertex.h>
 #include <CVT_2/internal/tag_blind_faces.h>
+#include <CVT_2/internal/valid_point.h>
 #include <CVT_2/natural_neighbor_coordinates_2.h>
 
 #include <CGAL/Kernel/global_functions_2.h>
@@ -87,8 +88,12 @@ class Constraint_editor_2 {
   template <class PointRange>
   Constraint_id insert_constraint(const PointRange& points) {
     std::vector<Point_2> path;
-    for (const Point_2& p : points)
+    for (const Point_2& p : points) {
+      if (!internal::is_valid_point(p))
+        throw Domain_error("insert_constraint: " +
+                           internal::invalid_point_message("point " + internal::to_string(p)));
       if (path.empty() || path.back() != p) path.push_back(p);
+    }
     if (path.size() < 2)
       throw Domain_error("insert_constraint: a constraint needs two distinct points");
     const Constraint_id id = m_polylines.size();
@@ -116,11 +121,21 @@ class Constraint_editor_2 {
   /// \throws Domain_error as `insert_constraint()`, or if `id` was removed or is unknown.
   void extend_constraint(Constraint_id id, const Point_2& tip, FT spacing = FT(0)) {
     check_id(id, "extend_constraint");
+    if (!internal::is_valid_point(tip))
+      throw Domain_error("extend_constraint: " +
+                         internal::invalid_point_message("tip " + internal::to_string(tip)));
     const Point_2 from = m_polylines[id].back()->point();
-    if (tip == from) return;
+    if (tip == from) {
+      begin_edit();
+      finish_edit();
+      return;
+    }
     std::vector<Point_2> path{from};
     const double length = std::sqrt(CGAL::to_double(CGAL::squared_distance(from, tip)));
     const double h = CGAL::to_double(spacing);
+    if (h > 0 && !(length / h <= 1e6))
+      throw Domain_error("extend_constraint: a spacing of " + internal::number_to_string(h) +
+                         " would put more than a million vertices on the way");
     const std::size_t pieces = h > 0 ? std::size_t(std::ceil(length / h)) : 1;
     for (std::size_t k = 1; k < pieces; ++k) {
       const double t = double(k) / double(pieces);
@@ -153,8 +168,9 @@ class Constraint_editor_2 {
   Vertex_handle move_constrained_vertex(Vertex_handle v, const Point_2& to) {
     const std::string what = "move_constrained_vertex: " + internal::to_string(v->point());
     if (!m_cdt.are_there_incident_constraints(v)) throw Domain_error(what + " is on no constraint");
-    if (!std::isfinite(CGAL::to_double(to.x())) || !std::isfinite(CGAL::to_double(to.y())))
-      throw Domain_error(what + ": the target is not finite");
+    if (!internal::is_valid_point(to))
+      throw Domain_error(what + ": " +
+                         internal::invalid_point_message("target " + internal::to_string(to)));
     bool boundary = false;
     auto fc = m_cdt.incident_faces(v), done = fc;
     do {
@@ -200,6 +216,12 @@ class Constraint_editor_2 {
       return v;
     }
     slide(v, from);  // back the way it came, then the long way
+    if (boundary) {
+      finish_edit(v);
+      throw Domain_error(what + " cannot go to " + internal::to_string(to) +
+                         ": its edges would sweep over vertices, which a vertex of the domain's "
+                         "boundary does not do yet");
+    }
     const Vertex_handle w = reinsert(v, to, ends);
     finish_edit(w);
     return w;
@@ -439,15 +461,31 @@ class Constraint_editor_2 {
     auto vc = m_cdt.incident_vertices(v), done = vc;
     do link.push_back(vc);
     while (++vc != done);
+    // the faces around the link but v's own keep their domain marks (a hole next to v's)
+    internal::Handle_set<Face_handle> star, kept;
+    auto fc = m_cdt.incident_faces(v), fdone = fc;
+    do star.insert(fc);
+    while (++fc != fdone);
+    for (const Vertex_handle x : link) {
+      auto xc = m_cdt.incident_faces(x), xdone = xc;
+      do
+        if (!star.contains(xc)) kept.insert(xc);
+      while (++xc != xdone);
+    }
     m_cdt.remove(v);
     for (const Vertex_handle x : link) note_star(x);  // the faces of the hole among them
     const Vertex_handle w = insert_point(to);
+    internal::Handle_set<Face_handle> made;  // faces made since, which may reuse kept ones
+    fc = m_cdt.incident_faces(w), fdone = fc;
+    do made.insert(fc);
+    while (++fc != fdone);
     for (auto& line : m_polylines) std::replace(line.begin(), line.end(), v, w);
     for (std::size_t i = 0; i < ends.size(); ++i) {
       std::vector<Face_handle> created;
       static_cast<typename CDT::Ctr&>(m_cdt).insert_constraint(ends[i], w,
                                                                std::back_inserter(created));
       m_modified.insert(m_modified.end(), created.begin(), created.end());
+      for (const Face_handle f : created) made.insert(f);
       std::vector<Vertex_handle> chain{ends[i]};
       while (chain.back() != w) chain.push_back(internal::next_along(m_cdt, chain.back(), w));
       for (std::size_t j = 0; j + 1 < chain.size(); ++j) {
@@ -476,9 +514,12 @@ class Constraint_editor_2 {
     internal::Handle_set<Face_handle> fresh;
     for (const Face_handle f : m_modified)
       if (faces.is_used(f)) fresh.insert(f);
-    internal::flood_domain_marks(m_cdt, fresh, [&](Face_handle f, int i) {
-      return m_edge_owner.count(key(f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i)))) != 0;
-    });
+    internal::flood_domain_marks(
+        m_cdt, fresh,
+        [&](Face_handle f, int i) {
+          return m_edge_owner.count(key(f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i)))) != 0;
+        },
+        [&](Face_handle f) { return kept.contains(f) && !made.contains(f); });
     m_report.new_vertices.assign(1, w);
     return w;
   }

@@ -82,3 +82,42 @@ def test_refused_edits_change_nothing():
     after = cells_by_generator(editor.bounded_voronoi())
     assert all(np.array_equal(a, b) for a, b in zip(before, after))
     assert editor.number_of_constraints == 1  # the refused insertions took no id
+
+
+def test_bad_input_is_an_error():
+    editor = cvt2.ConstraintEditor(cvt2.Domain(SQUARE, RING), np.random.default_rng(5).uniform(0, 10, (100, 2)))
+    editor.insert_constraint([[1, 1], [2, 2]])
+    with pytest.raises(cvt2.DomainError, match="not finite"):
+        editor.insert_constraint([[np.nan, 5], [5, 5]])
+    with pytest.raises(cvt2.DomainError):
+        editor.extend_constraint(0, [np.inf, 3])
+    with pytest.raises(ValueError):
+        editor.extend_constraint(0, "ab")
+    with pytest.raises(ValueError):
+        editor.move_constrained_vertex([[1, 1, 1]], [2, 2])
+    with pytest.raises(cvt2.DomainError, match="million"):
+        editor.extend_constraint(0, [3, 3], spacing=1e-300)
+    before = editor.report
+    assert editor.extend_constraint(0, [2, 2])["changed_cells"].shape == (0, 2)  # no change
+    assert len(before["changed_cells"]) > 0
+
+
+def test_a_move_next_to_a_hole_keeps_the_hole():
+    # the crack's end at the hole's corner: moving its other end sweeps over generators, so the
+    # vertex is removed and inserted again, and the hole's face is among those around it
+    hole = [[4, 4], [6, 4], [5, 6]]
+    domain = cvt2.Domain(np.vstack([SQUARE, hole]), np.vstack([RING, [[4, 5], [5, 6], [6, 4]]]), holes=[[5, 4.5]])
+    points = cvt2.random_points(domain, 400, seed=2)
+    editor = cvt2.ConstraintEditor(domain, points)
+    editor.insert_constraint([[4, 4], [3, 2]])
+    editor.move_constrained_vertex([3, 2], [3.6, 1.0])
+    got = cells_by_generator(editor.bounded_voronoi())
+    assert abs(got[1].sum() - (100 - 2)) < 1e-9  # the hole is still out
+    moved = cvt2.Domain(
+        np.vstack([SQUARE, hole, [[4, 4], [3.6, 1.0]]]),
+        np.vstack([RING, [[4, 5], [5, 6], [6, 4], [7, 8]]]),
+        holes=[[5, 4.5]],
+    )
+    want = cells_by_generator(cvt2.bounded_voronoi(moved, points))
+    assert np.array_equal(got[0], want[0])
+    assert np.allclose(got[1], want[1], rtol=1e-9, atol=1e-12)

@@ -184,9 +184,13 @@ typename CDT::Vertex_handle next_along(const CDT& cdt, typename CDT::Vertex_hand
 // The domain flags of the faces `fresh` that a constraint insertion created: those of the old
 // faces beside them across unconstrained edges, then across the new constraint (whose two
 // sides lie in one region, being in the domain), flooding within the new faces.
-template <class CDT, class Inner>
-void flood_domain_marks(const CDT& cdt, const Handle_set<typename CDT::Face_handle>& fresh,
-                        const Inner& is_new_constraint) {
+// A face that neither reaches (`keep(f)`, an old face unchanged) keeps its mark; any other is
+// in the domain, enclosed by the new constraint and others.
+template <class CDT, class Inner, class Keep = bool (*)(typename CDT::Face_handle)>
+void flood_domain_marks(
+    const CDT& cdt, const Handle_set<typename CDT::Face_handle>& fresh,
+    const Inner& is_new_constraint,
+    const Keep& keep = [](typename CDT::Face_handle) { return false; }) {
   std::vector<typename CDT::Face_handle> stack;
   Handle_set<typename CDT::Face_handle> done;
   for (const auto f : fresh)
@@ -215,7 +219,7 @@ void flood_domain_marks(const CDT& cdt, const Handle_set<typename CDT::Face_hand
     for (const auto f : done) stack.push_back(f);  // second pass: across the new constraint
   }
   for (const auto f : fresh)
-    if (!done.contains(f)) f->set_inside_domain(!cdt.is_infinite(f));  // enclosed: in the domain
+    if (!done.contains(f) && !keep(f)) f->set_inside_domain(!cdt.is_infinite(f));
 }
 
 }  // namespace internal

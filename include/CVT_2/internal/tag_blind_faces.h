@@ -211,7 +211,8 @@ bool first_blinding_edge(const CDT& cdt, const Traits& traits, typename CDT::Fac
   const double cx = x(c), cy = y(c);
   const double size = std::abs(cx - gx) + std::abs(cy - gy) + std::abs(x(q) - x(p)) +
                       std::abs(y(q) - y(p)) + std::abs(x(r) - x(p)) + std::abs(y(r) - y(p));
-  const double tol2 = (1e-7 * size) * (1e-7 * size);
+  const double magnitude = std::max({std::abs(gx), std::abs(gy), std::abs(cx), std::abs(cy)});
+  const double tol = 1e-7 * size + 1e-14 * magnitude, tol2 = tol * tol;
   bool found = false;
   seen.clear();
   stack.assign(1, f);
