@@ -25,23 +25,12 @@ bool is_same_constraint(const typename CDT::Edge& e1, const typename CDT::Edge& 
   return (a1 == a2 && b1 == b2) || (a1 == b2 && b1 == a2);
 }
 
-// An order of the constrained edges that does not depend on memory: their endpoints, the
-// smaller first, compared lexicographically. It breaks the ties of blinds_first().
-template <class CDT>
-bool edge_key_less(const typename CDT::Edge& e1, const typename CDT::Edge& e2) {
-  const auto key = [](const typename CDT::Edge& e) {
-    const auto& a = e.first->vertex(CDT::ccw(e.second))->point();
-    const auto& b = e.first->vertex(CDT::cw(e.second))->point();
-    return b < a ? std::make_pair(b, a) : std::make_pair(a, b);
-  };
-  return key(e1) < key(e2);
-}
-
 // Which of two blinding edges a face keeps: the first one met on the way to its circumcenter,
 // where Algorithm 2 must clip (with nested constraints the farther one is not). True if e, met
-// now, replaces the face's tag t. Two edges met at once (at a vertex they share) are ordered by
-// edge_key_less, so that the tag does not depend on the order the edges are met in: a local
-// update then gives the tags of a rebuild.
+// now, replaces the face's tag t. The first edge met is never met at a tie, so the tag does not
+// depend on the order the edges are met in (a local update then gives a rebuild's tags): a
+// vertex on the way from the centroid to the circumcenter lies inside the circumdisk, so a
+// constraint hides it, and the way meets that constraint first, inside the edge.
 template <class CDT, class Traits>
 bool blinds_first(const Traits& traits, typename CDT::Face_handle f, const typename CDT::Edge& e,
                   const typename CDT::Edge& t) {
@@ -50,9 +39,9 @@ bool blinds_first(const Traits& traits, typename CDT::Face_handle f, const typen
   const auto& b = e.first->vertex(CDT::cw(e.second))->point();
   const auto& ta = t.first->vertex(CDT::ccw(t.second))->point();
   const auto& tb = t.first->vertex(CDT::cw(t.second))->point();
-  const CGAL::Comparison_result c = traits.compare_blinding_distance_2_object()(
-      f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(), a, b, ta, tb);
-  return c == CGAL::SMALLER || (c == CGAL::EQUAL && edge_key_less<CDT>(e, t));
+  return traits.compare_blinding_distance_2_object()(f->vertex(0)->point(), f->vertex(1)->point(),
+                                                     f->vertex(2)->point(), a, b, ta,
+                                                     tb) == CGAL::SMALLER;
 }
 
 // The side of the constrained edge e that a face blinded by it stores: the domain face on the
