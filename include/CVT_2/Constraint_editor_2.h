@@ -227,8 +227,9 @@ class Constraint_editor_2 {
     return w;
   }
 
-  /// Removes constraint `id`: its edges are no longer constrained (but those another constraint
-  /// shares), and its vertices stay, as free generators where no other constraint holds them.
+  /// Removes constraint `id`: its edges are no longer constrained (no other constraint shares
+  /// them: overlaps are refused), and its vertices stay, as free generators where no other
+  /// constraint holds them.
   /// \throws Domain_error if `id` was removed or is unknown.
   void remove_constraint(Constraint_id id) {
     check_id(id, "remove_constraint");
@@ -242,21 +243,15 @@ class Constraint_editor_2 {
       if (!m_cdt.is_edge(vertices[i], vertices[i + 1], f, k))
         throw std::logic_error("remove_constraint: a constraint edge is missing");
       edges.emplace_back(f, k);
-      m_edge_owner.erase(key(vertices[i], vertices[i + 1]));
     }
     for (const auto& e : edges) blinded_before(e);
     for (const auto& [f, k] : edges) {
-      const Face_handle n = f->neighbor(k);
-      f->set_constraint(k, false);
-      n->set_constraint(n->index(f), false);
+      m_edge_owner.erase(key(Edge(f, k)));
       m_modified.push_back(f);
-      m_modified.push_back(n);
-      stack.push_back(internal::Flip_candidate<CDT>::of(f, k));
+      m_modified.push_back(f->neighbor(k));
+      lift(f, k, stack);
     }
-    internal::lawson_flips(m_cdt, stack, [&](Face_handle f, Face_handle g) {
-      m_modified.push_back(f);
-      m_modified.push_back(g);
-    });
+    flip(stack);
     m_removed[id] = true;
     finish_edit();
   }
@@ -400,28 +395,54 @@ class Constraint_editor_2 {
     return v;
   }
 
-  // Inserts the constrained segment from the last vertex of constraint `id`, u, to w, through
-  // the vertices on it, which join the constraint; gives the new faces their domain flag.
-  void insert_segment(Constraint_id id, Vertex_handle u, Vertex_handle w) {
-    if (u == w) return;
-    auto& created = m_stack;  // free between walks
+  // The constrained edge i of f is no longer constrained; its flip goes on `stack`.
+  void lift(Face_handle f, int i, std::vector<internal::Flip_candidate<CDT>>& stack) {
+    const Face_handle n = f->neighbor(i);
+    f->set_constraint(i, false);
+    n->set_constraint(n->index(f), false);
+    stack.push_back(internal::Flip_candidate<CDT>::of(f, i));
+  }
+
+  // Lawson's flips from `stack`, the flipped faces noted as changed.
+  void flip(std::vector<internal::Flip_candidate<CDT>>& stack) {
+    internal::lawson_flips(m_cdt, stack, [&](Face_handle f, Face_handle g) {
+      m_modified.push_back(f);
+      m_modified.push_back(g);
+    });
+  }
+
+  // CGAL's insertion of the constrained segment from u to w: the faces it made into `created`,
+  // they and the faces beside its edges noted as changed; returns the vertices along it, which
+  // CGAL split it at, from u to w.
+  std::vector<Vertex_handle> constrain(Vertex_handle u, Vertex_handle w,
+                                       std::vector<Face_handle>& created) {
     created.clear();
     static_cast<typename CDT::Ctr&>(m_cdt).insert_constraint(u, w, std::back_inserter(created));
-    // the vertices on the way, which CGAL split the segment at
-    auto& chain = m_changed;  // free until finish_edit()
-    chain.assign(1, u);
+    m_modified.insert(m_modified.end(), created.begin(), created.end());
+    std::vector<Vertex_handle> chain{u};
     while (chain.back() != w) chain.push_back(internal::next_along(m_cdt, chain.back(), w));
-    std::vector<Edge_key> chain_keys;
     for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
-      chain_keys.push_back(key(chain[i], chain[i + 1]));
-      m_edge_owner[key(chain[i], chain[i + 1])] = id;
-      m_polylines[id].push_back(chain[i + 1]);
       Face_handle f;
       int k = 0;
       if (m_cdt.is_edge(chain[i], chain[i + 1], f, k)) {
         m_modified.push_back(f);
         m_modified.push_back(f->neighbor(k));
       }
+    }
+    return chain;
+  }
+
+  // Inserts the constrained segment from the last vertex of constraint `id`, u, to w, through
+  // the vertices on it, which join the constraint; gives the new faces their domain flag.
+  void insert_segment(Constraint_id id, Vertex_handle u, Vertex_handle w) {
+    if (u == w) return;
+    auto& created = m_stack;  // free between walks
+    const std::vector<Vertex_handle> chain = constrain(u, w, created);
+    std::vector<Edge_key> chain_keys;
+    for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+      chain_keys.push_back(key(chain[i], chain[i + 1]));
+      m_edge_owner[chain_keys.back()] = id;
+      m_polylines[id].push_back(chain[i + 1]);
     }
     if (created.empty()) return;  // an edge there already: no new face
     m_seen.clear();
@@ -430,7 +451,6 @@ class Constraint_editor_2 {
       const Edge_key k = key(f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i)));
       return std::find(chain_keys.begin(), chain_keys.end(), k) != chain_keys.end();
     });
-    m_modified.insert(m_modified.end(), created.begin(), created.end());
   }
 
   // The move of v to `to` when its edges would sweep over vertices: its constraints to the
@@ -448,15 +468,9 @@ class Constraint_editor_2 {
       int k = 0;
       if (!m_cdt.is_edge(v, x, f, k))
         throw std::logic_error("move_constrained_vertex: a constrained edge is missing");
-      f->set_constraint(k, false);
-      f->neighbor(k)->set_constraint(f->neighbor(k)->index(f), false);
-      stack.push_back(internal::Flip_candidate<CDT>::of(f, k));
+      lift(f, k, stack);
     }
-    // constrained Delaunay again before CGAL removes v (its hole filling expects it)
-    internal::lawson_flips(m_cdt, stack, [&](Face_handle f, Face_handle g) {
-      m_modified.push_back(f);
-      m_modified.push_back(g);
-    });
+    flip(stack);  // constrained Delaunay again before CGAL removes v (its hole filling expects it)
     std::vector<Vertex_handle> link;
     auto vc = m_cdt.incident_vertices(v), done = vc;
     do link.push_back(vc);
@@ -480,22 +494,10 @@ class Constraint_editor_2 {
     do made.insert(fc);
     while (++fc != fdone);
     for (auto& line : m_polylines) std::replace(line.begin(), line.end(), v, w);
+    std::vector<Face_handle> created;
     for (std::size_t i = 0; i < ends.size(); ++i) {
-      std::vector<Face_handle> created;
-      static_cast<typename CDT::Ctr&>(m_cdt).insert_constraint(ends[i], w,
-                                                               std::back_inserter(created));
-      m_modified.insert(m_modified.end(), created.begin(), created.end());
+      const std::vector<Vertex_handle> chain = constrain(ends[i], w, created);
       for (const Face_handle f : created) made.insert(f);
-      std::vector<Vertex_handle> chain{ends[i]};
-      while (chain.back() != w) chain.push_back(internal::next_along(m_cdt, chain.back(), w));
-      for (std::size_t j = 0; j + 1 < chain.size(); ++j) {
-        Face_handle f;
-        int k = 0;
-        if (m_cdt.is_edge(chain[j], chain[j + 1], f, k)) {
-          m_modified.push_back(f);
-          m_modified.push_back(f->neighbor(k));
-        }
-      }
       if (!owners[i]) continue;
       for (std::size_t j = 0; j + 1 < chain.size(); ++j)
         m_edge_owner[key(chain[j], chain[j + 1])] = *owners[i];
@@ -536,10 +538,7 @@ class Constraint_editor_2 {
       do
         for (int i = 0; i < 3; ++i) stack.push_back(internal::Flip_candidate<CDT>::of(fc, i));
       while (++fc != end);
-      internal::lawson_flips(m_cdt, stack, [&](Face_handle f, Face_handle g) {
-        m_modified.push_back(f);
-        m_modified.push_back(g);
-      });
+      flip(stack);
       if (done == 0) return false;
     }
     return v->point() == to;
