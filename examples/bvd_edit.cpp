@@ -10,7 +10,8 @@
 //   move x y x' y'                   the constrained vertex at (x, y) moves to (x', y')
 // and prints a line an edit: edit=K changed_cells=C retagged_faces=F seconds=S. After the last
 // edit it writes the cells in the format of bvd_cells to FILE. With --relax-rings K, after each
-// edit M Lloyd iterations move the free generators within K rings of the changed cells.
+// edit M Lloyd iterations move the free generators within K rings of the changed cells, the
+// diagram evaluated around them only.
 // --verify compares, after each edit, the tags with those of a rebuild, and fails if they
 // differ.
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
@@ -28,7 +29,6 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
-#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -84,27 +84,6 @@ std::vector<Edit> read_edits(const std::string& file) {
     edits.push_back(e);
   }
   return edits;
-}
-
-// The free vertices farther than `rings` edges from every changed cell: fixed while relaxing.
-std::vector<Point> far_points(const CDT& cdt, const std::vector<CDT::Vertex_handle>& changed,
-                              int rings) {
-  std::set<CDT::Vertex_handle> near(changed.begin(), changed.end());
-  std::vector<CDT::Vertex_handle> front(changed.begin(), changed.end());
-  for (int r = 0; r < rings; ++r) {
-    std::vector<CDT::Vertex_handle> next;
-    for (const auto v : front) {
-      auto vc = cdt.incident_vertices(v), done = vc;
-      if (vc != nullptr) do
-          if (!cdt.is_infinite(vc) && near.insert(vc).second) next.push_back(vc);
-        while (++vc != done);
-    }
-    front.swap(next);
-  }
-  std::vector<Point> far;
-  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-    if (near.count(v) == 0 && !cdt.are_there_incident_constraints(v)) far.push_back(v->point());
-  return far;
 }
 
 // Whether the tags of the faces are those a rebuild gives.
@@ -200,12 +179,18 @@ int main(int argc, char* argv[]) {
                   << ": the tags after this edit are not those of a rebuild\n";
         return EXIT_FAILURE;
       }
-      if (rings >= 0 && iterations > 0) {
-        const auto fixed = far_points(cdt, report.changed_cells, rings);
+      if (rings >= 0 && iterations > 0) {  // a local relaxation: the tags stay current
+        std::vector<Point> changed;
+        for (const auto v : report.changed_cells) changed.push_back(v->point());
         CVT_2::lloyd_optimize_2(cdt, CVT_2::parameters::number_of_iterations(iterations)
-                                         .fixed_points(fixed)
+                                         .region(changed)
+                                         .region_rings(rings)
                                          .move_ratio_bound(0));
-        bvd.update();
+        if (verify && !tags_as_rebuilt(cdt, bvd)) {
+          std::cerr << "bvd_edit: " << files[2] << ":" << e.line
+                    << ": the tags after the relaxation are not those of a rebuild\n";
+          return EXIT_FAILURE;
+        }
       }
       ++k;
     }

@@ -15,11 +15,15 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <map>
+#include <set>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <vector>
 
@@ -848,4 +852,120 @@ TEST_CASE("the optimizers lay out the faces that CGAL's own insertion scattered,
     CHECK(points_of(scattered.cdt) == points_of(by_hand.cdt));
     CHECK(r.energy_history == r_by_hand.energy_history);
   }
+}
+
+namespace {
+
+// The points of the vertices of `cdt`, sorted.
+std::vector<Point> sorted_points(const Cdt& cdt) {
+  std::vector<Point> p;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    p.push_back(v->point());
+  std::sort(p.begin(), p.end());
+  return p;
+}
+
+// Whether every face has the tag a rebuild (Algorithm 1 on all faces) gives it.
+bool tags_as_rebuilt(const Cdt& cdt) {
+  std::vector<std::tuple<Cdt::Face_handle, bool, Cdt::Edge>> tags;
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
+    tags.emplace_back(f, f->is_blinded(), f->is_blinded() ? f->blinding_edge() : Cdt::Edge());
+  CVT_2::Bounded_voronoi_diagram_2<Cdt> rebuilt(cdt);
+  std::size_t wrong = 0;
+  for (const auto& [f, blinded, e] : tags)
+    wrong += f->is_blinded() != blinded || (blinded && f->blinding_edge() != e);
+  CHECK(wrong == 0);
+  return wrong == 0;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "a relaxation in a region moves its generators as a run with the others fixed does, "
+    "and keeps the tags current",
+    "[lloyd][lbfgs][region]") {
+  const bool lbfgs = GENERATE(false, true);
+  const std::string file =
+      GENERATE(std::string("square_inner_constraints.poly"), "us_massachusetts_counties.poly");
+  CAPTURE(lbfgs, file);
+  Domain a, b;
+  load_domain(a, file);
+  load_domain(b, file);
+  insert_random_points(a, 1500, 11);
+  insert_random_points(b, 1500, 11);
+  // near a CVT, as after an edit: every generator reaches its centroid, whatever the order
+  for (Domain* d : {&a, &b})
+    CVT_2::lloyd_optimize_2(d->cdt, CVT_2::parameters::number_of_iterations(40));
+  CVT_2::Bounded_voronoi_diagram_2<Cdt> diagram(a.cdt);  // tags current before the run
+  // the seeds: the free generators nearest to a constrained vertex, so that blind faces are near
+  const CGAL::Bbox_2 box = domain_bbox(a.cdt);
+  const Point middle((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2);
+  Point center = middle;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (auto v = a.cdt.finite_vertices_begin(); v != a.cdt.finite_vertices_end(); ++v)
+    if (a.cdt.are_there_incident_constraints(v) &&
+        CGAL::squared_distance(v->point(), middle) < nearest) {
+      nearest = CGAL::squared_distance(v->point(), middle);
+      center = v->point();
+    }
+  std::vector<std::pair<double, Point>> by_distance;
+  for (auto v = a.cdt.finite_vertices_begin(); v != a.cdt.finite_vertices_end(); ++v)
+    if (!a.cdt.are_there_incident_constraints(v))
+      by_distance.emplace_back(CGAL::squared_distance(v->point(), center), v->point());
+  std::sort(by_distance.begin(), by_distance.end());
+  std::vector<Point> seeds;
+  for (std::size_t k = 0; k < 6; ++k) seeds.push_back(by_distance[k].second);
+  const auto np =
+      CVT_2::parameters::region(seeds).region_rings(2).number_of_iterations(12).move_ratio_bound(0);
+  const auto region = *CVT_2::internal::region_vertices(a.cdt, np);
+  REQUIRE(region.size() > 20);
+  std::set<Point> movable;
+  for (const auto v : region) movable.insert(v->point());
+  std::vector<Point> fixed;  // the free generators outside the region
+  for (auto v = b.cdt.finite_vertices_begin(); v != b.cdt.finite_vertices_end(); ++v)
+    if (!b.cdt.are_there_incident_constraints(v) && movable.count(v->point()) == 0)
+      fixed.push_back(v->point());
+  const auto before = sorted_points(a.cdt);
+  const auto r = lbfgs ? CVT_2::lbfgs_optimize_2(a.cdt, np) : CVT_2::lloyd_optimize_2(a.cdt, np);
+  CHECK(r.number_of_iterations == 12);
+  const auto fixed_np =
+      CVT_2::parameters::fixed_points(fixed).number_of_iterations(12).move_ratio_bound(0);
+  const auto f =
+      lbfgs ? CVT_2::lbfgs_optimize_2(b.cdt, fixed_np) : CVT_2::lloyd_optimize_2(b.cdt, fixed_np);
+  // the same moves: the same points, to the bit (L-BFGS's line search compares the region's
+  // energy, not the whole one's: the same decisions, to rounding)
+  const auto after = sorted_points(a.cdt), expected = sorted_points(b.cdt);
+  REQUIRE(after.size() == expected.size());
+  double largest = 0;
+  for (std::size_t k = 0; k < after.size(); ++k)
+    largest = std::max(largest, std::sqrt(CGAL::squared_distance(after[k], expected[k])));
+  CHECK(largest <= (lbfgs ? 1e-9 : 0.0));
+  // only the region moved, and it did
+  std::vector<Point> kept, moved_from;
+  for (const Point& p : before) (movable.count(p) ? moved_from : kept).push_back(p);
+  std::size_t lost = 0;
+  for (const Point& p : kept) lost += !std::binary_search(after.begin(), after.end(), p);
+  CHECK(lost == 0);
+  std::size_t stayed = 0;
+  for (const Point& p : moved_from) stayed += std::binary_search(after.begin(), after.end(), p);
+  CHECK(stayed < moved_from.size() / 4);
+  // the energy of the region is lower than it was, and the tags are those of a rebuild
+  CHECK(r.energy_history.back() < r.energy_history.front());
+  CHECK(f.energy_history.back() < f.energy_history.front());
+  CHECK(tags_as_rebuilt(a.cdt));
+  // from random points, where moves are long and flips many, beside every constraint
+  Domain c;
+  load_domain(c, file);
+  insert_random_points(c, 1500, 12);
+  CVT_2::Bounded_voronoi_diagram_2<Cdt> tagged(c.cdt);
+  std::vector<Point> constrained;
+  for (auto v = c.cdt.finite_vertices_begin(); v != c.cdt.finite_vertices_end(); ++v)
+    if (c.cdt.are_there_incident_constraints(v)) constrained.push_back(v->point());
+  const auto wide = CVT_2::parameters::region(constrained).region_rings(1).number_of_iterations(8);
+  lbfgs ? CVT_2::lbfgs_optimize_2(c.cdt, wide) : CVT_2::lloyd_optimize_2(c.cdt, wide);
+  CHECK(tags_as_rebuilt(c.cdt));
+  // a region point that is not a generator is an error that names it
+  CHECK_THROWS_WITH(
+      CVT_2::lloyd_optimize_2(a.cdt, CVT_2::parameters::region(std::vector<Point>{Point(-7, -7)})),
+      "region: (-7, -7) is not a generator");
 }

@@ -26,6 +26,11 @@ namespace CVT_2 {
 
 template <class CDT, class Traits>
 class Constraint_editor_2;
+template <class CDT, class Density, class Quadrature, class Traits>
+class Cvt_energy_2;
+namespace internal {
+struct Tags_as_they_are {};
+}  // namespace internal
 
 /// \ingroup PkgCvt2Ref
 /// The bounded Voronoi diagram (BVD) of a constrained Delaunay triangulation, its pseudo-dual
@@ -148,6 +153,13 @@ class Bounded_voronoi_diagram_2 {
     update();
   }
 
+  /// \cond SKIP_IN_MANUAL
+  // A diagram of `cdt` that leaves the tags as they are, for a user that tags the faces it
+  // needs itself (Cvt_energy_2: all at each evaluation, or those around a region).
+  Bounded_voronoi_diagram_2(const CDT& cdt, const Traits& traits, internal::Tags_as_they_are)
+      : m_cdt(cdt), m_traits(traits), m_count_stale(true) {}
+  /// \endcond
+
   /// Tags the blind faces again, after the triangulation or its domain changed.
   void update() {
     m_number_of_blinded_faces = internal::tag_blind_faces(m_cdt, m_traits);
@@ -217,7 +229,9 @@ class Bounded_voronoi_diagram_2 {
  private:
   template <class, class>
   friend class Constraint_editor_2;
-  void tags_changed() { m_count_stale = true; }  // the editor tagged some faces again
+  template <class, class, class, class>
+  friend class Cvt_energy_2;
+  void tags_changed() { m_count_stale = true; }  // some faces were tagged again
 
   const CDT& m_cdt;
   Traits m_traits;

@@ -15,11 +15,14 @@
 #include <CVT_2/Sizing_field_density_2.h>
 #include <CVT_2/Uniform_density_2.h>
 #include <CVT_2/exceptions.h>
+#include <CVT_2/internal/Handle_set.h>
 #include <CVT_2/internal/density_evaluation.h>
 #include <CVT_2/internal/for_each_cell_in_faces.h>
+#include <CVT_2/internal/move_generators.h>
 #include <CVT_2/internal/parallel/Chunked_list.h>
 #include <CVT_2/internal/parallel/Face_chunks.h>
 #include <CVT_2/internal/parallel/run_chunks.h>
+#include <CVT_2/internal/tag_blind_faces.h>
 #include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/valid_point.h>
 #include <CVT_2/parameters.h>
@@ -119,7 +122,7 @@ class Cvt_energy_2 {
       : m_cdt(cdt),
         m_density(rho),
         m_quadrature(quadrature),
-        m_diagram(cdt, traits),
+        m_diagram(cdt, traits, internal::Tags_as_they_are()),
         m_chunks(faces_a_chunk) {}
 
   /// Builds the diagram of the current generators and computes the energy, the centroids and
@@ -143,6 +146,46 @@ class Cvt_energy_2 {
   /// whether `v` was fixed by `fix_generators()`
   bool is_fixed(Vertex_handle v) const { return !m_fixed.empty() && m_fixed.count(v) != 0; }
 
+  /// Restricts the evaluations to a region: only the free generators among `vertices` are
+  /// free, and only the cells that their moves can change are computed, theirs and those within
+  /// two rings of them (a set that grows as moves bring others near). The faces around those
+  /// cells are tagged (Algorithm 1) at the first evaluation, then again where the moves through
+  /// `move_generators()` changed them, with the faces that the constrained edges there blind;
+  /// the other faces keep their tags, which stay right if they were. An evaluation then costs
+  /// the region, not the triangulation: a relaxation after a local change (a constraint edit).
+  /// The energy is that of the cells computed. Replaces the region set before.
+  void set_region(const std::vector<Vertex_handle>& vertices) {
+    clear_region();
+    m_has_region = true;
+    for (const Vertex_handle v : vertices)
+      if (!m_cdt.is_infinite(v) && m_region.insert(v)) m_region_list.push_back(v);
+  }
+  /// Evaluates every cell again (the default).
+  void clear_region() {
+    m_has_region = false;
+    m_region.clear();
+    m_region_list.clear();
+    m_cells.clear();
+    m_cell_list.clear();
+    m_changed_faces.clear();
+  }
+  bool has_region() const { return m_has_region; }  ///< whether `set_region()` restricts
+
+  /// \cond SKIP_IN_MANUAL
+  // Moves the free generators vertex(i) toward target(i), for the i of `order`, in at most
+  // `passes` passes (internal::move_free_vertices(), by the chunks of the last evaluation);
+  // with a region, the moves are local and the faces they change are noted for the next
+  // evaluation. Returns how many did not reach their target.
+  template <class OrderRange, class VertexAt, class TargetAt>
+  std::size_t move_generators(const OrderRange& order, const VertexAt& vertex,
+                              const TargetAt& target, std::size_t passes,
+                              internal::Move_buffers<CDT>& buffers) {
+    buffers.changed = m_has_region ? &m_changed_faces : nullptr;
+    return internal::move_free_vertices(m_cdt, m_chunks, m_number_of_threads, order, vertex, target,
+                                        passes, buffers);
+  }
+  /// \endcond
+
   const Evaluation& last_evaluation() const { return m_evaluation; }  ///< the last evaluation
   /// the number of calls of `evaluate()` so far
   std::size_t number_of_evaluations() const { return m_number_of_evaluations; }
@@ -159,6 +202,7 @@ class Cvt_energy_2 {
 
  private:
   using Cell_points = boost::container::small_vector<Point_2, 32>;
+  using Edge = typename CDT::Edge;
 
   // What one cell adds to an evaluation.
   struct Cell_figures {
@@ -213,6 +257,8 @@ class Cvt_energy_2 {
     }
   };
   void reduce_chunks();
+  const Evaluation& evaluate_region(std::size_t resolution);
+  void tag_region();
   Cell_moments_2<Kernel> moments(Vertex_handle v, const Cell_points& points,
                                  std::size_t resolution) const;
   template <class Restriction>
@@ -238,6 +284,13 @@ class Cvt_energy_2 {
   std::vector<Chunk> m_chunk_sums;
   Free_generators m_moves;  // a list for each chunk, not joined by a copy
   std::unordered_set<Vertex_handle> m_fixed;
+  // With a region: its free generators, the generators whose cells are computed, the faces the
+  // moves changed since the last evaluation; scratch for the tags.
+  bool m_has_region = false;
+  internal::Handle_set<Vertex_handle> m_region, m_cells;
+  std::vector<Vertex_handle> m_region_list, m_cell_list;
+  std::vector<typename CDT::Face_handle> m_changed_faces, m_stack;
+  internal::Handle_set<typename CDT::Face_handle> m_faces, m_seen;
   internal::Buffer_pool<Batch_buffers> m_batch_buffers;  // one in use per thread at most
 
   // With a density that restricts itself to disks (and is not evaluated in batches): the last
@@ -270,6 +323,7 @@ auto Cvt_energy_2<CDT, Density, Quadrature, Traits>::evaluate(std::size_t resolu
     -> const Evaluation& {
   ++m_number_of_evaluations;
   m_chunks.update(m_cdt);
+  if (m_has_region) return evaluate_region(resolution);
   m_diagram.update(m_chunks, m_number_of_threads);
   if constexpr (keeps_restrictions) number_generators();
   // Cells in chunks, on several threads; each chunk sums its own cells in order, then the
@@ -301,6 +355,88 @@ auto Cvt_energy_2<CDT, Density, Quadrature, Traits>::evaluate(std::size_t resolu
   m_evaluation.resolution = resolution;
   reduce_chunks();
   return m_evaluation;
+}
+
+// evaluate() with a region: the tags around it, then its cells and their neighbours', one by
+// one (a region is small).
+template <class CDT, class Density, class Quadrature, class Traits>
+auto Cvt_energy_2<CDT, Density, Quadrature, Traits>::evaluate_region(std::size_t resolution)
+    -> const Evaluation& {
+  tag_region();
+  if constexpr (keeps_restrictions) {
+    Kept_restrictions& k = m_restrictions;
+    for (const Vertex_handle v : m_cell_list)
+      if (!k.slot_of.is_defined(v)) k.slot_of[v] = k.slots.size(), k.slots.emplace_back();
+  }
+  m_chunk_sums.assign(1, Chunk());
+  m_moves.reset(1);
+  m_moves.chunk(0).reserve(m_region_list.size());
+  m_chunk_sums[0].moves = &m_moves.chunk(0);
+  Cell_points points;
+  std::vector<typename Diagram::Cell_vertex> scratch;
+  for (const Vertex_handle v : m_cell_list) {
+    bool is_free = true;
+    if (internal::cell_points(m_diagram, v, points, is_free, scratch))
+      m_chunk_sums[0].add(
+          cell_figures(v, points, is_free && m_region.contains(v), moments(v, points, resolution)));
+  }
+  m_evaluation = Evaluation();
+  m_evaluation.resolution = resolution;
+  if (m_cell_list.empty()) {  // no cell to compute
+    m_moves.seal();
+    return m_evaluation;
+  }
+  reduce_chunks();
+  return m_evaluation;
+}
+
+// The cells to compute around the region, and the tags they need: the faces around the cells
+// new to the list, the faces the moves changed (they all lie around moved generators or were
+// flipped), and the faces that the constrained edges of those blind (an edge whose face a flip
+// replaced is named by another face now, in the tags of the faces it blinds).
+template <class CDT, class Density, class Quadrature, class Traits>
+void Cvt_energy_2<CDT, Density, Quadrature, Traits>::tag_region() {
+  m_faces.clear();
+  const auto& faces = m_cdt.tds().faces();
+  for (const auto f : m_changed_faces)
+    if (faces.is_used(f)) m_faces.insert(f);
+  m_changed_faces.clear();
+  std::vector<Edge> edges;
+  for (const auto f : m_faces)
+    for (int i = 0; i < 3; ++i)
+      if (f->is_constrained(i)) edges.emplace_back(f, i);
+  for (const Edge& e : edges)
+    internal::faces_blinded_by(m_cdt, m_diagram.geom_traits(), e, m_faces, m_seen, m_stack);
+  // the region and the generators within two rings of it
+  const std::size_t known = m_cell_list.size();
+  const auto add_cell = [&](Vertex_handle v) {
+    if (!m_cdt.is_infinite(v) && m_cells.insert(v)) m_cell_list.push_back(v);
+  };
+  for (const Vertex_handle v : m_region_list) add_cell(v);
+  std::vector<Vertex_handle> front(m_region_list), next;
+  internal::Handle_set<Vertex_handle> reached;
+  for (const Vertex_handle v : front) reached.insert(v);
+  for (int ring = 0; ring < 2 && m_cdt.dimension() == 2; ++ring) {
+    next.clear();
+    for (const Vertex_handle v : front) {
+      auto vc = m_cdt.incident_vertices(v), done = vc;
+      do
+        if (!m_cdt.is_infinite(vc) && reached.insert(vc)) {
+          next.push_back(vc);
+          add_cell(vc);
+        }
+      while (++vc != done);
+    }
+    front.swap(next);
+  }
+  for (std::size_t k = known; k < m_cell_list.size(); ++k) {
+    auto fc = m_cdt.incident_faces(m_cell_list[k]), done = fc;
+    if (fc != nullptr) do
+        m_faces.insert(fc);
+      while (++fc != done);
+  }
+  internal::retag_faces(m_cdt, m_diagram.geom_traits(), m_faces, m_seen, m_stack);
+  m_diagram.tags_changed();
 }
 
 // The cells of the faces [first, last) with a batch density (DensityFunction_2::evaluate()):

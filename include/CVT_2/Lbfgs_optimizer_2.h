@@ -146,6 +146,9 @@ class Lbfgs_optimizer_2 {
   void fix_generators(const std::vector<Vertex_handle>& vertices) {
     m_energy.fix_generators(vertices);
   }
+  /// Moves only the free generators among `vertices`, evaluating only around them:
+  /// `Cvt_energy_2::set_region()`. Before the first evaluation.
+  void set_region(const std::vector<Vertex_handle>& vertices) { m_energy.set_region(vertices); }
 
   /// the evaluation of the current point
   const Evaluation& last_evaluation() const { return m_current.evaluation; }
@@ -372,9 +375,8 @@ class Lbfgs_optimizer_2 {
   std::size_t move_to_targets(const Target& target, std::size_t passes) {
     drop_trial();
     m_energy.release_free_generators();
-    return internal::move_free_vertices(
-        m_cdt, m_energy.face_chunks(), m_energy.number_of_threads(), m_order,
-        [this](std::size_t i) { return m_vertices[i]; }, target, passes, m_buffers);
+    return m_energy.move_generators(
+        m_order, [this](std::size_t i) { return m_vertices[i]; }, target, passes, m_buffers);
   }
 
   // Backtracking from the full quasi-Newton step; true if a trial point was accepted.

@@ -68,6 +68,9 @@ class Lloyd_optimizer_2 {
   void fix_generators(const std::vector<Vertex_handle>& vertices) {
     m_energy.fix_generators(vertices);
   }
+  /// Moves only the free generators among `vertices`, evaluating only around them:
+  /// `Cvt_energy_2::set_region()`. Before the first evaluation.
+  void set_region(const std::vector<Vertex_handle>& vertices) { m_energy.set_region(vertices); }
   unsigned number_of_threads() const { return m_energy.number_of_threads(); }  ///< as set
 
   /// Moves every free generator to the centroid that the last `evaluate()` computed (or, if
@@ -78,9 +81,8 @@ class Lloyd_optimizer_2 {
   std::size_t move() {
     const Free_generators& moves = m_energy.free_generators();
     const std::size_t n = moves.size();
-    const std::size_t missed = internal::move_free_vertices(
-        m_cdt, m_energy.face_chunks(), number_of_threads(), boost::irange(std::size_t(0), n),
-        [&moves](std::size_t k) { return moves[k].vertex; },
+    const std::size_t missed = m_energy.move_generators(
+        boost::irange(std::size_t(0), n), [&moves](std::size_t k) { return moves[k].vertex; },
         [&moves](std::size_t k) -> const Point_2& { return moves[k].centroid; }, 1, m_buffers);
     m_energy.release_free_generators();
     return n - missed;

@@ -39,7 +39,8 @@ namespace CVT_2 {
 ///        `sizing_field`, `quadrature`, `minimum_quadrature_resolution`,
 ///        `maximum_quadrature_resolution`, `move_ratio_bound`, `number_of_iterations` (at most
 ///        that many steps), `maximum_running_time`, `callback` (called after each step),
-///        `verbose`, `number_of_threads`, `fixed_points`, `geom_traits`), with the same meanings
+///        `verbose`, `number_of_threads`, `fixed_points`, `region`, `region_rings`,
+///        `geom_traits`), with the same meanings
 ///        and defaults, and
 ///   - `lbfgs_memory(m)`: the number of curvature pairs kept, an integer \f$\ge 0\f$;
 ///     default 7; 0 makes every step a Lloyd step.
@@ -53,11 +54,13 @@ Optimization_result lbfgs_optimize_2(CDT& cdt, const NP& np = parameters::defaul
                                       typename Policies::Quadrature, typename Policies::Traits>;
   const internal::Run_options options = internal::read_run_options(np);
   const typename Policies::Density density = Policies::density(np);  // before the layout: may throw
-  internal::lay_out_faces(cdt, options);
+  const auto region = internal::region_vertices(cdt, np);
+  if (!region) internal::lay_out_faces(cdt, options);
   Optimizer lbfgs(cdt, density, Policies::quadrature(np), options.lbfgs_memory,
                   Policies::traits(np));
   lbfgs.set_number_of_threads(options.threads);
   lbfgs.fix_generators(internal::fixed_vertices(cdt, np));
+  if (region) lbfgs.set_region(*region);
   return internal::run_optimization(lbfgs, options, "lbfgs");
 }
 

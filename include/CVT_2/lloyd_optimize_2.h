@@ -47,9 +47,16 @@ namespace CVT_2 {
 ///   - `fixed_points(r)`: a range of points, vertices of `cdt` (generators inserted before) that
 ///     never move: a well, an observation point (one on a constraint is a constrained vertex,
 ///     which never moves anyway). Their cells count in the energy.
+///   - `region(r)`, `region_rings(k)`: a local relaxation. Only the free generators among
+///     the points `r` (vertices of `cdt`: the changed cells of a `Constraint_editor_2` edit,
+///     say) and within `k` rings of them move (`k` an integer \f$\ge 0\f$, default 0), and only
+///     the cells their moves can change are evaluated (`Cvt_energy_2::set_region()`): an
+///     iteration costs the region, not the triangulation, and the faces' blind tags stay right
+///     everywhere if they were (a diagram of `cdt` needs no `update()` after it). The energy
+///     and move ratios of the result are the region's. Faces are not laid out.
 ///   - `geom_traits(t)`: a model of `BvdTraits_2` for the diagram; default `Bvd_traits_2`.
-/// \throws std::invalid_argument for a bad parameter value, naming it (a fixed point that is
-///         not a vertex); Domain_error if the
+/// \throws std::invalid_argument for a bad parameter value, naming it (a fixed or region point
+///         that is not a vertex); Domain_error if the
 ///         density is not positive and finite at a point where it is evaluated.
 template <class CDT, class NP = No_named_parameters>
 Optimization_result lloyd_optimize_2(CDT& cdt, const NP& np = parameters::default_values()) {
@@ -58,10 +65,12 @@ Optimization_result lloyd_optimize_2(CDT& cdt, const NP& np = parameters::defaul
                                       typename Policies::Quadrature, typename Policies::Traits>;
   const internal::Run_options options = internal::read_run_options(np);
   const typename Policies::Density density = Policies::density(np);  // before the layout: may throw
-  internal::lay_out_faces(cdt, options);
+  const auto region = internal::region_vertices(cdt, np);
+  if (!region) internal::lay_out_faces(cdt, options);
   Optimizer lloyd(cdt, density, Policies::quadrature(np), Policies::traits(np));
   lloyd.set_number_of_threads(options.threads);
   lloyd.fix_generators(internal::fixed_vertices(cdt, np));
+  if (region) lloyd.set_region(*region);
   return internal::run_optimization(internal::Lloyd_steps<Optimizer>{lloyd}, options, "lloyd");
 }
 

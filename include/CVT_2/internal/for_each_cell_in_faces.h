@@ -40,24 +40,23 @@ void for_each_cell_in_faces(const Diagram& diagram, Face_iterator first, Face_it
   });
 }
 
-// The same visit, with each cell as its points: visit(v, points, is_free), where `points` (a
-// container of Point_2 with clear() and push_back(), reused between calls) holds the cell's
-// vertices counterclockwise without repeats, as cell() lists them, and is_free tells that v is
-// not one of them. Most cells are those of a free vertex whose faces are all in the domain and
-// see their circumcenters: such a cell is the circumcenters of the faces in the order of the
-// circulation, and it is read straight from the faces, without a Cell_vertex; the same points,
-// to the bit, as cell() gives. Any other vertex takes cell().
-template <class Diagram, class Face_iterator, class Points, class Visit>
-void for_each_cell_points_in_faces(const Diagram& diagram, Face_iterator first, Face_iterator last,
-                                   Points& points, const Visit& visit) {
+// The cell of v as its points: into `points` (a container of Point_2 with clear() and
+// push_back()) the cell's vertices counterclockwise without repeats, as cell() lists them;
+// false if v has no cell. `is_free` tells that v is not one of them; `c` is scratch. Most cells
+// are those of a free vertex whose faces are all in the domain and see their circumcenters:
+// such a cell is the circumcenters of the faces in the order of the circulation, and it is read
+// straight from the faces, without a Cell_vertex; the same points, to the bit, as cell() gives.
+// Any other vertex takes cell().
+template <class Diagram, class Points>
+bool cell_points(const Diagram& diagram, typename Diagram::Vertex_handle v, Points& points,
+                 bool& is_free, std::vector<typename Diagram::Cell_vertex>& c) {
   using CDT = typename Diagram::Triangulation;
-  using Vertex_handle = typename Diagram::Vertex_handle;
   const auto& cdt = diagram.triangulation();
-  if (cdt.dimension() < 2) return;  // no cell
+  if (cdt.dimension() < 2) return false;  // no cell
   const auto circumcenter = diagram.geom_traits().construct_circumcenter_2_object();
-  // The circumcenters of the faces around v into `points`, if v is free and its faces are all
-  // in the domain and see them; false, with `points` left as it comes, otherwise.
-  const auto read_plain_cell = [&](Vertex_handle v) {
+  // The circumcenters of the faces around v, if v is free and its faces are all in the domain
+  // and see them.
+  const auto read_plain_cell = [&] {
     points.clear();
     auto fc = cdt.incident_faces(v);
     const auto done = fc;
@@ -71,21 +70,30 @@ void for_each_cell_points_in_faces(const Diagram& diagram, Face_iterator first, 
     if (points.size() > 1 && points.back() == points.front()) points.pop_back();
     return true;
   };
+  is_free = true;
+  if (read_plain_cell()) return true;
+  diagram.cell(v, c);
+  if (c.empty()) return false;
+  points.clear();
+  for (const auto& x : c) {
+    points.push_back(x.point);
+    is_free = is_free && x.type != Diagram::Cell_vertex::GENERATOR;
+  }
+  return true;
+}
+
+// The same visit as for_each_cell_in_faces(), with each cell as its points (cell_points()):
+// visit(v, points, is_free), `points` reused between calls.
+template <class Diagram, class Face_iterator, class Points, class Visit>
+void for_each_cell_points_in_faces(const Diagram& diagram, Face_iterator first, Face_iterator last,
+                                   Points& points, const Visit& visit) {
+  using Vertex_handle = typename Diagram::Vertex_handle;
+  if (diagram.triangulation().dimension() < 2) return;  // no cell
   std::vector<typename Diagram::Cell_vertex> c;
-  for_each_vertex_at_its_face(cdt, first, last, [&](Vertex_handle v) {
-    if (read_plain_cell(v)) {
-      visit(v, static_cast<const Points&>(points), true);
-      return;
-    }
-    diagram.cell(v, c);
-    if (c.empty()) return;
-    points.clear();
+  for_each_vertex_at_its_face(diagram.triangulation(), first, last, [&](Vertex_handle v) {
     bool is_free = true;
-    for (const auto& x : c) {
-      points.push_back(x.point);
-      is_free = is_free && x.type != Diagram::Cell_vertex::GENERATOR;
-    }
-    visit(v, static_cast<const Points&>(points), is_free);
+    if (cell_points(diagram, v, points, is_free, c))
+      visit(v, static_cast<const Points&>(points), is_free);
   });
 }
 

@@ -43,10 +43,15 @@ struct Move_buffers {
       chunk_left;
   // flips so far: made by the chunks on their own, and edges they left for after (for tests)
   std::size_t chunk_flips = 0, deferred_edges = 0;
-  void release() {  // all but the counts
+  // If set, the moves are local (no pass over all vertices or edges), and every face they
+  // change is pushed here (some more than once): the faces around a moved vertex, both faces
+  // of each flip.
+  std::vector<typename CDT::Face_handle>* changed = nullptr;
+  void release() {  // all but the counts and `changed`
     Move_buffers released;
     released.chunk_flips = chunk_flips;
     released.deferred_edges = deferred_edges;
+    released.changed = changed;
     *this = std::move(released);
   }
 };
@@ -277,6 +282,15 @@ void move_all_at_once(CDT& cdt, const Face_chunks<CDT>& chunks, unsigned threads
   put_back_inverted(cdt, pending, vertex, threads, b);
 }
 
+// The faces around v into `out`.
+template <class CDT>
+void push_star(const CDT& cdt, typename CDT::Vertex_handle v,
+               std::vector<typename CDT::Face_handle>& out) {
+  auto fc = cdt.incident_faces(v), done = fc;
+  do out.push_back(fc);
+  while (++fc != done);
+}
+
 // Moves each free vertex vertex(i) toward target(i), for i in `order` (a range of numbers in
 // the cells' visit order, kind to the cache), in at most `passes` passes. A pass moves every
 // vertex not yet at its target as far as its star allows (move_free_vertex: no edge is crossed,
@@ -291,7 +305,7 @@ std::size_t move_free_vertices(CDT& cdt, const Face_chunks<CDT>& chunks, unsigne
   std::vector<std::size_t>& pending = b.pending;
   list_pending(order, vertex, target, threads, b);
   for (std::size_t pass = 0; pass < passes && !pending.empty(); ++pass) {
-    const bool at_once = pass == 0 && pending.size() * 8 > order.size();
+    const bool at_once = pass == 0 && pending.size() * 8 > order.size() && !b.changed;
     if (at_once) {
       b.stack.clear();
       move_all_at_once(cdt, chunks, threads, pending, vertex, target, b);  // fills the stacks
@@ -309,6 +323,7 @@ std::size_t move_free_vertices(CDT& cdt, const Face_chunks<CDT>& chunks, unsigne
             push_star_edges(cdt, vertex(i), b.stack);  // put back, then perhaps moved: retest
           } else if (done > 0) {
             b.moved.push_back(i);
+            if (b.changed) push_star(cdt, vertex(i), *b.changed);
           }
           if (done < 1) pending[kept++] = i;
         });
@@ -318,14 +333,20 @@ std::size_t move_free_vertices(CDT& cdt, const Face_chunks<CDT>& chunks, unsigne
       continue;
     }
     if (b.moved.empty()) break;  // every remaining vertex is stuck where it is
-    if (b.moved.size() * 8 > order.size()) {
+    if (b.moved.size() * 8 > order.size() && !b.changed) {
       restore_delaunay(cdt, b.stack);  // most vertices moved: each edge of the domain once
     } else {
       // Few moved: only edges of their stars and links can have lost the Delaunay property
       // (their in-circle tests involve a moved vertex); Lawson's flips go on from there.
       b.stack.clear();
       for (const std::size_t i : b.moved) push_star_edges(cdt, vertex(i), b.stack);
-      lawson_flips(cdt, b.stack);
+      if (b.changed)
+        lawson_flips(cdt, b.stack, [&](auto f, auto g) {
+          b.changed->push_back(f);
+          b.changed->push_back(g);
+        });
+      else
+        lawson_flips(cdt, b.stack);
     }
   }
   const std::size_t missed = pending.size();

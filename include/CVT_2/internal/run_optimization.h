@@ -20,6 +20,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -115,6 +116,47 @@ std::vector<typename CDT::Vertex_handle> fixed_vertices(const CDT& cdt, const NP
     }
   }
   return vertices;
+}
+
+// With the named parameter `region` (a range of points, vertices of `cdt`): the free vertices
+// among them and within `region_rings` (default 0) rings of them, the only ones to move.
+// \throws std::invalid_argument naming a point that is not a vertex of `cdt`.
+template <class CDT, class NP>
+std::optional<std::vector<typename CDT::Vertex_handle>> region_vertices(const CDT& cdt,
+                                                                        const NP& np) {
+  using Vertex_handle = typename CDT::Vertex_handle;
+  if constexpr (internal_np::has_parameter<NP, internal_np::region_t>) {
+    const std::size_t rings = checked_count(
+        internal_np::choose_parameter(get_parameter(np, internal_np::region_rings_t()), 0),
+        "region_rings");
+    std::vector<Vertex_handle> reached;
+    std::unordered_set<Vertex_handle> seen;
+    typename CDT::Face_handle hint;
+    for (const auto& p : get_parameter(np, internal_np::region_t())) {
+      typename CDT::Locate_type lt;
+      int li;
+      hint = cdt.locate(p, lt, li, hint);
+      if (lt != CDT::VERTEX)
+        throw std::invalid_argument("region: " + to_string(p) + " is not a generator");
+      if (seen.insert(hint->vertex(li)).second) reached.push_back(hint->vertex(li));
+    }
+    for (std::size_t ring = 0, first = 0; ring < rings && cdt.dimension() == 2; ++ring) {
+      const std::size_t last = reached.size();
+      for (std::size_t k = first; k < last; ++k) {
+        auto vc = cdt.incident_vertices(reached[k]), done = vc;
+        do
+          if (!cdt.is_infinite(vc) && seen.insert(vc).second) reached.push_back(vc);
+        while (++vc != done);
+      }
+      first = last;
+    }
+    std::vector<Vertex_handle> free;
+    for (const Vertex_handle v : reached)
+      if (!cdt.are_there_incident_constraints(v)) free.push_back(v);
+    return free;
+  } else {
+    return std::nullopt;
+  }
 }
 
 // Lays out the faces of a big triangulation that CGAL's own insertion left scattered in
