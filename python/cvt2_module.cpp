@@ -869,6 +869,22 @@ struct Editing {
     out["weights_indptr"] = to_array(indptr);
     out["weights_nodes"] = to_array(nodes);
     out["weights"] = to_array(weights);
+    // the same by lip, for the new vertices with two lips or more
+    std::vector<Point_2> lip_vertex;
+    std::vector<std::int64_t> lip, lip_indptr{0};
+    nodes.clear();
+    weights.clear();
+    for (const auto& c : r.carried_lips) {
+      lip_vertex.push_back(c.vertex->point());
+      lip.push_back(c.lip);
+      for (const auto& [v, w] : c.weights) nodes.push_back(v->point()), weights.push_back(w);
+      lip_indptr.push_back(std::int64_t(nodes.size()));
+    }
+    out["lip_vertices"] = to_array(lip_vertex);
+    out["lips"] = to_array(lip);
+    out["lip_weights_indptr"] = to_array(lip_indptr);
+    out["lip_weights_nodes"] = to_array(nodes);
+    out["lip_weights"] = to_array(weights);
     return out;
   }
   std::int64_t insert(py::handle points_object) {
@@ -895,6 +911,25 @@ struct Editing {
       throw py::value_error("spacing must be a finite number >= 0");
     editor->extend_constraint(id(c), point(tip, "tip"), spacing);
     return report();
+  }
+  // Lloyd iterations on the free generators within `rings` rings of the last edit's changed
+  // cells (lloyd_optimize_2 with `region`); the generators that moved, from and to.
+  py::dict relax(std::int64_t rings, std::int64_t iterations) {
+    std::vector<Point_2> region, from, to;
+    std::vector<CDT::Vertex_handle> seen;
+    for (const auto v : editor->report().changed_cells) region.push_back(v->point());
+    const auto np = CVT_2::parameters::region(region).region_rings(rings).move_ratio_bound(0);
+    const auto movable = CVT_2::internal::region_vertices(*cdt, np);
+    for (const auto v : *movable) seen.push_back(v), from.push_back(v->point());
+    CVT_2::lloyd_optimize_2(*cdt, np.number_of_iterations(iterations));
+    py::dict out;
+    std::vector<Point_2> moved_from, moved_to;
+    for (std::size_t k = 0; k < seen.size(); ++k)
+      if (seen[k]->point() != from[k])
+        moved_from.push_back(from[k]), moved_to.push_back(seen[k]->point());
+    out["moved_from"] = to_array(moved_from);
+    out["moved_to"] = to_array(moved_to);
+    return out;
   }
   py::dict move(py::handle from, py::handle to) {
     const Point_2 p = point(from, "vertex"), q = point(to, "to");
@@ -934,7 +969,8 @@ struct Editing {
 // (own_points()): a generator's weight goes to the first of them at it.
 py::dict natural_neighbours(const std::shared_ptr<const Domain>& domain, py::handle nodes_object,
                             py::handle queries_object, const std::string& method,
-                            std::int64_t threads, std::optional<double> boundary_tolerance) {
+                            std::int64_t threads, std::optional<double> boundary_tolerance,
+                            bool lips) {
   std::vector<Point_2> nodes = to_points(nodes_object, "nodes");
   const std::vector<Point_2> queries = to_points(queries_object, "queries");
   if (method != "sibson" && method != "laplace")
@@ -949,6 +985,7 @@ py::dict natural_neighbours(const std::shared_ptr<const Domain>& domain, py::han
   std::vector<std::int64_t> indptr{0}, indices;
   std::vector<double> data;
   std::vector<std::uint8_t> inside;
+  std::vector<std::int64_t> lip_columns;  // the column of the node each lip column splits
   std::size_t columns = 0;
   {
     py::gil_scoped_release release;
@@ -960,7 +997,8 @@ py::dict natural_neighbours(const std::shared_ptr<const Domain>& domain, py::han
         CVT_2::natural_neighbor_matrix_2(bvd, queries,
                                          CVT_2::parameters::natural_neighbor_method(
                                              method == "laplace" ? CVT_2::LAPLACE : CVT_2::SIBSON)
-                                             .number_of_threads(t));
+                                             .number_of_threads(t)
+                                             .lips(lips));
     std::vector<Point_2> all = std::move(nodes);
     const std::vector<Point_2> own = own_points(*domain);
     all.insert(all.end(), own.begin(), own.end());
@@ -977,6 +1015,10 @@ py::dict natural_neighbours(const std::shared_ptr<const Domain>& domain, py::han
       if (it == column.end())  // every vertex is a node or a point of the description
         throw std::logic_error("natural_neighbours: a generator that is no node");
       of_node[j] = it->second;
+    }
+    for (const std::size_t j : m.lip_nodes) {  // lip columns after all the others
+      of_node.push_back(std::int64_t(columns + lip_columns.size()));
+      lip_columns.push_back(of_node[j]);
     }
     std::vector<std::pair<std::int64_t, double>> row;
     indices.reserve(m.columns.size());
@@ -996,8 +1038,9 @@ py::dict natural_neighbours(const std::shared_ptr<const Domain>& domain, py::han
   out["indptr"] = to_array(indptr);
   out["indices"] = to_array(indices);
   out["data"] = to_array(data);
-  out["shape"] = py::make_tuple(queries.size(), columns);
+  out["shape"] = py::make_tuple(queries.size(), columns + lip_columns.size());
   out["inside"] = to_array(inside).attr("astype")("bool");
+  out["lip_columns"] = to_array(lip_columns);
   return out;
 }
 
@@ -1258,6 +1301,7 @@ PYBIND11_MODULE(_cvt2, m) {
       .def("extend_constraint", &Editing::extend, py::arg("id"), py::arg("tip"), py::arg("spacing"))
       .def("move_constrained_vertex", &Editing::move, py::arg("vertex"), py::arg("to"))
       .def("remove_constraint", &Editing::remove, py::arg("id"))
+      .def("relax", &Editing::relax, py::arg("rings"), py::arg("iterations"))
       .def("report", &Editing::report)
       .def("constraint_vertices", &Editing::constraint_vertices, py::arg("id"))
       .def("number_of_constraints",
@@ -1320,7 +1364,8 @@ PYBIND11_MODULE(_cvt2, m) {
   m.def("bounded_voronoi", &bounded_voronoi, py::arg("domain"), py::arg("points"),
         py::arg("threads"), py::arg("boundary_tolerance"));
   m.def("natural_neighbours", &natural_neighbours, py::arg("domain"), py::arg("nodes"),
-        py::arg("queries"), py::arg("method"), py::arg("threads"), py::arg("boundary_tolerance"));
+        py::arg("queries"), py::arg("method"), py::arg("threads"), py::arg("boundary_tolerance"),
+        py::arg("lips") = false);
   m.def("_optimize_lambda_density", &optimize_lambda_density, py::arg("domain"), py::arg("points"),
         py::arg("max_iterations"), py::arg("move_ratio"), py::arg("threads"), py::arg("a"),
         py::arg("cx"), py::arg("cy"), py::arg("w"));

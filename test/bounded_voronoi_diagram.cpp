@@ -949,3 +949,55 @@ TEST_CASE("Constraint_editor_2: random edits give the tags and marks of a rebuil
   random_edits("us_massachusetts_counties.poly", 1500, 300, 8);
   random_edits("earcut_dude.poly", 800, 200, 9);
 }
+
+TEST_CASE("Constraint_editor_2: a crack's new vertices carry a field from each side to each lip",
+          "[bvd][edit][lips]") {
+  Domain d;
+  load_domain(d, "square_inner_constraints.poly");
+  insert_random_points(d, 2000, 12);
+  Bvd bvd(d.cdt);
+  CVT_2::Constraint_editor_2<Cdt> editor(d.cdt, bvd);
+  editor.carry_weights(true);
+  // a crack along y = 0.75 from the left edge, grown in steps with a vertex every 0.1
+  const double y = 0.75;
+  const auto id = editor.insert_constraint(std::vector<Point>{Point(0, y), Point(0.5, y)});
+  std::size_t lips = 0, tips = 0, crack_nodes_seen = 0;
+  for (double x = 1; x <= 4; x += 0.5) {
+    editor.extend_constraint(id, Point(x, y), 0.1);
+    const auto& r = editor.report();
+    // every new vertex but the tip has two lips, one each side, each fed from its side only
+    std::map<Cdt::Vertex_handle, std::vector<int>> sides;
+    std::map<Cdt::Vertex_handle, std::vector<std::set<Point>>> on_crack;
+    for (const auto& c : r.carried_lips) {
+      CAPTURE(c.vertex->point(), c.lip);
+      double sum = 0, side = 0;
+      on_crack[c.vertex].emplace_back();
+      for (const auto& [node, w] : c.weights) {
+        sum += w;
+        const double dy = node->point().y() - y;
+        CHECK(dy * side >= 0);  // no node from the other side
+        if (dy != 0) side = dy;
+        if (dy == 0) on_crack[c.vertex].back().insert(node->point());
+      }
+      CHECK(sum == Approx(1).margin(1e-12));
+      REQUIRE(side != 0);
+      sides[c.vertex].push_back(side > 0 ? 1 : -1);
+      ++lips;
+    }
+    for (const auto v : r.new_vertices) {
+      if (v->point() == Point(x, y)) {
+        ++tips;
+        CHECK(sides.count(v) == 0);
+        continue;
+      }
+      REQUIRE(sides.count(v) == 1);
+      CHECK(sides[v].size() == 2);
+      CHECK(sides[v][0] == -sides[v][1]);
+      CHECK(on_crack[v][0] == on_crack[v][1]);  // the crack's nodes count on both lips
+      crack_nodes_seen += on_crack[v][0].size();
+    }
+  }
+  CHECK(tips == 7);
+  CHECK(crack_nodes_seen > 0);
+  CHECK(lips == 2 * 7 * 4);  // 4 vertices inside each step of 0.5
+}

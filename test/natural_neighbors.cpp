@@ -569,6 +569,81 @@ TEST_CASE("a crack: no weight leaks across it, and a jump is interpolated exactl
   CHECK(cgal_leaks > 100);  // the unconstrained coordinates do leak: the test can tell
 }
 
+TEST_CASE("lips: a node along a crack has a column for each side, and a jump is exact up to it",
+          "[natural_neighbors][lips]") {
+  Domain d;  // the unit square with a crack from (0.2, 0.5) to (0.8, 0.5), a node every 0.1
+  add_ring(d.poly, {Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1)});
+  for (int i = 2; i <= 8; ++i) {
+    d.poly.vertices.emplace_back(0.1 * i, 0.5);
+    if (i > 2) d.poly.segments.push_back({d.poly.vertices.size() - 2, d.poly.vertices.size() - 1});
+  }
+  d.cdt = triangulate(d.poly);
+  std::vector<Point> points;
+  for (const Point& p : random_points_in_domain(d.cdt, 800, 9))
+    if (p.y() != 0.5) points.push_back(p);
+  CVT_2::insert_generators_2(d.cdt, points);
+  const Bvd bvd(d.cdt);
+  std::vector<Point> q;
+  std::mt19937_64 rng(5);
+  for (int k = 0; k < 3000; ++k)
+    q.emplace_back(uniform(rng, 0.25, 0.75), 0.5 + (k % 2 ? 1 : -1) * uniform(rng, 1e-12, 0.1));
+  q.emplace_back(0.5, 0.5);  // at a node on the crack
+  for (const auto method : {CVT_2::SIBSON, CVT_2::LAPLACE}) {
+    const auto np = CVT_2::parameters::natural_neighbor_method(method);
+    const auto plain = CVT_2::natural_neighbor_matrix_2(bvd, q, np);
+    const auto m = CVT_2::natural_neighbor_matrix_2(bvd, q, np.lips(true));
+    const std::size_t n = m.nodes.size();
+    REQUIRE(m.nodes == plain.nodes);
+    REQUIRE(m.lip_nodes.size() == 10);  // the 5 nodes inside the crack, 2 lips each; tips have 1
+    // the field: 1 above the crack, 0 below; on a lip node, 1 on the lip that sees up
+    const auto side = [](const Point& p) { return p.y() > 0.5 ? 1 : p.y() < 0.5 ? -1 : 0; };
+    std::vector<double> u(n + m.lip_nodes.size(), 0);
+    std::vector<bool> lip_node(n, false), tip(n, false);
+    for (std::size_t j = 0; j < n; ++j) {
+      u[j] = side(m.nodes[j]->point()) > 0 ? 1 : 0;
+      tip[j] = side(m.nodes[j]->point()) == 0;
+    }
+    for (std::size_t k = 0; k < m.lip_nodes.size(); ++k) {
+      const std::size_t j = m.lip_nodes[k];
+      CHECK(side(m.nodes[j]->point()) == 0);
+      lip_node[j] = true;
+      tip[j] = false;
+      const std::size_t first = k == 0 || m.lip_nodes[k - 1] != j ? k : k - 1;
+      const auto up = m.nodes[j]->point() + K::Vector_2(0, 0.01);
+      u[n + k] = int(k - first) == CVT_2::internal::lip_toward(d.cdt, m.nodes[j], up) ? 1 : 0;
+    }
+    std::size_t exact = 0, through_lips = 0;
+    for (std::size_t r = 0; r < q.size(); ++r) {
+      CAPTURE(q[r]);
+      double sum = 0, value = 0;
+      bool near_tip = false, uses_lips = false;
+      std::map<std::size_t, double> folded;
+      for (std::size_t e = m.row_offsets[r]; e < m.row_offsets[r + 1]; ++e) {
+        const std::size_t c = m.columns[e];
+        const std::size_t j = c < n ? c : m.lip_nodes[c - n];
+        CHECK(!(c < n && lip_node[j]));  // a lip node's own column stays empty
+        near_tip |= tip[j];
+        uses_lips |= c >= n;
+        folded[j] += m.values[e];
+        sum += m.values[e];
+        value += m.values[e] * u[c];
+      }
+      // folding the lips back gives the row without them, bit for bit
+      std::map<std::size_t, double> row;
+      for (std::size_t e = plain.row_offsets[r]; e < plain.row_offsets[r + 1]; ++e)
+        row[plain.columns[e]] = plain.values[e];
+      CHECK(folded == row);
+      CHECK(sum == Approx(1).margin(1e-14));
+      if (near_tip || side(q[r]) == 0) continue;
+      CHECK(value == Approx(side(q[r]) > 0 ? 1 : 0).margin(1e-14));
+      ++exact;
+      through_lips += uses_lips;
+    }
+    CHECK(exact > 1500);
+    CHECK(through_lips > 300);
+  }
+}
+
 TEST_CASE(
     "the matrix of many queries: the single queries' rows, the same bits on any number "
     "of threads",

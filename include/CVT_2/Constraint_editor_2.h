@@ -8,6 +8,7 @@
 #include <CVT_2/internal/Handle_set.h>
 #include <CVT_2/internal/constraint_edits.h>
 #include <CVT_2/internal/delaunay_flips.h>
+#include <CVT_2/internal/lips.h>
 #include <CVT_2/internal/move_vertex.h>
 #include <CVT_2/internal/tag_blind_faces.h>
 #include <CVT_2/internal/valid_point.h>
@@ -58,6 +59,15 @@ class Constraint_editor_2 {
   using Face_handle = typename CDT::Face_handle;           ///< a face
   using Constraint_id = std::size_t;                       ///< a polyline inserted here
 
+  /// The weights that carry a field over to one lip of a new vertex (`lip` as in
+  /// `natural_neighbor_matrix_2()`'s `lips(true)`: the wedges of the domain between its
+  /// constraints, counterclockwise).
+  struct Carried_lip {
+    Vertex_handle vertex;                               ///< a vertex the edit inserted
+    int lip;                                            ///< which of its lips
+    std::vector<std::pair<Vertex_handle, FT>> weights;  ///< normalized; empty if it sees none
+  };
+
   /// What an edit changed.
   struct Edit_report {
     /// the vertices whose cell changed (the rows a solver assembles again), new ones included
@@ -66,9 +76,14 @@ class Constraint_editor_2 {
     std::size_t retagged_faces = 0;           ///< the faces whose blind tag was computed again
     /// With `carry_weights(true)`, for each vertex an insertion or an extension inserted (in
     /// the order of `new_vertices`): its Sibson coordinates in the diagram before the edit,
-    /// normalized, which carry a field over to it (empty outside the closed domain). They do
-    /// not yet tell the two lips of the new constraint apart.
+    /// normalized, which carry a field over to it (empty outside the closed domain), from
+    /// both sides of the new constraint.
     std::vector<std::vector<std::pair<Vertex_handle, FT>>> carried_weights;
+    /// The same for each lip of the new vertices that have two or more (along a crack, not at
+    /// its tip): the weights of the nodes that the lip sees, and of those joined to the vertex
+    /// by a constraint, normalized again, so that a field that jumps across the new crack
+    /// takes on each lip the values of its side only.
+    std::vector<Carried_lip> carried_lips;
   };
 
   /// An editor of `cdt`, whose diagram `diagram` is (`diagram.triangulation()` is `cdt`).
@@ -604,6 +619,30 @@ class Constraint_editor_2 {
     m_report.changed_cells.assign(m_changed.begin(), m_changed.end());
     m_report.retagged_faces = m_region.size();
     m_diagram.tags_changed();
+    if (m_carry) split_lips();
+  }
+
+  // The carried weights of each new vertex with two lips or more, split by lip: a node counts
+  // on the lip it is seen from, or on both beside a constraint it lies on the line of
+  // (internal::lips_toward()).
+  void split_lips() {
+    for (std::size_t k = 0; k < m_report.carried_weights.size(); ++k) {
+      const Vertex_handle v = m_report.new_vertices[k];
+      const int lips = internal::number_of_lips(m_cdt, v);
+      if (lips < 2) continue;
+      const std::size_t first = m_report.carried_lips.size();
+      for (int lip = 0; lip < lips; ++lip) m_report.carried_lips.push_back({v, lip, {}});
+      for (const auto& [x, w] : m_report.carried_weights[k])
+        internal::lips_toward(m_cdt, v, x->point(), [&, x = x, w = w](int lip) {
+          m_report.carried_lips[first + std::size_t(lip)].weights.emplace_back(x, w);
+        });
+      for (std::size_t l = first; l < m_report.carried_lips.size(); ++l) {
+        auto& weights = m_report.carried_lips[l].weights;
+        FT sum = 0;
+        for (const auto& xw : weights) sum += xw.second;
+        for (auto& xw : weights) xw.second /= sum;
+      }
+    }
   }
 
   CDT& m_cdt;

@@ -49,11 +49,12 @@ namespace CVT_2 {
 ///     which never moves anyway). Their cells count in the energy.
 ///   - `region(r)`, `region_rings(k)`: a local relaxation. Only the free generators among
 ///     the points `r` (vertices of `cdt`: the changed cells of a `Constraint_editor_2` edit,
-///     say) and within `k` rings of them move (`k` an integer \f$\ge 0\f$, default 0), and only
-///     the cells their moves can change are evaluated (`Cvt_energy_2::set_region()`): an
-///     iteration costs the region, not the triangulation, and the faces' blind tags stay right
-///     everywhere if they were (a diagram of `cdt` needs no `update()` after it). The energy
-///     and move ratios of the result are the region's. Faces are not laid out.
+///     say) and within `k` rings of them (grown through free generators) move (`k` an integer
+///     \f$\ge 0\f$, default 0), and only the cells their moves can change are evaluated
+///     (`Cvt_energy_2::set_region()`): an iteration costs the region, not the triangulation, and
+///     the faces' blind tags stay right everywhere if they were (a diagram of `cdt` needs no
+///     `update()` after it). The energy and move ratios of the result are the region's. Faces are
+///     not laid out.
 ///   - `geom_traits(t)`: a model of `BvdTraits_2` for the diagram; default `Bvd_traits_2`.
 /// \throws std::invalid_argument for a bad parameter value, naming it (a fixed or region point
 ///         that is not a vertex); Domain_error if the

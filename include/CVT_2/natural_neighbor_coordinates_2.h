@@ -8,6 +8,7 @@
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/internal/Virtual_insertion.h>
 #include <CVT_2/internal/construct_cell.h>
+#include <CVT_2/internal/lips.h>
 #include <CVT_2/internal/parallel/run_chunks.h>
 #include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/valid_point.h>
@@ -332,13 +333,29 @@ CGAL::Triple<OutputIterator, typename Diagram::FT, bool> natural_neighbor_coordi
 }
 
 /// \ingroup PkgCvt2Ref
+/// The lip of node `v` that `q` sees it from, numbered as `natural_neighbor_matrix_2()` numbers
+/// the lips (`lips(true)`): the wedges of the domain between the constraints of `v`,
+/// counterclockwise; 0 for a free node. A value on each lip of a node along a crack is then the
+/// field's limit from that side: its value at `v` seen from a point `q` just off the crack.
+/// Returns -1 if no wedge of the domain around `v` holds the direction to `q`.
+template <class Diagram>
+int node_lip_2(const Diagram& bvd, typename Diagram::Vertex_handle v,
+               const typename Diagram::Point_2& q) {
+  return internal::lip_toward(bvd.triangulation(), v, q);
+}
+
+/// \ingroup PkgCvt2Ref
 /// The natural-neighbour coordinates of many queries as a sparse matrix in compressed rows:
 /// row k holds the normalized coordinates of `queries[k]` (summing to 1; empty for a query
-/// outside the closed domain), in `columns` (nodes, numbered by `nodes`) and `values`.
+/// outside the closed domain), in `columns` (nodes, numbered by `nodes`, then their lips if
+/// asked for) and `values`.
 template <class Vertex_handle, class FT>
 struct Natural_neighbor_matrix_2 {
   std::vector<Vertex_handle> nodes;  ///< column j is node `nodes[j]`: the diagram's generators,
                                      ///< in the triangulation's order of vertices
+  /// With `lips(true)`: column `nodes.size() + k` is a lip of node `lip_nodes[k]` (a column),
+  /// the lips of a node in a row, counterclockwise around it
+  std::vector<std::size_t> lip_nodes;
   std::vector<std::size_t> row_offsets{0};  ///< row k: `[row_offsets[k], row_offsets[k + 1])`
   std::vector<std::size_t> columns;         ///< by row, increasing within a row
   std::vector<FT> values;                   ///< likewise
@@ -351,8 +368,16 @@ struct Natural_neighbor_matrix_2 {
 /// method at those points. Queries are taken in chunks in their order, each located from the
 /// one before it (spatially sorted queries locate fastest); the result is the same, bit for bit,
 /// whatever the number of threads.
+///
+/// With `lips(true)`, a node with two lips or more (a vertex along a crack, or where a crack
+/// meets another constraint: the wedges of the domain between its constraints) has a column
+/// for each, after the nodes' columns, and its own column stays empty: a query's weight goes to
+/// the lip it sees the node from. A field that jumps across a crack then has a value on each
+/// lip of each node on it (the lip duplication of the constrained natural element method). A
+/// query on a constraint through a node counts on one of the lips beside it; one at the node,
+/// on its lip 0.
 /// \param np optional named parameters: `natural_neighbor_method(m)` (default `SIBSON`),
-///        `number_of_threads(n)` (default 0, one per core).
+///        `number_of_threads(n)` (default 0, one per core), `lips(b)` (default false).
 /// \throws std::invalid_argument for a query that is not finite, naming it.
 template <class Diagram, class PointRange, class NP = No_named_parameters>
 Natural_neighbor_matrix_2<typename Diagram::Vertex_handle, typename Diagram::FT>
@@ -365,6 +390,7 @@ natural_neighbor_matrix_2(const Diagram& bvd, const PointRange& queries,
   const Natural_neighbor_method method =
       choose_parameter(get_parameter(np, natural_neighbor_method_t()), SIBSON);
   const auto threads = choose_parameter(get_parameter(np, number_of_threads_t()), 0u);
+  const bool with_lips = choose_parameter(get_parameter(np, lips_t()), false);
   Natural_neighbor_matrix_2<Vertex_handle, FT> m;
   const auto& cdt = bvd.triangulation();
   // Columns in a hash map: the diagram is not ours to write (vertex ids may hold a mesh's
@@ -378,7 +404,18 @@ natural_neighbor_matrix_2(const Diagram& bvd, const PointRange& queries,
       column[v] = m.nodes.size();
       m.nodes.push_back(v);
     }
+  // the first lip column of each node with two lips or more
+  CGAL::Unique_hash_map<Vertex_handle, std::size_t> lip_column(std::size_t(-1));
+  if (with_lips)
+    for (std::size_t j = 0; j < m.nodes.size(); ++j) {
+      const Vertex_handle v = m.nodes[j];
+      const int lips = cdt.are_there_incident_constraints(v) ? internal::number_of_lips(cdt, v) : 1;
+      if (lips < 2) continue;
+      lip_column[v] = m.nodes.size() + m.lip_nodes.size();
+      m.lip_nodes.insert(m.lip_nodes.end(), std::size_t(lips), j);
+    }
   const auto& columns = column;  // const from here: lookups only, thread-safe
+  const auto& lip_columns = lip_column;
   const std::vector<Point_2> q(std::begin(queries), std::end(queries));
   constexpr std::size_t chunk = 1024;
   const std::size_t chunks = (q.size() + chunk - 1) / chunk;
@@ -400,8 +437,11 @@ natural_neighbor_matrix_2(const Diagram& bvd, const PointRange& queries,
       for (const auto& e : w) norm += e.second;
       row.clear();
       for (const auto& e : w) {
-        const std::size_t j = columns[e.first];
+        std::size_t j = columns[e.first];
         CGAL_assertion(j != std::size_t(-1));  // a neighbour is a vertex of a domain face
+        if (with_lips && lip_columns.is_defined(e.first))
+          j = lip_columns[e.first] +
+              std::size_t(std::max(0, internal::lip_toward(cdt, e.first, q[k])));
         row.emplace_back(j, e.second / norm);
       }
       std::sort(row.begin(), row.end(),

@@ -504,7 +504,7 @@ def bounded_voronoi(domain, points, threads=0, *, boundary_tolerance=None) -> "B
     )
 
 
-def natural_neighbours(domain, nodes, queries, method="sibson", threads=0, *, boundary_tolerance=None):
+def natural_neighbours(domain, nodes, queries, method="sibson", threads=0, *, boundary_tolerance=None, lips=False):
     """The natural-neighbour coordinates of ``queries`` on the bounded Voronoi diagram of
     ``domain`` and ``nodes``, as a sparse matrix ``M``: the shape functions of the constrained
     natural element method, in which a node that a constraint hides from a query gets no
@@ -533,13 +533,25 @@ def natural_neighbours(domain, nodes, queries, method="sibson", threads=0, *, bo
     library's ``natural_neighbor_matrix_2()`` (the ``natural_neighbours`` example prints
     them), bit for bit.
 
+    With ``lips=True``, a node along a crack (two lips or more: the wedges of the domain
+    between its constraints) gets a column for each lip after all the others, and its own
+    column stays empty: a query's weight goes to the lip it sees the node from, so that a field
+    that jumps across the crack has a value on each lip. ``M.lip_columns``, int (L,), gives the
+    node column that each of the last L columns splits (lips of a node counterclockwise).
+
     Errors: DomainError for a node outside the domain or a query that is not finite, naming
     its row.
     """
     if method not in ("sibson", "laplace"):
         raise ValueError(f"method must be 'sibson' or 'laplace', not {method!r}")
     m = _cvt2.natural_neighbours(
-        _impl(domain), nodes, queries, method, _count(threads, "threads"), _tolerance(boundary_tolerance)
+        _impl(domain),
+        nodes,
+        queries,
+        method,
+        _count(threads, "threads"),
+        _tolerance(boundary_tolerance),
+        bool(lips),
     )
     try:
         import scipy.sparse
@@ -548,6 +560,7 @@ def natural_neighbours(domain, nodes, queries, method="sibson", threads=0, *, bo
     else:
         matrix = scipy.sparse.csr_matrix((m["data"], m["indices"], m["indptr"]), shape=m["shape"])
     matrix.inside = m["inside"]
+    matrix.lip_columns = m["lip_columns"]
     return matrix
 
 
@@ -563,8 +576,11 @@ class ConstraintEditor:
     carry a field over to the new vertices (their Sibson coordinates in the diagram before the
     edit, each row summing to 1), in compressed rows: new vertex k's nodes are
     ``weights_nodes[weights_indptr[k]:weights_indptr[k + 1]]`` (float (., 2), by coordinates)
-    with ``weights`` (empty outside the domain; lips of the new constraint are not told apart
-    yet). Polylines inserted here
+    with ``weights`` (empty outside the domain), from both sides of the new constraint; and
+    the same for each lip of the new vertices along a crack, from its side only:
+    ``lip_vertices`` float (L, 2), ``lips`` int (L,) (numbered as ``natural_neighbours(...,
+    lips=True)`` numbers them), ``lip_weights_indptr``, ``lip_weights_nodes``,
+    ``lip_weights``. Polylines inserted here
     get ids 0, 1, ... in order; the domain's own constraints have none (their vertices can
     move). A point outside the domain, or an edge that would cross another constraint off a
     vertex, raises DomainError naming both, and changes nothing.
@@ -596,6 +612,14 @@ class ConstraintEditor:
         """Removes constraint ``id``; its vertices stay, as free generators where no other
         constraint holds them. Returns the report."""
         return self._impl.remove_constraint(_count(id, "id"))
+
+    def relax(self, rings=2, iterations=5) -> dict:
+        """``iterations`` Lloyd iterations on the free generators within ``rings`` rings of the
+        last edit's changed cells, evaluated around them only (``lloyd_optimize_2`` with
+        ``region``): the cells around a crack's tip made centroidal again, at a cost that does
+        not grow with the diagram. Returns ``moved_from`` and ``moved_to``, float (k, 2): the
+        generators that moved (their cells and their neighbours' changed)."""
+        return self._impl.relax(_count(rings, "rings"), _count(iterations, "iterations"))
 
     @property
     def report(self) -> dict:

@@ -121,3 +121,90 @@ def test_a_move_next_to_a_hole_keeps_the_hole():
     want = cells_by_generator(cvt2.bounded_voronoi(moved, points))
     assert np.array_equal(got[0], want[0])
     assert np.allclose(got[1], want[1], rtol=1e-9, atol=1e-12)
+
+
+def test_lips_carry_and_interpolate_each_side():
+    """A crack along y = 5: each lip of its new vertices is fed from its side only, and the
+    natural-neighbour matrix with lips interpolates a field that jumps across it exactly, off
+    its tips."""
+    rng = np.random.default_rng(8)
+    points = rng.uniform(0, 10, (1500, 2))
+    points = points[np.abs(points[:, 1] - 5) > 1e-9]
+    editor = cvt2.ConstraintEditor(cvt2.Domain(SQUARE, RING), points)
+    crack = editor.insert_constraint([[0, 5], [1, 5]])
+    report = editor.extend_constraint(crack, [6, 5], spacing=0.25)
+    assert len(report["lips"]) == 2 * (len(report["new_vertices"]) - 1)  # the tip has one lip
+    for k in range(len(report["lips"])):
+        rows = slice(report["lip_weights_indptr"][k], report["lip_weights_indptr"][k + 1])
+        dy = report["lip_weights_nodes"][rows][:, 1] - 5
+        assert np.all(dy >= 0) or np.all(dy <= 0)
+        assert report["lip_weights"][rows].sum() == pytest.approx(1, abs=1e-12)
+
+    # the diagram of the cracked square, and queries on both sides
+    line = editor.constraint_vertices(crack)
+    n = len(SQUARE)
+    domain = cvt2.Domain(
+        np.vstack([SQUARE, line]),
+        np.vstack([RING, np.column_stack([np.arange(n, n + len(line) - 1), np.arange(n + 1, n + len(line))])]),
+    )
+    queries = np.column_stack([rng.uniform(0.5, 5.5, 2000), 5 + rng.choice([-1, 1], 2000) * rng.uniform(1e-9, 0.5, 2000)])
+    plain = cvt2.natural_neighbours(domain, points, queries)
+    m = cvt2.natural_neighbours(domain, points, queries, lips=True)
+    d = plain.shape[1]
+    lips = m.lip_columns
+    assert m.shape == (len(queries), d + len(lips))
+    assert len(lips) == 2 * (len(line) - 2) + 2  # inner crack vertices; the end on the boundary
+    fold = np.zeros((d + len(lips), d))
+    fold[np.arange(d), np.arange(d)] = 1
+    fold[d + np.arange(len(lips)), lips] = 1
+    dense = np.asarray(m @ fold) if hasattr(m, "toarray") else None
+    if dense is not None:
+        assert np.array_equal(dense, plain.toarray())
+    # the field: 1 above, 0 below; each lip's value from the queries that use it
+    all_points = np.vstack([points, domain.vertices])
+    above = (all_points[:, 1] > 5).astype(float)
+    value = np.concatenate([above, np.zeros(len(lips))])
+    mm = m.toarray() if hasattr(m, "toarray") else None
+    if mm is None:
+        return
+    used_lips = 0
+    for k in range(len(lips)):
+        used = mm[:, d + k] > 0
+        if not used.any():  # a lip far from the queries
+            continue
+        used_lips += 1
+        sides = np.sign(queries[used, 1] - 5)
+        assert np.all(sides == sides[0])  # a lip is seen from one side
+        value[d + k] = 1.0 if sides[0] > 0 else 0.0
+    assert used_lips >= len(lips) - 6
+    on_crack = np.isclose(all_points[:, 1], 5) & (all_points[:, 0] > 0)
+    tip = np.flatnonzero(on_crack & (all_points[:, 0] == line[-1][0]))
+    clear = mm[:, tip].sum(axis=1) == 0
+    assert clear.sum() > 1000
+    expected = (queries[:, 1] > 5).astype(float)
+    assert np.allclose((mm @ value)[clear], expected[clear], atol=1e-12, rtol=0)
+
+
+def test_relax_moves_only_near_the_tip_and_matches_a_rebuild():
+    rng = np.random.default_rng(4)
+    points = cvt2.optimize(cvt2.Domain(SQUARE, RING), rng.uniform(0, 10, (1500, 2))).points
+    editor = cvt2.ConstraintEditor(cvt2.Domain(SQUARE, RING), points)
+    crack = editor.insert_constraint([[0, 4.1], [0.5, 4.2]])
+    for k in range(1, 8):
+        editor.extend_constraint(crack, [0.5 + 0.3 * k, 4.2 + 0.05 * k])
+        line = editor.constraint_vertices(crack)
+        moved = editor.relax(rings=2, iterations=4)
+        assert 0 < len(moved["moved_from"]) < 100
+        # near the crack only: within a few cell sizes (0.26) of its vertices
+        near = np.min(np.hypot(*(moved["moved_from"][:, None, :] - line[None, :, :]).T), axis=0)
+        assert np.max(near) < 1.5
+    now = editor.bounded_voronoi()
+    # the diagram kept current is the one built from scratch on the points as they are
+    fixed = np.vstack([SQUARE, editor.constraint_vertices(crack)])
+    free = np.array([p for p in now.points if not (fixed == p).all(axis=1).any()])
+    assert len(free) == 1500
+    rebuilt = scratch(editor, free, [])
+    a, b = cells_by_generator(now), cells_by_generator(rebuilt)
+    assert np.array_equal(a[0], b[0])
+    assert np.allclose(a[1], b[1], rtol=0, atol=1e-12)
+    assert np.allclose(a[2], b[2], rtol=0, atol=1e-12)

@@ -119,7 +119,9 @@ std::vector<typename CDT::Vertex_handle> fixed_vertices(const CDT& cdt, const NP
 }
 
 // With the named parameter `region` (a range of points, vertices of `cdt`): the free vertices
-// among them and within `region_rings` (default 0) rings of them, the only ones to move.
+// among them and within `region_rings` (default 0) rings of them, the only ones to move. The
+// rings grow from the points and from free vertices only: a constrained vertex reached on the
+// way (the end of a long boundary edge) would take them far away.
 // \throws std::invalid_argument naming a point that is not a vertex of `cdt`.
 template <class CDT, class NP>
 std::optional<std::vector<typename CDT::Vertex_handle>> region_vertices(const CDT& cdt,
@@ -143,6 +145,7 @@ std::optional<std::vector<typename CDT::Vertex_handle>> region_vertices(const CD
     for (std::size_t ring = 0, first = 0; ring < rings && cdt.dimension() == 2; ++ring) {
       const std::size_t last = reached.size();
       for (std::size_t k = first; k < last; ++k) {
+        if (ring > 0 && cdt.are_there_incident_constraints(reached[k])) continue;
         auto vc = cdt.incident_vertices(reached[k]), done = vc;
         do
           if (!cdt.is_infinite(vc) && seen.insert(vc).second) reached.push_back(vc);
