@@ -82,15 +82,19 @@ void check_segment(const CDT& cdt, const typename CDT::Point_2& p, const typenam
   const Face_handle start = cdt.locate(p, lt, li, hint);
   if (cdt.dimension() < 2 || cdt.is_infinite(start))
     throw Domain_error(what() + ": " + to_string(p) + " is outside the triangulation");
-  for (const Point_2* x : {&p, &q}) {
-    const Face_handle f = cdt.locate(*x, lt, li, start);
-    if (domain && !located_in_domain(cdt, f, lt, li))
-      throw Domain_error(what() + ": " + to_string(*x) + " is outside the domain");
-  }
-  std::vector<Face_handle> stack{start};
-  Handle_set<Face_handle> seen;
+  if (domain && !located_in_domain(cdt, start, lt, li))
+    throw Domain_error(what() + ": " + to_string(p) + " is outside the domain");
+  const Face_handle end = cdt.locate(q, lt, li, start);
+  if (domain && !located_in_domain(cdt, end, lt, li))
+    throw Domain_error(what() + ": " + to_string(q) + " is outside the domain");
+  // scratch kept from call to call: a crack's step checks one short segment
+  thread_local std::vector<Face_handle> stack;
+  thread_local Handle_set<Face_handle> seen;
+  thread_local std::vector<Point_2> on_segment;
+  stack.assign(1, start);
+  seen.clear();
   seen.insert(start);
-  std::vector<Point_2> on_segment;
+  on_segment.clear();
   while (!stack.empty()) {
     const Face_handle h = stack.back();
     stack.pop_back();
