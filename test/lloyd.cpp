@@ -967,5 +967,5 @@ TEST_CASE(
   // a region point that is not a generator is an error that names it
   CHECK_THROWS_WITH(
       CVT_2::lloyd_optimize_2(a.cdt, CVT_2::parameters::region(std::vector<Point>{Point(-7, -7)})),
-      "region: (-7, -7) is not a generator");
+      "region: (-7, -7) is not a generator (insert it first)");
 }

@@ -15,6 +15,10 @@
 #include <CVT_2/IO/write_vtu.h>
 #include <CVT_2/Simulation_grid_2.h>
 #include <CVT_2/conforming_sites_2.h>
+#include <CVT_2/insert_generators_2.h>
+#include <CVT_2/lbfgs_optimize_2.h>
+#include <CVT_2/lloyd_optimize_2.h>
+#include <CVT_2/random_points_in_domain_2.h>
 #include <CVT_2/resample_constraints_2.h>
 
 #include <CGAL/Polygon_2_algorithms.h>
@@ -236,10 +240,11 @@ TEST_CASE("the mesh of random domains: holes, touching polylines, points on cons
 
 namespace {
 
-// The unit square, and with `inner` the segments y = 0.3 and x = 0.7 (cells on both sides).
-Cdt_ids unit_square(bool inner) {
+// The unit square (or [0, 1] x [0, height]), and with `inner` the segments y = 0.3 and x = 0.7
+// (cells on both sides).
+Cdt_ids unit_square(bool inner, double height = 1) {
   CVT_2::IO::Poly_data<Point> poly;
-  add_ring(poly, {{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  add_ring(poly, {{0, 0}, {1, 0}, {1, height}, {0, height}});
   if (inner) {
     poly.vertices.insert(poly.vertices.end(), {{0.1, 0.3}, {0.9, 0.3}, {0.7, 0.45}, {0.7, 0.9}});
     poly.segments.push_back({4, 5});
@@ -585,12 +590,7 @@ TEST_CASE("conforming sites: the faces between each mirrored pair are the line's
       CHECK(std::sqrt(CGAL::squared_distance(n, l)) ==
             Approx(std::sqrt(CGAL::squared_distance(n, r))).epsilon(1e-12));
   }
-  Cdt_ids cdt;
-  CVT_2::IO::Poly_data<Point> poly;
-  add_ring(poly, {{0, 0}, {1, 0}, {1, 1}, {0, 1}});
-  poly.vertex_lines.assign(poly.vertices.size(), 0);
-  poly.segment_lines.assign(poly.segments.size(), 0);
-  CVT_2::IO::insert_poly(cdt, poly);
+  Cdt_ids cdt = unit_square(false);
   CVT_2::insert_generators_2(cdt, c.sites);
   const Bvd_ids bvd(cdt);
   const Mesh mesh(bvd);
@@ -620,6 +620,56 @@ TEST_CASE("conforming sites: the faces between each mirrored pair are the line's
   CHECK_THROWS_AS(CVT_2::conforming_sites_2(line, 0.0), std::invalid_argument);
   CHECK_THROWS_AS(CVT_2::conforming_sites_2(std::vector<Point>{{0, 0}, {0, 0}}, 1.0),
                   std::invalid_argument);
+}
+
+TEST_CASE("keep_out: no free generator stays in or enters the circles of a conforming line",
+          "[mesh][grid][keep_out]") {
+  // the bent river of python/tests/test_modflow_grid.py, in kilometres, at the cell size of
+  // 1 500 cells
+  const std::vector<Point> line{{0, 0.25}, {0.3, 0.28}, {0.55, 0.4}, {0.8, 0.38}, {1, 0.45}};
+  const double h = std::sqrt(0.6 / 1500);
+  const auto c = CVT_2::conforming_sites_2(line, h);
+  CVT_2::Conforming_disks<Point> disks;
+  disks.add(c);
+  // outside(): a point inside goes out along the radius, one outside stays
+  CHECK(disks.outside(Point(0.5, 0.59), Point(0.5, 0.595)) == Point(0.5, 0.595));
+  const Point inside = c.nodes[2] + K::Vector_2(1e-4, 2e-4);
+  REQUIRE(disks.contains(inside));
+  const Point out = disks.outside(inside, inside);
+  CHECK(!disks.contains(out));
+  CHECK(std::sqrt(CGAL::squared_distance(out, inside)) < 2 * h);
+  std::size_t inside_without = 0;
+  for (const bool keep : {true, false}) {
+    for (const bool lbfgs : {false, true}) {
+      CAPTURE(keep, lbfgs);
+      Cdt_ids cdt = unit_square(false, 0.6);
+      std::vector<Point> sites;
+      for (const Point& p : c.sites)
+        if (p.x() > 0 && p.x() < 1) sites.push_back(p);
+      std::vector<Point> points;
+      for (const Point& p : CVT_2::random_points_in_domain_2(cdt, 1500 - sites.size(),
+                                                             CVT_2::parameters::random_seed(1)))
+        if (!disks.contains(p)) points.push_back(p);
+      for (const std::size_t k : {5, 20, 35})  // three starts inside circles, off their nodes
+        points.push_back(c.nodes[k] + K::Vector_2(0.3 * c.radii[k], 0.1 * c.radii[k]));
+      CVT_2::insert_generators_2(cdt, sites);
+      CVT_2::insert_generators_2(cdt, points);
+      const auto np = CVT_2::parameters::fixed_points(sites);
+      const CVT_2::Conforming_disks<Point> none;
+      if (lbfgs)
+        CVT_2::lbfgs_optimize_2(cdt, np.keep_out(keep ? disks : none));
+      else
+        CVT_2::lloyd_optimize_2(cdt, np.keep_out(keep ? disks : none));
+      std::size_t in = 0;
+      for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+        in += disks.contains(v->point());
+      if (keep)
+        CHECK(in == 0);
+      else
+        inside_without += in;
+    }
+  }
+  CHECK(inside_without > 0);  // without keep_out, starts inside stay there: the test can tell
 }
 
 TEST_CASE("a cell that meets itself at its generator becomes one ring per lobe", "[mesh]") {

@@ -33,6 +33,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -181,10 +182,25 @@ class Cvt_energy_2 {
                               const TargetAt& target, std::size_t passes,
                               internal::Move_buffers<CDT>& buffers) {
     buffers.changed = m_has_region ? &m_changed_faces : nullptr;
-    return internal::move_free_vertices(m_cdt, m_chunks, m_number_of_threads, order, vertex, target,
-                                        passes, buffers);
+    if (!m_keep_out)
+      return internal::move_free_vertices(m_cdt, m_chunks, m_number_of_threads, order, vertex,
+                                          target, passes, buffers);
+    std::size_t size = 0;
+    for (const std::size_t i : order) size = std::max(size, i + 1);
+    m_kept_out.resize(size);
+    for (const std::size_t i : order) m_kept_out[i] = m_keep_out(vertex(i)->point(), target(i));
+    return internal::move_free_vertices(
+        m_cdt, m_chunks, m_number_of_threads, order, vertex,
+        [this](std::size_t i) -> const Point_2& { return m_kept_out[i]; }, passes, buffers);
   }
   /// \endcond
+
+  /// Keeps the moves of `move_generators()` out of places: a generator that would move from
+  /// `x` to `t` moves to `keep_out(x, t)` instead (`Conforming_disks::outside()`: out of the
+  /// circles of conforming lines). An empty function (the default) keeps nothing out.
+  void set_keep_out(std::function<Point_2(const Point_2&, const Point_2&)> keep_out) {
+    m_keep_out = std::move(keep_out);
+  }
 
   const Evaluation& last_evaluation() const { return m_evaluation; }  ///< the last evaluation
   /// the number of calls of `evaluate()` so far
@@ -284,6 +300,8 @@ class Cvt_energy_2 {
   std::vector<Chunk> m_chunk_sums;
   Free_generators m_moves;  // a list for each chunk, not joined by a copy
   std::unordered_set<Vertex_handle> m_fixed;
+  std::function<Point_2(const Point_2&, const Point_2&)> m_keep_out;
+  std::vector<Point_2> m_kept_out;  // the targets kept out, by generator number
   // With a region: its free generators, the generators whose cells are computed, the faces the
   // moves changed since the last evaluation; scratch for the tags.
   bool m_has_region = false;

@@ -71,6 +71,11 @@ class Lloyd_optimizer_2 {
   /// Moves only the free generators among `vertices`, evaluating only around them:
   /// `Cvt_energy_2::set_region()`. Before the first evaluation.
   void set_region(const std::vector<Vertex_handle>& vertices) { m_energy.set_region(vertices); }
+  /// Keeps the moves out of places: `Cvt_energy_2::set_keep_out()`.
+  template <class KeepOut>
+  void set_keep_out(const KeepOut& keep_out) {
+    m_energy.set_keep_out(keep_out);
+  }
   unsigned number_of_threads() const { return m_energy.number_of_threads(); }  ///< as set
 
   /// Moves every free generator to the centroid that the last `evaluate()` computed (or, if

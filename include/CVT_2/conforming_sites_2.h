@@ -129,24 +129,48 @@ class Conforming_disks {
   /// whether `p` lies inside a circle by more than a rounding (1e-9 of its radius: the
   /// generators of `Conforming_sites` lie on the circles)
   bool contains(const Point_2& p) const {
-    if (m_disks.empty()) return false;
-    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
-    const long long i = cell(x), j = cell(y);
-    for (long long a = i - 1; a <= i + 1; ++a)
-      for (long long b = j - 1; b <= j + 1; ++b) {
-        const auto range = m_buckets.equal_range(key(a, b));
-        for (auto it = range.first; it != range.second; ++it) {
-          const Disk& d = m_disks[it->second];
-          if (std::hypot(x - d.x, y - d.y) < d.r * (1 - 1e-9)) return true;
-        }
+    return containing(CGAL::to_double(p.x()), CGAL::to_double(p.y())) != nullptr;
+  }
+  bool empty() const { return m_disks.empty(); }  ///< whether there is no circle
+
+  /// Where a free generator that moves from `from` toward `to` may go, so that none enters a
+  /// circle (the optimizers' named parameter `keep_out`): `to` if it lies in no circle, else
+  /// `to` pushed out of the circles it lies in along their radii, else (circles that overlap
+  /// too much) `from`.
+  Point_2 outside(const Point_2& from, const Point_2& to) const {
+    double x = CGAL::to_double(to.x()), y = CGAL::to_double(to.y());
+    for (int attempt = 0; attempt < 8; ++attempt) {
+      const Disk* d = containing(x, y);
+      if (d == nullptr) return attempt == 0 ? to : Point_2(x, y);
+      double dx = x - d->x, dy = y - d->y, length = std::hypot(dx, dy);
+      if (!(length > 0)) {  // at the centre: out the way it came
+        dx = CGAL::to_double(from.x()) - d->x, dy = CGAL::to_double(from.y()) - d->y;
+        length = std::hypot(dx, dy);
+        if (!(length > 0)) return from;
       }
-    return false;
+      const double scale = d->r * (1 + 1e-7) / length;
+      x = d->x + dx * scale, y = d->y + dy * scale;
+    }
+    return containing(x, y) == nullptr ? Point_2(x, y) : from;
   }
 
  private:
   struct Disk {
     double x, y, r;
   };
+  const Disk* containing(double x, double y) const {
+    if (m_disks.empty()) return nullptr;
+    const long long i = cell(x), j = cell(y);
+    for (long long a = i - 1; a <= i + 1; ++a)
+      for (long long b = j - 1; b <= j + 1; ++b) {
+        const auto range = m_buckets.equal_range(key(a, b));
+        for (auto it = range.first; it != range.second; ++it) {
+          const Disk& d = m_disks[it->second];
+          if (std::hypot(x - d.x, y - d.y) < d.r * (1 - 1e-9)) return &d;
+        }
+      }
+    return nullptr;
+  }
   long long cell(double v) const { return static_cast<long long>(std::floor(v / m_cell)); }
   static long long key(long long a, long long b) { return a * 1000003LL + b; }
   std::vector<Disk> m_disks;

@@ -39,7 +39,7 @@ namespace CVT_2 {
 ///        `sizing_field`, `quadrature`, `minimum_quadrature_resolution`,
 ///        `maximum_quadrature_resolution`, `move_ratio_bound`, `number_of_iterations` (at most
 ///        that many steps), `maximum_running_time`, `callback` (called after each step),
-///        `verbose`, `number_of_threads`, `fixed_points`, `region`, `region_rings`,
+///        `verbose`, `number_of_threads`, `fixed_points`, `region`, `region_rings`, `keep_out`,
 ///        `geom_traits`), with the same meanings
 ///        and defaults, and
 ///   - `lbfgs_memory(m)`: the number of curvature pairs kept, an integer \f$\ge 0\f$;
@@ -61,6 +61,7 @@ Optimization_result lbfgs_optimize_2(CDT& cdt, const NP& np = parameters::defaul
   lbfgs.set_number_of_threads(options.threads);
   lbfgs.fix_generators(internal::fixed_vertices(cdt, np));
   if (region) lbfgs.set_region(*region);
+  internal::set_keep_out(lbfgs, np);
   return internal::run_optimization(lbfgs, options, "lbfgs");
 }
 

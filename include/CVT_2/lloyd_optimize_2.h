@@ -55,6 +55,9 @@ namespace CVT_2 {
 ///     the faces' blind tags stay right everywhere if they were (a diagram of `cdt` needs no
 ///     `update()` after it). The energy and move ratios of the result are the region's. Faces are
 ///     not laid out.
+///   - `keep_out(k)`: places no free generator may enter, as the circles of conforming lines
+///     (`Conforming_disks`): an object with `bool empty()` and `Point_2 outside(from, to)`,
+///     where a generator that would move from `from` to `to` goes instead.
 ///   - `geom_traits(t)`: a model of `BvdTraits_2` for the diagram; default `Bvd_traits_2`.
 /// \throws std::invalid_argument for a bad parameter value, naming it (a fixed or region point
 ///         that is not a vertex); Domain_error if the
@@ -72,6 +75,7 @@ Optimization_result lloyd_optimize_2(CDT& cdt, const NP& np = parameters::defaul
   lloyd.set_number_of_threads(options.threads);
   lloyd.fix_generators(internal::fixed_vertices(cdt, np));
   if (region) lloyd.set_region(*region);
+  internal::set_keep_out(lloyd, np);
   return internal::run_optimization(internal::Lloyd_steps<Optimizer>{lloyd}, options, "lloyd");
 }
 

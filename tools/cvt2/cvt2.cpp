@@ -506,7 +506,8 @@ class Progress {
 
 // The optimization, with progress on standard error; Ctrl-C ends it early.
 CVT_2::Optimization_result optimize(CDT& cdt, const Options& o, const Sizing_choice& sizing,
-                                    const std::vector<Point_2>& fixed) {
+                                    const std::vector<Point_2>& fixed,
+                                    const CVT_2::Conforming_disks<Point_2>& keep_out) {
   Progress progress(o.quiet);
   const std::function<bool(const CVT_2::Optimization_result&)> callback = std::ref(progress);
   const auto np = CVT_2::parameters::number_of_iterations(o.iterations)
@@ -514,7 +515,8 @@ CVT_2::Optimization_result optimize(CDT& cdt, const Options& o, const Sizing_cho
                       .maximum_running_time(o.time_limit)
                       .number_of_threads(o.threads)
                       .callback(callback)
-                      .fixed_points(fixed);
+                      .fixed_points(fixed)
+                      .keep_out(keep_out);
   const auto run = [&o](CDT& t, const auto& parameters) {
     return o.lbfgs ? CVT_2::lbfgs_optimize_2(t, parameters)
                    : CVT_2::lloyd_optimize_2(t, parameters);
@@ -886,7 +888,7 @@ int run(const Options& o) {
       sizing.refinement->add_point(Point_2(x, y), std::min(size, background), radius);
   }
   insert_random_points(n, o, sizing, cdt, disks);
-  const CVT_2::Optimization_result r = optimize(cdt, o, sizing, fixed);
+  const CVT_2::Optimization_result r = optimize(cdt, o, sizing, fixed, disks);
   if (!conforming_lines.empty() && !o.quiet) {  // what breaks the faces on the lines, if any
     std::size_t inside = 0;
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)

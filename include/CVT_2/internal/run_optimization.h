@@ -96,25 +96,35 @@ Run_options read_run_options(const NP& np) {
   return o;
 }
 
+// The vertices of `cdt` at `points`, in order. \throws std::invalid_argument naming the
+// option `what` and a point that is not a vertex.
+template <class CDT, class PointRange>
+std::vector<typename CDT::Vertex_handle> vertices_at(const CDT& cdt, const PointRange& points,
+                                                     const std::string& what) {
+  std::vector<typename CDT::Vertex_handle> vertices;
+  typename CDT::Face_handle hint;
+  for (const auto& p : points) {
+    typename CDT::Locate_type lt;
+    int li;
+    hint = cdt.locate(p, lt, li, hint);
+    if (lt != CDT::VERTEX)
+      throw std::invalid_argument(what + ": " + to_string(p) +
+                                  " is not a generator (insert it first)");
+    vertices.push_back(hint->vertex(li));
+  }
+  return vertices;
+}
+
 // The free vertices at the points of the named parameter `fixed_points` (none without it; a
 // point on a constraint is a constrained vertex, which never moves anyway).
 // \throws std::invalid_argument naming a point that is not a vertex of `cdt`.
 template <class CDT, class NP>
 std::vector<typename CDT::Vertex_handle> fixed_vertices(const CDT& cdt, const NP& np) {
   std::vector<typename CDT::Vertex_handle> vertices;
-  if constexpr (internal_np::has_parameter<NP, internal_np::fixed_points_t>) {
-    typename CDT::Face_handle hint;
-    for (const auto& p : get_parameter(np, internal_np::fixed_points_t())) {
-      typename CDT::Locate_type lt;
-      int li;
-      hint = cdt.locate(p, lt, li, hint);
-      if (lt != CDT::VERTEX)
-        throw std::invalid_argument("fixed_points: " + to_string(p) +
-                                    " is not a generator (insert it first)");
-      if (!cdt.are_there_incident_constraints(hint->vertex(li)))
-        vertices.push_back(hint->vertex(li));
-    }
-  }
+  if constexpr (internal_np::has_parameter<NP, internal_np::fixed_points_t>)
+    for (const auto v :
+         vertices_at(cdt, get_parameter(np, internal_np::fixed_points_t()), "fixed_points"))
+      if (!cdt.are_there_incident_constraints(v)) vertices.push_back(v);
   return vertices;
 }
 
@@ -133,15 +143,9 @@ std::optional<std::vector<typename CDT::Vertex_handle>> region_vertices(const CD
         "region_rings");
     std::vector<Vertex_handle> reached;
     std::unordered_set<Vertex_handle> seen;
-    typename CDT::Face_handle hint;
-    for (const auto& p : get_parameter(np, internal_np::region_t())) {
-      typename CDT::Locate_type lt;
-      int li;
-      hint = cdt.locate(p, lt, li, hint);
-      if (lt != CDT::VERTEX)
-        throw std::invalid_argument("region: " + to_string(p) + " is not a generator");
-      if (seen.insert(hint->vertex(li)).second) reached.push_back(hint->vertex(li));
-    }
+    for (const Vertex_handle v :
+         vertices_at(cdt, get_parameter(np, internal_np::region_t()), "region"))
+      if (seen.insert(v).second) reached.push_back(v);
     for (std::size_t ring = 0, first = 0; ring < rings && cdt.dimension() == 2; ++ring) {
       const std::size_t last = reached.size();
       for (std::size_t k = first; k < last; ++k) {
@@ -159,6 +163,20 @@ std::optional<std::vector<typename CDT::Vertex_handle>> region_vertices(const CD
     return free;
   } else {
     return std::nullopt;
+  }
+}
+
+// The named parameter `keep_out` (an object with `empty()` and `outside(from, to)`, as
+// Conforming_disks), if given and not empty, to the optimizer's moves.
+template <class Optimizer, class NP>
+void set_keep_out(Optimizer& optimizer, const NP& np) {
+  if constexpr (internal_np::has_parameter<NP, internal_np::keep_out_t>) {
+    const auto& keep_out = get_parameter(np, internal_np::keep_out_t());
+    using Point_2 = typename Optimizer::Point_2;
+    if (!keep_out.empty())
+      optimizer.set_keep_out([&keep_out](const Point_2& from, const Point_2& to) {
+        return keep_out.outside(from, to);
+      });
   }
 }
 
