@@ -102,6 +102,18 @@ bool tags_as_rebuilt(const CDT& cdt, BVD& bvd) {
   return true;
 }
 
+// The value of a count option: an integer >= 0, or the program stops with a message.
+int count(const std::string& option, const std::string& text) {
+  char* end = nullptr;
+  const long n = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || n < 0 || n > 1000000) {
+    std::cerr << "bvd_edit: " << option << " takes an integer from 0 to 10^6, not '" << text
+              << "'\n";
+    std::exit(EXIT_FAILURE);
+  }
+  return int(n);
+}
+
 }  // namespace
 
 int main(int argc, char* argv[]) {
@@ -121,9 +133,9 @@ int main(int argc, char* argv[]) {
     if (a == "--cells-out")
       cells_out = value();
     else if (a == "--relax-rings")
-      rings = std::atoi(value().c_str());
+      rings = count(a, value());
     else if (a == "--relax-iterations")
-      iterations = std::atoi(value().c_str());
+      iterations = count(a, value());
     else if (a == "--verify")
       verify = true;
     else if (!a.empty() && a[0] == '-') {
