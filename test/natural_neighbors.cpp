@@ -612,6 +612,19 @@ TEST_CASE("lips: a node along a crack has a column for each side, and a jump is 
       const auto up = m.nodes[j]->point() + K::Vector_2(0, 0.01);
       u[n + k] = int(k - first) == CVT_2::internal::lip_toward(d.cdt, m.nodes[j], up) ? 1 : 0;
     }
+    // the lips are numbered by the geometry alone, not by which face a vertex points to
+    for (std::size_t k = 0; k < m.lip_nodes.size(); ++k) {
+      const auto v = m.nodes[m.lip_nodes[k]];
+      const auto up = v->point() + K::Vector_2(0, 0.01);
+      const int lip = CVT_2::node_lip_2(bvd, v, up);
+      const auto kept = v->face();
+      auto fc = d.cdt.incident_faces(v), done = fc;
+      do {
+        v->set_face(fc);
+        CHECK(CVT_2::node_lip_2(bvd, v, up) == lip);
+      } while (++fc != done);
+      v->set_face(kept);
+    }
     std::size_t exact = 0, through_lips = 0;
     for (std::size_t r = 0; r < q.size(); ++r) {
       CAPTURE(q[r]);

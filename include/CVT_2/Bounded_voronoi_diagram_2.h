@@ -24,10 +24,6 @@
 
 namespace CVT_2 {
 
-template <class CDT, class Traits>
-class Constraint_editor_2;
-template <class CDT, class Density, class Quadrature, class Traits>
-class Cvt_energy_2;
 namespace internal {
 struct Tags_as_they_are {};
 }  // namespace internal
@@ -157,34 +153,28 @@ class Bounded_voronoi_diagram_2 {
   // A diagram of `cdt` that leaves the tags as they are, for a user that tags the faces it
   // needs itself (Cvt_energy_2: all at each evaluation, or those around a region).
   Bounded_voronoi_diagram_2(const CDT& cdt, const Traits& traits, internal::Tags_as_they_are)
-      : m_cdt(cdt), m_traits(traits), m_count_stale(true) {}
+      : m_cdt(cdt), m_traits(traits) {}
   /// \endcond
 
   /// Tags the blind faces again, after the triangulation or its domain changed.
-  void update() {
-    m_number_of_blinded_faces = internal::tag_blind_faces(m_cdt, m_traits);
-    m_count_stale = false;
-  }
+  void update() { internal::tag_blind_faces(m_cdt, m_traits); }
   /// \cond SKIP_IN_MANUAL
   // update(), its pass over the faces on `threads` threads, in the chunks of the optimizers
   // (up to date with the triangulation); the same tags.
   void update(const internal::Face_chunks<CDT>& chunks, unsigned threads) {
-    m_number_of_blinded_faces = internal::tag_blind_faces(m_cdt, m_traits, chunks, threads);
-    m_count_stale = false;
+    internal::tag_blind_faces(m_cdt, m_traits, chunks, threads);
   }
   /// \endcond
 
   const CDT& triangulation() const { return m_cdt; }      ///< the triangulation
   const Traits& geom_traits() const { return m_traits; }  ///< the traits
-  /// the number of domain faces that a constraint hides from their circumcenter
+  /// the number of domain faces that a constraint hides from their circumcenter, counted (the
+  /// tags may change without this object: an editor's edits, a relaxation in a region)
   std::size_t number_of_blinded_faces() const {
-    if (m_count_stale) {  // after a Constraint_editor_2's edits
-      m_number_of_blinded_faces = 0;
-      for (auto f = m_cdt.finite_faces_begin(); f != m_cdt.finite_faces_end(); ++f)
-        m_number_of_blinded_faces += f->is_blinded() ? 1 : 0;
-      m_count_stale = false;
-    }
-    return m_number_of_blinded_faces;
+    std::size_t n = 0;
+    for (auto f = m_cdt.finite_faces_begin(); f != m_cdt.finite_faces_end(); ++f)
+      n += f->is_blinded() ? 1 : 0;
+    return n;
   }
 
   /// whether `v` lies in the closed domain, and so has a cell.
@@ -227,16 +217,11 @@ class Bounded_voronoi_diagram_2 {
   }
 
  private:
-  template <class, class>
-  friend class Constraint_editor_2;
-  template <class, class, class, class>
-  friend class Cvt_energy_2;
-  void tags_changed() { m_count_stale = true; }  // some faces were tagged again
-
   const CDT& m_cdt;
   Traits m_traits;
-  mutable std::size_t m_number_of_blinded_faces = 0;
-  mutable bool m_count_stale = false;
+  // GCC 12 takes an object of only a reference and empty traits for uninitialized when it
+  // passes the traits on (-Wmaybe-uninitialized); a byte written at construction tells it.
+  bool m_constructed = true;
 };
 
 }  // namespace CVT_2

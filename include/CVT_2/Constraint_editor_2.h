@@ -618,7 +618,6 @@ class Constraint_editor_2 {
     m_changed.erase(std::unique(m_changed.begin(), m_changed.end()), m_changed.end());
     m_report.changed_cells.assign(m_changed.begin(), m_changed.end());
     m_report.retagged_faces = m_region.size();
-    m_diagram.tags_changed();
     if (m_carry) split_lips();
   }
 

@@ -154,7 +154,9 @@ class Cvt_energy_2 {
   /// `move_generators()` changed them, with the faces that the constrained edges there blind;
   /// the other faces keep their tags, which stay right if they were. An evaluation then costs
   /// the region, not the triangulation: a relaxation after a local change (a constraint edit).
-  /// The energy is that of the cells computed. Replaces the region set before.
+  /// The energy is that of the cells computed; when a move brings a generator from farther
+  /// than two rings next to the region, its cell joins them, and L-BFGS's line search may then
+  /// fall back to a Lloyd step. Replaces the region set before.
   void set_region(const std::vector<Vertex_handle>& vertices) {
     clear_region();
     m_has_region = true;
@@ -176,13 +178,14 @@ class Cvt_energy_2 {
   // Moves the free generators vertex(i) toward target(i), for the i of `order`, in at most
   // `passes` passes (internal::move_free_vertices(), by the chunks of the last evaluation);
   // with a region, the moves are local and the faces they change are noted for the next
-  // evaluation. Returns how many did not reach their target.
+  // evaluation; with `keep_out` (and set_keep_out()), the targets are kept out first. Returns
+  // how many did not reach their target.
   template <class OrderRange, class VertexAt, class TargetAt>
   std::size_t move_generators(const OrderRange& order, const VertexAt& vertex,
                               const TargetAt& target, std::size_t passes,
-                              internal::Move_buffers<CDT>& buffers) {
+                              internal::Move_buffers<CDT>& buffers, bool keep_out = true) {
     buffers.changed = m_has_region ? &m_changed_faces : nullptr;
-    if (!m_keep_out)
+    if (!m_keep_out || !keep_out)
       return internal::move_free_vertices(m_cdt, m_chunks, m_number_of_threads, order, vertex,
                                           target, passes, buffers);
     std::size_t size = 0;
@@ -454,7 +457,6 @@ void Cvt_energy_2<CDT, Density, Quadrature, Traits>::tag_region() {
       while (++fc != done);
   }
   internal::retag_faces(m_cdt, m_diagram.geom_traits(), m_faces, m_seen, m_stack);
-  m_diagram.tags_changed();
 }
 
 // The cells of the faces [first, last) with a batch density (DensityFunction_2::evaluate()):

@@ -361,8 +361,8 @@ class Lbfgs_optimizer_2 {
   // still on their way after the first ones); if one cannot get there to the bit, the Lloyd step
   // that follows starts from an evaluation of where they are.
   void go_back(std::size_t resolution) {
-    if (move_to_targets([this](std::size_t i) { return position(m_current, i); }, 4 * max_passes) >
-        0)
+    if (move_to_targets([this](std::size_t i) { return position(m_current, i); }, 4 * max_passes,
+                        false) > 0)
       evaluate(resolution);
   }
 
@@ -376,12 +376,14 @@ class Lbfgs_optimizer_2 {
   // Moves each generator i toward target(i), in the last visit order; returns how many did not
   // get there in `passes` passes. The targets are computed when asked for, not stored; the
   // trial point and the evaluator's list are no longer needed.
+  // With `keep_out` false, places kept out do not count (a move back to where a generator was).
   template <class Target>
-  std::size_t move_to_targets(const Target& target, std::size_t passes) {
+  std::size_t move_to_targets(const Target& target, std::size_t passes, bool keep_out = true) {
     drop_trial();
     m_energy.release_free_generators();
     return m_energy.move_generators(
-        m_order, [this](std::size_t i) { return m_vertices[i]; }, target, passes, m_buffers);
+        m_order, [this](std::size_t i) { return m_vertices[i]; }, target, passes, m_buffers,
+        keep_out);
   }
 
   // Backtracking from the full quasi-Newton step; true if a trial point was accepted.

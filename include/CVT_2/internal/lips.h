@@ -10,19 +10,29 @@
 namespace CVT_2 {
 namespace internal {
 
-// Calls visit(f, lip) for each face f around v, counterclockwise from the first one after a
-// constrained edge, with the number of its lip: the wedges between consecutive constrained edges
-// of v that lie in the domain are lips 0, 1, ... in that order (-1 for a face of another wedge).
-// Returns the number of lips: 0 or 1 for a free vertex, a crack's tip or a vertex of the
-// domain's boundary, 2 along a crack, more at junctions. visit returns true to stop.
+// Calls visit(f, lip) for each face f around v, counterclockwise, with the number of its lip:
+// the wedges between consecutive constrained edges of v that lie in the domain are lips 0, 1,
+// ... counterclockwise from the constrained edge whose other end is the smallest point (so the
+// numbers depend on the geometry only, not on which face v points to), -1 for a face of
+// another wedge. Returns the number of lips: 0 or 1 for a free vertex, a crack's tip or a
+// vertex of the domain's boundary, 2 along a crack, more at junctions. visit returns true to
+// stop.
 template <class CDT, class Visit>
 int for_each_face_by_lip(const CDT& cdt, typename CDT::Vertex_handle v, const Visit& visit) {
   auto fc = cdt.incident_faces(v), done = fc;
   if (fc == nullptr) return 0;
-  do  // the first face after a constrained edge, counterclockwise, if there is one
-    if (fc->is_constrained(CDT::cw(fc->index(v)))) break;
-  while (++fc != done);
-  done = fc;
+  auto start = fc;
+  bool found = false;
+  do {  // the face after that edge, counterclockwise, if there is one
+    const int i = fc->index(v);
+    if (!fc->is_constrained(CDT::cw(i))) continue;
+    const auto end = fc->vertex(CDT::ccw(i));
+    if (!found || (!cdt.is_infinite(end) &&
+                   (cdt.is_infinite(start->vertex(CDT::ccw(start->index(v)))) ||
+                    end->point() < start->vertex(CDT::ccw(start->index(v)))->point())))
+      start = fc, found = true;
+  } while (++fc != done);
+  fc = done = start;
   int lips = 0, lip = -1;
   bool first = true;
   do {

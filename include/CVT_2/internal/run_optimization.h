@@ -148,6 +148,7 @@ std::optional<std::vector<typename CDT::Vertex_handle>> region_vertices(const CD
       if (seen.insert(v).second) reached.push_back(v);
     for (std::size_t ring = 0, first = 0; ring < rings && cdt.dimension() == 2; ++ring) {
       const std::size_t last = reached.size();
+      if (first == last) break;  // no vertex reached by the last ring
       for (std::size_t k = first; k < last; ++k) {
         if (ring > 0 && cdt.are_there_incident_constraints(reached[k])) continue;
         auto vc = cdt.incident_vertices(reached[k]), done = vc;
