@@ -262,6 +262,13 @@ struct Domain {
   std::size_t own_cells = 0;  // the vertices of the triangulation with a cell: on the domain
   // What the writers put in their headers, as cvt2 writes it for the same domain.
   CVT_2::IO::Metadata metadata;
+  // A domain that Domain.resample made: the runs its new vertices can slide on (by their points).
+  std::shared_ptr<const CVT_2::Sliding_runs_2<CDT>> runs;
+  // A domain whose lines optimize(..., constraints="conforming") made conforming: their pairs of
+  // generators and the lines' items.
+  std::vector<CVT_2::Conforming_pair_2<Point_2>> conforming_pairs;
+  std::vector<std::int64_t> conforming_items;
+  std::int64_t item_offset = 0;  // from a polyline's number in the description to its item
 
   std::unique_ptr<CDT> triangulation() const {
     auto cdt = std::make_unique<CDT>();
@@ -270,7 +277,8 @@ struct Domain {
   }
 
   // Builds the triangulation once, which checks the domain, and lists its segments.
-  void finish(std::int64_t item_offset = 0) {
+  void finish(std::int64_t offset = 0) {
+    item_offset = offset;
     if (metadata.empty())
       metadata = {{"program", std::string("cvt2 ") + CVT_2_VERSION_STRING},
                   {"domain", data.file.source},
@@ -279,7 +287,7 @@ struct Domain {
     segment_ends = std::move(segments.ends);
     segment_items = std::move(segments.items);
     if (data.description.index() == 1)
-      for (std::int64_t& item : segment_items) item += item_offset;
+      for (std::int64_t& item : segment_items) item += offset;
     const auto cdt = triangulation();
     for (auto v = cdt->finite_vertices_begin(); v != cdt->finite_vertices_end(); ++v)
       own_cells += CVT_2::internal::has_domain_face(*cdt, v) ? 1 : 0;
@@ -457,13 +465,16 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
     py::gil_scoped_release release;
     const auto cdt = d.triangulation();
     h = size ? *size : CVT_2::cell_size_for_cells_2(*cdt, *cells);
+    auto runs = std::make_shared<CVT_2::Sliding_runs_2<CDT>>();
     auto np = CVT_2::parameters::corner_angle(corner_angle)
                   .fixed_points(fixed_points)
-                  .minimum_ring_area(minimum_ring_area);
+                  .minimum_ring_area(minimum_ring_area)
+                  .sliding_runs(runs.get());
     r = deviation_bound
             ? CVT_2::resample_constraints_2(*cdt, h, np.deviation_bound(*deviation_bound))
             : CVT_2::resample_constraints_2(*cdt, h, np);
     out->data.description = CVT_2::IO::domain_poly_data(*cdt, "<arrays>");
+    out->runs = std::move(runs);
     out->data.file.source = d.data.file.source + " (resampled)";
     using CVT_2::internal::number_text;
     out->metadata = {d.metadata[0],
@@ -495,6 +506,54 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
   report["area_before"] = r.area_before;
   report["area_after"] = r.area_after;
   return py::make_tuple(out, report);
+}
+
+// The domain of `cdt` after its vertices slid (optimize(..., boundary="slide")): its lines where
+// they are now, as Triangle's arrays, so that the diagram's ridges and the writers name them;
+// its generators are the optimization's.
+std::shared_ptr<Domain> slid_domain(const Domain& d, const CDT& cdt) {
+  auto out = std::make_shared<Domain>();
+  auto poly = CVT_2::IO::domain_poly_data(cdt, "<arrays>");
+  std::vector<bool> on_segment(poly.vertices.size(), false);
+  for (const auto& s : poly.segments) on_segment[s[0]] = on_segment[s[1]] = true;
+  std::vector<std::size_t> number(poly.vertices.size(), 0);
+  std::vector<Point_2> kept;
+  for (std::size_t i = 0; i < poly.vertices.size(); ++i)
+    if (on_segment[i]) number[i] = kept.size(), kept.push_back(poly.vertices[i]);
+  for (auto& s : poly.segments) s = {number[s[0]], number[s[1]]};
+  poly.vertices = std::move(kept);
+  out->data.description = std::move(poly);
+  out->data.file.source = d.data.file.source;
+  out->data.file.format = out->format = "arrays";
+  out->metadata = d.metadata;
+  for (auto& [key, value] : out->metadata)
+    if (key == "boundary") value = "slide";
+  out->finish();
+  return out;
+}
+
+// The domain without its lines, which optimize(..., constraints="conforming") makes conforming:
+// `lines` gets them and `items` their items. \throws py::value_error for a domain with none.
+std::shared_ptr<Domain> without_lines(const Domain& d, std::vector<std::vector<Point_2>>& lines,
+                                      std::vector<std::int64_t>& items) {
+  const auto* w = std::get_if<1>(&d.data.description);
+  if (w == nullptr || w->polylines.empty())
+    throw py::value_error(
+        "constraints='conforming' makes the lines of a WKT, GeoJSON or shapely domain "
+        "(LineStrings) conforming; this domain has none");
+  auto out = std::make_shared<Domain>();
+  out->data = d.data;
+  auto& lw = std::get<1>(out->data.description);
+  lines = std::move(lw.polylines);
+  for (const std::size_t item : lw.polyline_lines)
+    items.push_back(std::int64_t(item) + d.item_offset);
+  lw.polylines.clear();
+  lw.polyline_lines.clear();
+  out->format = d.format;
+  out->metadata = d.metadata;
+  out->metadata.emplace_back("constraints", "conforming");
+  out->finish(d.item_offset);
+  return out;
 }
 
 // The number of cells that the size h gives the domain (cells_for_cell_size_2()).
@@ -1074,7 +1133,14 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
                                        std::int64_t threads, const py::object& callback,
                                        double lipschitz_k, const py::object& boundary_size,
                                        std::optional<double> boundary_tolerance,
-                                       const py::object& fixed_object) {
+                                       const py::object& fixed_object, bool slide,
+                                       bool conforming) {
+  if (slide && conforming)
+    throw py::value_error("boundary='slide' and constraints='conforming' do not go together yet");
+  if (slide && !domain->runs)
+    throw py::value_error(
+        "boundary='slide' needs a domain made by Domain.resample(): its vertices slide along the "
+        "polylines it was resampled from");
   const std::vector<Point_2> points = to_points(points_object, "points");
   std::vector<Point_2> fixed =
       fixed_object.is_none() ? std::vector<Point_2>() : to_points(fixed_object, "fixed_points");
@@ -1119,7 +1185,11 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
   {
     py::gil_scoped_release release;
     const CVT_2::internal::Interrupt_scope interruptible{Signal_check()};
-    std::shared_ptr<CDT> cdt = domain->triangulation();
+    std::vector<std::vector<Point_2>> lines;
+    std::vector<std::int64_t> line_items;
+    std::shared_ptr<Domain> lineless =
+        conforming ? without_lines(*domain, lines, line_items) : nullptr;
+    std::shared_ptr<CDT> cdt = (lineless ? lineless : domain)->triangulation();
     const std::optional<Sizing> sizing = choice.sizing(*cdt);
     out->notes = insert_points(*cdt, points, "points", boundary_tolerance);
     if (!fixed.empty()) {  // as cvt2 --fixed-points: inserted after the points
@@ -1133,13 +1203,40 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
       row.reserve(v.size());
       for (std::size_t i = 0; i < v.size(); ++i) row.emplace(&*v[i], std::int64_t(i));
     }
+    // As cvt2 --constraints conforming: the lines' pairs, fixed, at the cells' spacing.
+    CVT_2::Conforming_disks<Point_2> disks;
+    if (lineless) {
+      std::size_t cells = 0, left_out = 0;
+      for (auto v = cdt->finite_vertices_begin(); v != cdt->finite_vertices_end(); ++v)
+        cells += CVT_2::internal::has_domain_face(*cdt, v) ? 1 : 0;
+      const double spacing = std::sqrt(2 * lineless->area /
+                                       (std::sqrt(3.0) * double(std::max<std::size_t>(cells, 1))));
+      lineless->conforming_pairs =
+          CVT_2::insert_conforming_sites_2(*cdt, lines, spacing, disks, &left_out);
+      lineless->conforming_items = line_items;
+      for (const auto& p : lineless->conforming_pairs)
+        fixed.push_back(p.left), fixed.push_back(p.right);
+      if (left_out > 0)
+        out->notes.push_back(std::to_string(left_out) + " of " +
+                             std::to_string(left_out + lineless->conforming_pairs.size()) +
+                             " steps of the conforming lines have a generator outside the "
+                             "domain: left out");
+      out->domain = lineless;
+    }
+    std::optional<CVT_2::Sliding_runs_2<CDT>> runs;
+    if (slide) {
+      runs.emplace(*domain->runs);
+      runs->relocate(*cdt);
+    }
     // As cvt2 runs it.
     const auto np = CVT_2::parameters::number_of_iterations(iterations)
                         .move_ratio_bound(move_ratio)
                         .maximum_running_time(time_limit)
                         .number_of_threads(unsigned(thread_count))
                         .callback(progress)
-                        .fixed_points(fixed);
+                        .fixed_points(fixed)
+                        .keep_out(disks)
+                        .sliding_runs(runs ? &*runs : nullptr);
     const auto run = [&](const auto& parameters) {
       return algorithm == "lbfgs" ? CVT_2::lbfgs_optimize_2(*cdt, parameters)
                                   : CVT_2::lloyd_optimize_2(*cdt, parameters);
@@ -1166,6 +1263,7 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
           CVT_2::density_response_2(bvd, Python_density{choice.function, false});
     const std::string note = CVT_2::internal::density_response_note(out->density_response);
     if (!note.empty()) out->notes.push_back(note);
+    if (slide) out->domain = slid_domain(*domain, *cdt);
     out->cdt = std::move(cdt);
   }
   // The final state, which the callback has not seen unless it stopped the run there.
@@ -1290,7 +1388,11 @@ PYBIND11_MODULE(_cvt2, m) {
       .def("write_cells_on_constraints",
            [](const Diagram& d, const std::string& path, bool barriers) {
              d.write(path, [&](std::ostream& os) {
-               CVT_2::IO::write_cells_on_constraints(os, d.grid(barriers), d.input_items());
+               const Grid grid = d.grid(barriers);
+               CVT_2::IO::write_cells_on_constraints(
+                   os, grid, d.input_items(),
+                   CVT_2::IO::conforming_line_pairs(*d.cdt, grid, d.domain->conforming_pairs,
+                                                    d.domain->conforming_items));
              });
            });
 
@@ -1312,6 +1414,8 @@ PYBIND11_MODULE(_cvt2, m) {
       .def_property_readonly("notes", [](const Editing& e) { return e.notes; });
 
   py::class_<Optimization, std::shared_ptr<Optimization>>(m, "Optimization")
+      .def_property_readonly(
+          "domain", [](const Optimization& o) { return std::const_pointer_cast<Domain>(o.domain); })
       .def_property_readonly("points", [](const Optimization& o) { return to_array(o.points); })
       .def_property_readonly(
           "constrained",
@@ -1360,7 +1464,8 @@ PYBIND11_MODULE(_cvt2, m) {
   m.def("optimize", &optimize, py::arg("domain"), py::arg("points"), py::arg("algorithm"),
         py::arg("density"), py::arg("move_ratio"), py::arg("max_iterations"), py::arg("time_limit"),
         py::arg("threads"), py::arg("callback"), py::arg("lipschitz_k"), py::arg("boundary_size"),
-        py::arg("boundary_tolerance"), py::arg("fixed_points"));
+        py::arg("boundary_tolerance"), py::arg("fixed_points"), py::arg("slide") = false,
+        py::arg("conforming") = false);
   m.def("bounded_voronoi", &bounded_voronoi, py::arg("domain"), py::arg("points"),
         py::arg("threads"), py::arg("boundary_tolerance"));
   m.def("natural_neighbours", &natural_neighbours, py::arg("domain"), py::arg("nodes"),

@@ -1,6 +1,7 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // The conforming mesh of the diagram and the readers and writers around it; the domain's
 // constraints resampled before it.
+#include "support/invariants.h"
 #include "support/random_domain.h"
 #include "support/support.h"
 
@@ -1055,4 +1056,167 @@ TEST_CASE("rings below the minimum area go with what is inside them: islands, la
     CHECK(in_small_rings == (drop ? 0u : 3u + 3u + 3u + 1u));
     check_invariants(after, snapshot_marks(after), 100);
   }
+}
+
+// --- vertices that slide along the input ------------------------------------------------------
+
+namespace {
+
+// The constrained vertices of `cdt` whose points differ from all of `points` (sorted).
+std::size_t vertices_not_among(const Cdt_ids& cdt, const std::vector<Point>& points) {
+  std::size_t n = 0;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    n += cdt.are_there_incident_constraints(v) &&
+         !std::binary_search(points.begin(), points.end(), v->point());
+  return n;
+}
+
+// What sliding promises, after an optimization of `after` (resampled from `before` at size h,
+// bound `bound`) with `runs`: every constrained vertex on the input to rounding, the junctions
+// and ends where they were, every input vertex within the bound of the new lines, the
+// triangulation valid and constrained Delaunay with the sides of each constraint as `marks`
+// recorded them (its constrained points and area now), and its diagram the one a rebuild from
+// its points and constraints gives, cell by cell.
+void check_slid(const Cdt_ids& before, const Cdt_ids& after, double bound,
+                const CVT_2::Sliding_runs_2<Cdt_ids>& runs, Domain_marks marks) {
+  const Input_polylines in = input_polylines(before), out = input_polylines(after);
+  const CGAL::Bbox_2 box = domain_bbox(before);
+  const double scale = std::max(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+  std::size_t off_input = 0, lost_junctions = 0;
+  for (const Point& p : out.vertices) off_input += distance_to(p, in.segments) > 1e-14 * scale;
+  for (const Point& p : in.junctions)
+    lost_junctions += !std::binary_search(out.vertices.begin(), out.vertices.end(), p);
+  double deviation = 0;
+  for (const Point& p : in.vertices) deviation = std::max(deviation, distance_to(p, out.segments));
+  CHECK(off_input == 0);
+  CHECK(lost_junctions == 0);
+  CHECK(deviation <= bound * (1 + 1e-12));
+  CHECK(runs.max_deviation() <= bound * (1 + 1e-12));
+  for (auto& [v, p] : marks.constrained_points) p = v->point();
+  marks.area = domain_area(after);
+  marks.number_of_vertices = after.number_of_vertices();
+  check_invariants(after, marks, 100);
+  // A rebuild: the lines as Triangle's description, then the free generators.
+  auto poly = CVT_2::IO::domain_poly_data(after);
+  Cdt_ids rebuilt = triangulate(poly);
+  CHECK(rebuilt.number_of_vertices() == after.number_of_vertices());
+  const Bvd_ids bvd(after), fresh(rebuilt);
+  std::map<Point, double> area;
+  Cell cell;
+  for (auto v = after.finite_vertices_begin(); v != after.finite_vertices_end(); ++v) {
+    bvd.cell(v, cell);
+    area[v->point()] = signed_area(cell);
+  }
+  std::size_t differ = 0;
+  for (auto v = rebuilt.finite_vertices_begin(); v != rebuilt.finite_vertices_end(); ++v) {
+    fresh.cell(v, cell);
+    differ += std::abs(signed_area(cell) - area[v->point()]) > 1e-12 * scale * scale;
+  }
+  CHECK(differ == 0);
+}
+
+// The unit square, its sides cut into `n` collinear pieces each, with a square hole whose sides
+// are too: runs that are straight, so that the domain stays as it is while vertices slide.
+Cdt_ids finely_cut_squares(int n) {
+  CVT_2::IO::Poly_data<Point> poly;
+  const auto ring = [&](double x, double y, double side) {
+    std::vector<Point> r;
+    const Point corner[] = {{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}};
+    for (int c = 0; c < 4; ++c)
+      for (int i = 0; i < n; ++i) {
+        const Point &a = corner[c], &b = corner[(c + 1) % 4];
+        const double t = double(i) / n;
+        r.emplace_back(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()));
+      }
+    add_ring(poly, r);
+  };
+  ring(0, 0, 1);
+  ring(0.3, 0.4, 0.25);
+  poly.holes.emplace_back(0.4, 0.5);
+  return triangulate(poly);
+}
+
+}  // namespace
+
+TEST_CASE("sliding on straight runs: the energy never rises, the domain stays, a rebuild agrees",
+          "[slide]") {
+  const Cdt_ids before = finely_cut_squares(64);
+  const double h = CVT_2::cell_size_for_cells_2(before, 600);
+  Cdt_ids after = before;
+  CVT_2::Sliding_runs_2<Cdt_ids> runs;
+  CVT_2::resample_constraints_2(after, h, CVT_2::parameters::sliding_runs(&runs));
+  REQUIRE(runs.number_of_runs() == 8u);  // the sides between the corners
+  REQUIRE(runs.number_of_sliding_vertices() > 40u);
+  const Domain_marks marks = snapshot_marks(after);
+  std::vector<Point> start;
+  for (auto v = after.finite_vertices_begin(); v != after.finite_vertices_end(); ++v)
+    start.push_back(v->point());
+  std::sort(start.begin(), start.end());
+  CVT_2::insert_generators_2(
+      after, CVT_2::random_points_in_domain_2(after, 500, CVT_2::parameters::random_seed(5)));
+  std::vector<double> energies;
+  const std::function<bool(const CVT_2::Optimization_result&)> record =
+      [&](const CVT_2::Optimization_result& r) {
+        energies.push_back(r.energy);
+        return true;
+      };
+  const auto r = CVT_2::lloyd_optimize_2(
+      after,
+      CVT_2::parameters::sliding_runs(&runs).number_of_iterations(60).move_ratio_bound(0).callback(
+          record));
+  REQUIRE(energies.size() > 50);
+  std::size_t rises = 0;
+  for (std::size_t i = 1; i < energies.size(); ++i)
+    rises += energies[i] > energies[i - 1] * (1 + 1e-12);
+  CHECK(rises == 0);
+  // The vertices slid, the domain did not change.
+  CHECK(vertices_not_among(after, start) > runs.number_of_sliding_vertices() / 2);
+  CHECK(domain_area(after) == Approx(1 - 0.25 * 0.25).epsilon(1e-12));
+  check_slid(before, after, h / 4, runs, marks);
+  (void)r;
+}
+
+TEST_CASE("sliding on real coasts and county lines: on the input, within the bound, converged",
+          "[slide]") {
+  for (const std::string file : {"france_mainland.poly", "us_massachusetts_counties.wkt",
+                                 "earcut_dude.poly", "world_land_110m.wkt"}) {
+    for (const bool lbfgs : {false, true}) {
+      INFO(file << (lbfgs ? " L-BFGS" : " Lloyd"));
+      Cdt_ids before;
+      CVT_2::IO::read_domain(data_path(file), before);
+      const double h = CVT_2::cell_size_for_cells_2(before, 1500);
+      Cdt_ids after = before;
+      CVT_2::Sliding_runs_2<Cdt_ids> runs;
+      CVT_2::resample_constraints_2(after, h, CVT_2::parameters::sliding_runs(&runs));
+      const Domain_marks marks = snapshot_marks(after);
+      const std::size_t own = after.number_of_vertices();
+      CVT_2::insert_generators_2(
+          after, CVT_2::random_points_in_domain_2(after, 1500 - std::min<std::size_t>(own, 1000),
+                                                  CVT_2::parameters::random_seed(2)));
+      const auto np = CVT_2::parameters::sliding_runs(&runs).number_of_iterations(400);
+      const auto r =
+          lbfgs ? CVT_2::lbfgs_optimize_2(after, np) : CVT_2::lloyd_optimize_2(after, np);
+      CHECK(r.stop_reason == CVT_2::CONVERGED);
+      check_slid(before, after, h / 4, runs, marks);
+    }
+  }
+}
+
+TEST_CASE("sliding runs: bad runs are refused, relocate finds the vertices again", "[slide]") {
+  Cdt_ids cdt = finely_cut_squares(8);
+  CVT_2::Sliding_runs_2<Cdt_ids> runs;
+  CVT_2::resample_constraints_2(cdt, 0.2, CVT_2::parameters::sliding_runs(&runs));
+  REQUIRE(!runs.empty());
+  auto v = cdt.finite_vertices_begin();
+  const std::vector<Point> line{{0, 0}, {1, 0}};
+  CHECK_THROWS_AS(runs.add_run(line, {v, v}, {0, 2}), std::invalid_argument);  // not to the end
+  CHECK_THROWS_AS(runs.add_run(line, {v}, {0}), std::invalid_argument);
+  Cdt_ids copy = cdt;
+  runs.relocate(copy);
+  std::size_t found = 0;
+  for (auto w = copy.finite_vertices_begin(); w != copy.finite_vertices_end(); ++w)
+    found += runs.slider(w) != CVT_2::Sliding_runs_2<Cdt_ids>::none;
+  CHECK(found == runs.number_of_sliding_vertices());
+  Cdt_ids empty;
+  CHECK_THROWS_AS(runs.relocate(empty), std::invalid_argument);
 }

@@ -13,6 +13,7 @@
 #include <CVT_2/Gauss_quadrature_2.h>
 #include <CVT_2/Midpoint_quadrature_2.h>
 #include <CVT_2/Sizing_field_density_2.h>
+#include <CVT_2/Sliding_runs_2.h>
 #include <CVT_2/Uniform_density_2.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/internal/Handle_set.h>
@@ -99,10 +100,13 @@ class Cvt_energy_2 {
   /// What one evaluation found.
   struct Evaluation {
     double energy = 0;                          ///< of all cells
-    double max_move_ratio = 0;                  ///< over the free generators
-    double mean_move_ratio = 0;                 ///< over the free generators
+    double max_move_ratio = 0;                  ///< over the free and sliding generators
+    double mean_move_ratio = 0;                 ///< over the free and sliding generators
     std::size_t number_of_free_generators = 0;  ///< that have a cell
-    std::size_t resolution = 0;                 ///< the quadrature resolution used
+    /// vertices of `Sliding_runs_2` that have a cell; their move ratios are to their
+    /// constrained centroids
+    std::size_t number_of_sliding_generators = 0;
+    std::size_t resolution = 0;  ///< the quadrature resolution used
   };
 
   /// A free generator as the last evaluation found it: the gradient of the energy with respect
@@ -173,6 +177,18 @@ class Cvt_energy_2 {
     m_changed_faces.clear();
   }
   bool has_region() const { return m_has_region; }  ///< whether `set_region()` restricts
+
+  /// Lets the vertices of `runs` slide along their runs (`Sliding_runs_2`): each evaluation
+  /// plans their constrained centroids, counted in the move ratios, and `slide_generators()`
+  /// moves them. Not with a region (`set_region()`), whose vertices are free generators only.
+  /// `runs` must outlive the evaluations; nullptr: none slide (the default).
+  void set_sliding_runs(Sliding_runs_2<CDT>* runs) { m_sliding = runs; }
+  /// Moves the vertices of the sliding runs toward the constrained centroids that the last
+  /// evaluation planned (`Sliding_runs_2::slide()`); returns how many moved.
+  std::size_t slide_generators() {
+    if (!sliding()) return 0;
+    return m_sliding->slide(m_cdt);
+  }
 
   /// \cond SKIP_IN_MANUAL
   // Moves the free generators vertex(i) toward target(i), for the i of `order`, in at most
@@ -251,6 +267,7 @@ class Cvt_energy_2 {
 
   Cell_figures cell_figures(Vertex_handle v, const Cell_points& points, bool is_free,
                             const Cell_moments_2<Kernel>& m) const;
+  bool sliding() const { return m_sliding != nullptr && !m_has_region; }
   template <class Face_iterator>
   void add_cells_in_batch(Face_iterator first, Face_iterator last, std::size_t resolution,
                           Chunk& sums) const;
@@ -283,7 +300,8 @@ class Cvt_energy_2 {
   template <class Restriction>
   Cell_moments_2<Kernel> moments_under(const Restriction& rho, const Point_2& x,
                                        const Cell_points& points, std::size_t resolution) const;
-  void number_generators();
+  template <class VertexRange>
+  void number_generators(const VertexRange& vertices);
   static std::string bad_moments_message(const Point_2& generator, const Cell_points& points,
                                          double mass, double energy, double first2);
   static double squared_diameter(const Cell_points& points);
@@ -305,6 +323,7 @@ class Cvt_energy_2 {
   std::unordered_set<Vertex_handle> m_fixed;
   std::function<Point_2(const Point_2&, const Point_2&)> m_keep_out;
   std::vector<Point_2> m_kept_out;  // the targets kept out, by generator number
+  Sliding_runs_2<CDT>* m_sliding = nullptr;
   // With a region: its free generators, the generators whose cells are computed, the faces the
   // moves changed since the last evaluation; scratch for the tags.
   bool m_has_region = false;
@@ -346,7 +365,8 @@ auto Cvt_energy_2<CDT, Density, Quadrature, Traits>::evaluate(std::size_t resolu
   m_chunks.update(m_cdt);
   if (m_has_region) return evaluate_region(resolution);
   m_diagram.update(m_chunks, m_number_of_threads);
-  if constexpr (keeps_restrictions) number_generators();
+  if constexpr (keeps_restrictions) number_generators(m_cdt.finite_vertex_handles());
+  if (sliding()) m_sliding->begin_evaluation();
   // Cells in chunks, on several threads; each chunk sums its own cells in order, then the
   // chunks are summed in order: the same bits whatever the threads.
   m_chunk_sums.assign(m_chunks.size(), Chunk());
@@ -375,6 +395,17 @@ auto Cvt_energy_2<CDT, Density, Quadrature, Traits>::evaluate(std::size_t resolu
   m_evaluation = Evaluation();
   m_evaluation.resolution = resolution;
   reduce_chunks();
+  if (sliding()) {  // the sliding vertices' move ratios join the free generators'
+    const auto plan = m_sliding->plan(m_cdt);
+    Evaluation& e = m_evaluation;
+    e.max_move_ratio = std::max(e.max_move_ratio, plan.max_move_ratio);
+    e.number_of_sliding_generators = plan.sliders;
+    const std::size_t n = e.number_of_free_generators + plan.sliders;
+    if (n > 0)
+      e.mean_move_ratio =
+          (e.mean_move_ratio * double(e.number_of_free_generators) + plan.sum_move_ratio) /
+          double(n);
+  }
   return m_evaluation;
 }
 
@@ -384,11 +415,7 @@ template <class CDT, class Density, class Quadrature, class Traits>
 auto Cvt_energy_2<CDT, Density, Quadrature, Traits>::evaluate_region(std::size_t resolution)
     -> const Evaluation& {
   tag_region();
-  if constexpr (keeps_restrictions) {
-    Kept_restrictions& k = m_restrictions;
-    for (const Vertex_handle v : m_cell_list)
-      if (!k.slot_of.is_defined(v)) k.slot_of[v] = k.slots.size(), k.slots.emplace_back();
-  }
+  if constexpr (keeps_restrictions) number_generators(m_cell_list);
   m_chunk_sums.assign(1, Chunk());
   m_moves.reset(1);
   m_moves.chunk(0).reserve(m_region_list.size());
@@ -526,7 +553,14 @@ auto Cvt_energy_2<CDT, Density, Quadrature, Traits>::cell_figures(
   if (!(f.mass >= 0) || !std::isfinite(f.mass) || !std::isfinite(f.energy) ||
       !std::isfinite(first2))
     throw Domain_error(bad_moments_message(v->point(), points, f.mass, f.energy, first2));
-  if (!f.is_free) return f;
+  if (!f.is_free) {
+    if (sliding() && f.mass > 0) {  // a vertex of a sliding run: its centroid, for the plan
+      const std::size_t k = m_sliding->slider(v);
+      if (k != Sliding_runs_2<CDT>::none)
+        m_sliding->set_cell(k, v->point() + m.first_moment / m.mass, squared_diameter(points));
+    }
+    return f;
+  }
   // A cell whose mass underflows to 0 (a generator 1e-320 from another) stays put.
   const typename Kernel::Vector_2 shift =
       f.mass > 0 ? m.first_moment / m.mass : typename Kernel::Vector_2(CGAL::NULL_VECTOR);
@@ -560,10 +594,12 @@ void Cvt_energy_2<CDT, Density, Quadrature, Traits>::reduce_chunks() {
 // A slot for the kept restriction of each generator that has none (the only writes to the
 // map: the cells then read it from several threads).
 template <class CDT, class Density, class Quadrature, class Traits>
-void Cvt_energy_2<CDT, Density, Quadrature, Traits>::number_generators() {
+template <class VertexRange>
+void Cvt_energy_2<CDT, Density, Quadrature, Traits>::number_generators(
+    const VertexRange& vertices) {
   if constexpr (keeps_restrictions) {
     Kept_restrictions& k = m_restrictions;
-    for (auto v = m_cdt.finite_vertices_begin(); v != m_cdt.finite_vertices_end(); ++v)
+    for (const Vertex_handle v : vertices)
       if (!k.slot_of.is_defined(v)) k.slot_of[v] = k.slots.size(), k.slots.emplace_back();
   }
 }

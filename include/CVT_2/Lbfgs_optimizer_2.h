@@ -37,10 +37,12 @@ constexpr std::size_t default_lbfgs_memory = 7;  // curvature pairs kept
 /// diagram is \f$C^2\f$ almost everywhere, and its gradient for a free generator is
 /// \f$\nabla_i E = 2\,m_i\,(x_i - x_i^*)\f$, with \f$m_i\f$ the mass and \f$x_i^*\f$ the
 /// centroid of its cell: one `Cvt_energy_2::evaluate()` gives both. Constrained
-/// generators are fixed. The quasi-Newton direction comes from the last `memory` pairs of
-/// position and gradient differences, with the Lloyd step as preconditioner: the initial
-/// inverse Hessian is \f$\mathrm{diag}(1/(2m_i))\f$, so a step without memory (the first, and
-/// every restart) is exactly a Lloyd step \f$x_i \to x_i^*\f$.
+/// generators are fixed, but for the vertices of sliding runs (`set_sliding_runs()`), which take
+/// a step to their constrained centroids at the start of each step (block coordinate descent:
+/// the quasi-Newton step is the free generators'). The quasi-Newton direction comes from the last
+/// `memory` pairs of position and gradient differences, with the Lloyd step as preconditioner: the
+/// initial inverse Hessian is \f$\mathrm{diag}(1/(2m_i))\f$, so a step without memory (the first,
+/// and every restart) is exactly a Lloyd step \f$x_i \to x_i^*\f$.
 ///
 /// A step moves the generators in place, as Lloyd iteration does: all at once, those of any
 /// face that this folds within their stars instead (no edge is crossed, so no constraint),
@@ -119,6 +121,9 @@ class Lbfgs_optimizer_2 {
   const Evaluation& step(std::size_t resolution) {
     CGAL_precondition(m_has_current);
     ++m_steps;
+    // The sliding vertices first, to their constrained centroids: the step of the free
+    // generators then starts from there (its line search compares with the energy before).
+    m_energy.slide_generators();
     if (m_vertices.empty()) return evaluate(resolution);
     const bool descent = m_history.size() > 0 && quasi_newton_direction();
     if (!descent) {
@@ -149,6 +154,8 @@ class Lbfgs_optimizer_2 {
   /// Moves only the free generators among `vertices`, evaluating only around them:
   /// `Cvt_energy_2::set_region()`. Before the first evaluation.
   void set_region(const std::vector<Vertex_handle>& vertices) { m_energy.set_region(vertices); }
+  /// Lets the vertices of `runs` slide along them: `Cvt_energy_2::set_sliding_runs()`.
+  void set_sliding_runs(Sliding_runs_2<CDT>* runs) { m_energy.set_sliding_runs(runs); }
   /// Keeps the moves out of places: `Cvt_energy_2::set_keep_out()`.
   template <class KeepOut>
   void set_keep_out(const KeepOut& keep_out) {

@@ -27,7 +27,8 @@ namespace CVT_2 {
 /// faces around them keep their orientation, so no edge and so no constraint is crossed; a
 /// target beyond the star is approached in several iterations), then edge flips restore the
 /// constrained Delaunay property (user manual, "Updating the triangulation"). Vertex handles
-/// stay valid; constrained vertices never move.
+/// stay valid; constrained vertices never move, but for those of sliding runs
+/// (`set_sliding_runs()`).
 ///
 /// \tparam CDT as for `Bounded_voronoi_diagram_2`, with its domain marked.
 /// \tparam Density a model of `DensityFunction_2`: the energy's, see `Cvt_energy_2`.
@@ -76,12 +77,15 @@ class Lloyd_optimizer_2 {
   void set_keep_out(const KeepOut& keep_out) {
     m_energy.set_keep_out(keep_out);
   }
+  /// Lets the vertices of `runs` slide along them: `Cvt_energy_2::set_sliding_runs()`.
+  void set_sliding_runs(Sliding_runs_2<CDT>* runs) { m_energy.set_sliding_runs(runs); }
   unsigned number_of_threads() const { return m_energy.number_of_threads(); }  ///< as set
 
   /// Moves every free generator to the centroid that the last `evaluate()` computed (or, if
   /// that would fold a face, as far toward it as its star allows), then restores the
-  /// constrained Delaunay property.
-  /// Returns the number of generators that reached their centroid.
+  /// constrained Delaunay property; then the sliding vertices, if any, to their constrained
+  /// centroids (`Sliding_runs_2`). Returns the number of free generators that reached their
+  /// centroid.
   /// \pre the triangulation has not changed since the last `evaluate()`.
   std::size_t move() {
     const Free_generators& moves = m_energy.free_generators();
@@ -90,6 +94,7 @@ class Lloyd_optimizer_2 {
         boost::irange(std::size_t(0), n), [&moves](std::size_t k) { return moves[k].vertex; },
         [&moves](std::size_t k) -> const Point_2& { return moves[k].centroid; }, 1, m_buffers);
     m_energy.release_free_generators();
+    m_energy.slide_generators();
     return n - missed;
   }
 

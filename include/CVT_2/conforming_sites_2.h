@@ -1,9 +1,11 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// conforming_sites_2(): generators mirrored across a line, so that Voronoi faces lie on it.
+// conforming_sites_2(): generators mirrored across a line, so that Voronoi faces lie on it;
+// insert_conforming_sites_2(): those of several lines, into a marked domain.
 #ifndef CVT_2_CONFORMING_SITES_2_H
 #define CVT_2_CONFORMING_SITES_2_H
 
 #include <CVT_2/exceptions.h>
+#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/internal/to_string.h>
 
 #include <CGAL/number_utils.h>
@@ -177,6 +179,56 @@ class Conforming_disks {
   double m_cell = 0;
   std::unordered_multimap<long long, std::size_t> m_buckets;
 };
+
+/// \ingroup PkgCvt2Ref
+/// The two generators mirrored across a step of a conforming line, and the line's number.
+template <class Point_2>
+struct Conforming_pair_2 {
+  Point_2 left, right;  ///< on the left and the right of the step
+  std::size_t line;     ///< the number of the line among those given
+};
+
+/// \ingroup PkgCvt2Ref
+/// Inserts into the marked domain of `cdt` the generators that make each of `lines` conforming
+/// at `spacing` (`conforming_sites_2()`), and adds their circles to `disks`; returns the pairs
+/// inserted, line after line. A step whose two generators are not both strictly inside the
+/// domain (in a domain face, or on an edge that is no constraint) is left out, its generators
+/// not inserted, and counted in `*left_out` if given. The generators are to stay fixed
+/// (`fixed_points`) and the circles free of others (`keep_out(disks)`).
+/// \throws std::invalid_argument as `conforming_sites_2()`.
+template <class CDT>
+std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
+    CDT& cdt, const std::vector<std::vector<typename CDT::Point_2>>& lines, double spacing,
+    Conforming_disks<typename CDT::Point_2>& disks, std::size_t* left_out = nullptr) {
+  using Point_2 = typename CDT::Point_2;
+  std::vector<Conforming_pair_2<Point_2>> pairs;
+  std::vector<Point_2> sites;
+  typename CDT::Face_handle hint;
+  const auto strictly_inside = [&](const Point_2& p) {
+    typename CDT::Locate_type lt;
+    int li = 0;
+    hint = cdt.locate(p, lt, li, hint);
+    if (lt == CDT::EDGE) return !cdt.is_constrained({hint, li}) && hint->is_inside_domain();
+    return lt == CDT::FACE && hint->is_inside_domain();
+  };
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const auto c = conforming_sites_2(lines[i], spacing);
+    disks.add(c);
+    for (std::size_t k = 0; k + 1 < c.sites.size(); k += 2) {
+      if (strictly_inside(c.sites[k]) && strictly_inside(c.sites[k + 1])) {
+        sites.push_back(c.sites[k]);
+        sites.push_back(c.sites[k + 1]);
+        pairs.push_back({c.sites[k], c.sites[k + 1], i});
+      } else {
+        ++out;
+      }
+    }
+  }
+  insert_generators_2(cdt, sites);
+  if (left_out) *left_out = out;
+  return pairs;
+}
 
 }  // namespace CVT_2
 

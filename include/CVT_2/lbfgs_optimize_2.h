@@ -17,10 +17,10 @@ namespace CVT_2 {
 /// back to one whenever its line search fails. It stops by the same rule as
 /// `lloyd_optimize_2()`: every move ratio \f$mr(x) = \|x - x^*\|/\mathrm{diameter}(V)\f$ of
 /// the last evaluation below `move_ratio_bound` (confirmed at the maximum quadrature
-/// resolution), or another limit. Constrained vertices stay; a free generator never crosses
-/// a constraint. With an exact quadrature the energy never rises; with an approximate quadrature
-/// the energy and the gradient are approximate, and a line search that their error makes fail ends
-/// in a Lloyd step (see `Lbfgs_optimizer_2`).
+/// resolution), or another limit. Constrained vertices stay (but for those of `sliding_runs`);
+/// a free generator never crosses a constraint. With an exact quadrature the energy never rises;
+/// with an approximate quadrature the energy and the gradient are approximate, and a line search
+/// that their error makes fail ends in a Lloyd step (see `Lbfgs_optimizer_2`).
 ///
 /// The result describes the generators as they are at the end. An iteration is one step,
 /// its line search included; `energy_history` and the move ratio histories have one entry a
@@ -40,8 +40,7 @@ namespace CVT_2 {
 ///        `maximum_quadrature_resolution`, `move_ratio_bound`, `number_of_iterations` (at most
 ///        that many steps), `maximum_running_time`, `callback` (called after each step),
 ///        `verbose`, `number_of_threads`, `fixed_points`, `region`, `region_rings`, `keep_out`,
-///        `geom_traits`), with the same meanings
-///        and defaults, and
+///        `sliding_runs`, `geom_traits`), with the same meanings and defaults, and
 ///   - `lbfgs_memory(m)`: the number of curvature pairs kept, an integer \f$\ge 0\f$;
 ///     default 7; 0 makes every step a Lloyd step.
 /// \throws std::invalid_argument for a bad parameter value, naming it (a fixed point that is
@@ -62,6 +61,7 @@ Optimization_result lbfgs_optimize_2(CDT& cdt, const NP& np = parameters::defaul
   lbfgs.fix_generators(internal::fixed_vertices(cdt, np));
   if (region) lbfgs.set_region(*region);
   internal::set_keep_out(lbfgs, np);
+  internal::set_sliding_runs(lbfgs, np);
   return internal::run_optimization(lbfgs, options, "lbfgs");
 }
 

@@ -14,7 +14,8 @@ namespace CVT_2 {
 /// Lloyd iteration (paper, Section 3): moves every free generator of `cdt` to the centroid of
 /// its bounded Voronoi cell under a density \f$\rho\f$, and again, until every move ratio
 /// \f$mr(x) = \|x - x^*\|/\mathrm{diameter}(V)\f$ is below `move_ratio_bound`, or another
-/// limit is met. Constrained vertices stay; a free generator never crosses a constraint.
+/// limit is met. Constrained vertices stay (but for those of `sliding_runs`); a free generator
+/// never crosses a constraint.
 /// The result describes the generators as they are at the end (`Optimization_result`).
 ///
 /// \param cdt a constrained Delaunay triangulation with its domain marked (see
@@ -58,6 +59,10 @@ namespace CVT_2 {
 ///   - `keep_out(k)`: places no free generator may enter, as the circles of conforming lines
 ///     (`Conforming_disks`): an object with `bool empty()` and `Point_2 outside(from, to)`,
 ///     where a generator that would move from `from` to `to` goes instead.
+///   - `sliding_runs(&runs)`: a pointer to a `Sliding_runs_2` of `cdt` (filled by
+///     `resample_constraints_2()`): its vertices slide along the input polylines, each to its
+///     constrained centroid after the free generators' move, and their move ratios count in
+///     the stop. Not with `region`.
 ///   - `geom_traits(t)`: a model of `BvdTraits_2` for the diagram; default `Bvd_traits_2`.
 /// \throws std::invalid_argument for a bad parameter value, naming it (a fixed or region point
 ///         that is not a vertex); Domain_error if the
@@ -76,6 +81,7 @@ Optimization_result lloyd_optimize_2(CDT& cdt, const NP& np = parameters::defaul
   lloyd.fix_generators(internal::fixed_vertices(cdt, np));
   if (region) lloyd.set_region(*region);
   internal::set_keep_out(lloyd, np);
+  internal::set_sliding_runs(lloyd, np);
   return internal::run_optimization(internal::Lloyd_steps<Optimizer>{lloyd}, options, "lloyd");
 }
 

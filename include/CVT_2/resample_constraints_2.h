@@ -5,6 +5,7 @@
 #ifndef CVT_2_RESAMPLE_CONSTRAINTS_2_H
 #define CVT_2_RESAMPLE_CONSTRAINTS_2_H
 
+#include <CVT_2/Sliding_runs_2.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/internal/resample_runs.h>
 #include <CVT_2/internal/to_string.h>
@@ -15,8 +16,10 @@
 #include <CGAL/property_map.h>
 #include <CGAL/spatial_sort.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <numeric>
 #include <string>
@@ -72,7 +75,12 @@ struct Resampling_report {
 ///   - `fixed_points(r)`: a range of points: constrained vertices there are features;
 ///   - `minimum_ring_area(a)`: a ring (a closed polyline meeting no other, with no fixed point)
 ///     that encloses less than `a` is removed, with the lines, rings and generators inside it:
-///     an island below it is dropped, a hole below it filled (default 0: none).
+///     an island below it is dropped, a hole below it filled (default 0: none);
+///   - `sliding_runs(&runs)`: a pointer to a `Sliding_runs_2<CDT>`, which gets the runs with
+///     the domain on a side, three points or more and a length of three cell sizes or more
+///     (their input polylines and new vertices; a shorter ring, a small island, could only
+///     collapse), and the deviation bound: for `lloyd_optimize_2()` and `lbfgs_optimize_2()` with
+///     `sliding_runs(&runs)`, which slide the vertices along the input.
 /// \throws Domain_error for a size that is not a positive number, a bound, angle or area that
 ///         is not a non-negative one, or a minimum ring area that removes the whole domain (the
 ///         triangulation is then unchanged).
@@ -146,6 +154,26 @@ Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()
     throw Domain_error("the minimum ring area " + internal::number_to_string(minimum_ring_area) +
                        " removes the whole domain; the triangulation is unchanged");
   cdt.swap(out);
+  if constexpr (internal_np::has_parameter<NP, internal_np::sliding_runs_t>) {
+    Sliding_runs_2<CDT>& runs = *get_parameter(np, internal_np::sliding_runs_t());
+    runs.set_deviation_bound(bound);
+    for (const auto& r : resampler.resampled_runs()) {
+      const std::vector<double> length = Sliding_runs_2<CDT>::arc_lengths(r.polyline);
+      if (length.back() < 3 * h) continue;  // too short to gain (a small island's three points)
+      std::vector<Vertex_handle> vertices;
+      std::vector<double> at;
+      for (std::size_t k = 0; k < r.points.size(); ++k) {
+        vertices.push_back(handle[r.points[k]]);
+        const std::size_t i = r.seg[k];
+        at.push_back(k + 1 == r.points.size() ? length.back()
+                     : i + 1 < length.size()  ? length[i] + r.t[k] * (length[i + 1] - length[i])
+                                              : length[i]);
+      }
+      // (arc lengths a rounding apart on a polyline with repeated points: that run stays)
+      if (std::adjacent_find(at.begin(), at.end(), std::greater_equal<double>()) == at.end())
+        runs.add_run(r.polyline, std::move(vertices), std::move(at));
+    }
+  }
   report.area_after = internal::Run_resampler<CDT>::domain_area(cdt);
   return report;
 }

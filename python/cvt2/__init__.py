@@ -386,6 +386,8 @@ def optimize(
     boundary_size=None,
     boundary_tolerance=None,
     fixed_points=None,
+    boundary=None,
+    constraints=None,
 ) -> "OptimizeResult":
     """Moves ``points`` to a centroidal Voronoi tessellation of ``domain``: each free generator
     to the centroid of its bounded Voronoi cell (under the density), again and again. The same
@@ -423,7 +425,21 @@ def optimize(
     - ``fixed_points``: None, or a float array (k, 2) of generators that never move (wells,
       observation points; ``cvt2 --fixed-points``), inserted after ``points``, in the domain.
       For finer cells around them, pass a density (``cvt2 --refine`` uses
-      ``size + (background - size) * min(1, distance / radius)`` as the cell size).
+      ``size + (background - size) * min(1, distance / radius)`` as the cell size);
+    - ``boundary``: None (the domain's vertices stay), or ``"slide"`` for a domain made by
+      :meth:`Domain.resample`: its new vertices slide along the polylines it was resampled from,
+      each to the point nearest to its cell's centroid, never past its neighbours, its chords
+      within the deviation bound, the features fixed (``cvt2 --boundary slide``). The result's
+      points, diagram and ``domain`` (described by arrays, metadata ``boundary`` ``slide``) have
+      them where they slid to;
+    - ``constraints``: None, or ``"conforming"`` (``cvt2 --constraints conforming``) for a domain
+      with lines (WKT, GeoJSON or shapely LineStrings): the lines are no constraints, but rivers
+      or borders that water crosses. Generators mirrored across each step of a line
+      (:func:`conforming_sites`, at the spacing of the cells) are inserted and fixed, and no other
+      generator enters their circles, so that the faces between the cells lie on the line, each
+      perpendicular to the line between the two cells' centres. The result's ``domain`` is the
+      domain without its lines; its writers take ``constraints="conforming"``, and
+      ``to_cells_on_constraints`` lists the pairs of cells along each line.
 
     Ctrl-C raises KeyboardInterrupt. Returns an :class:`OptimizeResult`.
     """
@@ -443,16 +459,30 @@ def optimize(
         boundary_size,
         _tolerance(boundary_tolerance),
         fixed_points,
+        _slide(boundary),
+        _conforming(constraints),
     )
+    if _slide(boundary) or _conforming(constraints):  # the domain the cells are of
+        domain = Domain._wrap(result.domain)
     return OptimizeResult(result, domain)
 
 
+def _conforming(constraints):
+    if constraints not in (None, "conforming"):
+        raise ValueError(f"optimize's constraints must be None or 'conforming', not {constraints!r} "
+                         "('slit' and 'barrier' are the writers' choice)")
+    return constraints == "conforming"
+
+
+def _slide(boundary):
+    if boundary not in (None, "keep", "resample", "slide"):
+        raise ValueError(f"boundary must be None, 'keep', 'resample' or 'slide', not {boundary!r}")
+    return boundary == "slide"
+
+
 def _barriers(constraints):
-    if constraints not in ("slit", "barrier"):
-        if constraints == "conforming":
-            raise ValueError("constraints='conforming' is not built yet in the module's writers (cvt2 --constraints "
-                             "conforming has it; in Python, conforming_sites() as fixed_points): use 'slit' or 'barrier'")
-        raise ValueError(f"constraints must be 'slit' or 'barrier', not {constraints!r}")
+    if constraints not in ("slit", "barrier", "conforming"):
+        raise ValueError(f"constraints must be 'slit', 'barrier' or 'conforming', not {constraints!r}")
     return constraints == "barrier"
 
 
@@ -923,7 +953,8 @@ class BoundedVoronoi:
         generator on one is split into one cell per side, each centered at the generator, and
         no edge is shared across, so that MODFLOW connects no cells through it; cells are then
         more than :attr:`points`, numbered as the diagram's, the parts of a split cell one after
-        the other)."""
+        the other); ``"conforming"`` for the cells of ``optimize(..., constraints="conforming")``,
+        whose lines are no constraints (the same cells as ``"slit"``, said in the metadata)."""
         def values(v):
             return [float(x) for x in np.ravel(np.asarray(v, dtype=float))]
 
@@ -936,6 +967,7 @@ class BoundedVoronoi:
         along a cell: the input item it comes from (:attr:`Domain.segment_items`), the cell of
         :meth:`to_disv` with the same ``constraints`` (from 1), the piece's length, the cell on
         the other side (from 1; -1 on the boundary; the cell itself for a slit inside it)."""
+        self.metadata(constraints)  # checks "conforming"
         self._impl.write_cells_on_constraints(os.fspath(path), _barriers(constraints))
 
     def metadata(self, constraints="slit") -> list:
@@ -944,7 +976,11 @@ class BoundedVoronoi:
         the deviation bound and the largest deviation), and ``constraints`` if ``"barrier"``,
         as ``cvt2`` writes them."""
         barriers = _barriers(constraints)
-        return list(self.domain._impl.metadata) + ([("constraints", "barrier")] if barriers else [])
+        metadata = list(self.domain._impl.metadata)
+        if constraints == "conforming" and ("constraints", "conforming") not in metadata:
+            raise ValueError("constraints='conforming' writes the cells of "
+                             "optimize(..., constraints='conforming'), which made the lines conforming")
+        return metadata + ([("constraints", "barrier")] if barriers else [])
 
     def __len__(self):
         return len(self.points)

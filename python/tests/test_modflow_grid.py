@@ -502,3 +502,53 @@ def test_conforming_sites_in_python(tmp_path):
     assert on_river > 0.8 * np.hypot(*np.diff(river, axis=0).T).sum()
     with pytest.raises(ValueError, match="spacing"):
         cvt2.conforming_sites(river, 0)
+
+
+def test_conforming_lines_in_optimize_and_the_writers(tmp_path):
+    """optimize(..., constraints="conforming") does what cvt2 --constraints conforming does: the
+    river is no constraint, its pairs are fixed and their circles kept free, so it lies on faces
+    all along, each perpendicular to its centre line; a linear head is exact; the CSV lists the
+    river's pairs; the writers say "conforming", and refuse it for cells not made so."""
+    import json
+
+    import cvt2
+
+    river = np.array([[0, 250], [300, 280], [550, 400], [800, 380], [1000, 450]], dtype=float)
+    path = tmp_path / "river.wkt"
+    path.write_text("POLYGON ((0 0, 1000 0, 1000 600, 0 600, 0 0))\nLINESTRING ("
+                    + ", ".join(f"{x:g} {y:g}" for x, y in river) + ")\n")
+    domain = cvt2.Domain.from_file(path)
+    points = cvt2.random_points(domain, 1400, seed=4)
+    result = cvt2.optimize(domain, points, constraints="conforming")
+    assert len(result.domain.segments) == 4  # the river is no constraint
+    d = result.bounded_voronoi()
+    d.to_disv(tmp_path / "river.disv", constraints="conforming")
+    d.to_geojson(tmp_path / "river.geojson", constraints="conforming")
+    d.to_cells_on_constraints(tmp_path / "river.csv", constraints="conforming")
+    vertices, centers, cells = read_disv(tmp_path / "river.disv")
+    pairs = connections(cells)
+    assert all(len(edges) == 1 for edges in pairs.values())
+    rows = connection_geometry(vertices, centers, pairs)
+    assert max(r[5] for r in rows) < 1e-9
+    segments = np.stack([river[:-1], river[1:]], axis=1)
+    on_river = sum(r[2] for r, edges in zip(rows, pairs.values())
+                   if on_a_segment(vertices[edges[0][0]], vertices[edges[0][1]], segments, 1e-6))
+    length = np.hypot(*np.diff(river, axis=0).T).sum()
+    assert on_river > (1 - 1e-9) * length
+    residuals = linear_head_residuals(vertices, centers, cells, pairs)
+    assert len(residuals) > 1200 and residuals.max() < 1e-10
+    item, cell, csv_length, other = read_csv(tmp_path / "river.csv")
+    river_rows = [(c, o, x) for i, c, o, x in zip(item, cell, other, csv_length) if i == 2]
+    assert sum(x for _, _, x in river_rows) / 2 == pytest.approx(length, rel=1e-9)
+    metadata = json.loads((tmp_path / "river.geojson").read_text())["metadata"]
+    assert metadata["constraints"] == "conforming"
+    assert "# constraints: conforming\n" in (tmp_path / "river.disv").read_text()
+    # Cells not made conforming, and domains without lines, are refused by name.
+    plain = cvt2.optimize(domain, points).bounded_voronoi()
+    with pytest.raises(ValueError, match="optimize\\(..., constraints='conforming'\\)"):
+        plain.to_disv(tmp_path / "no.disv", constraints="conforming")
+    square = cvt2.Domain([[0, 0], [1, 0], [1, 1], [0, 1]], [[0, 1], [1, 2], [2, 3], [3, 0]])
+    with pytest.raises(ValueError, match="has none"):
+        cvt2.optimize(square, [[0.5, 0.5]], constraints="conforming")
+    with pytest.raises(ValueError, match="None or 'conforming'"):
+        cvt2.optimize(domain, points, constraints="barrier")

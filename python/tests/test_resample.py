@@ -46,15 +46,30 @@ def test_resampling_removes_the_specks_of_a_fine_boundary(program, data, tmp_pat
     assert speck["resample"] < speck["keep"] / 4
 
 
-def test_module_matches_the_program_bit_for_bit(program, data, tmp_path):
+@pytest.mark.parametrize("mode", ["resample", "slide"])
+def test_module_matches_the_program_bit_for_bit(program, data, tmp_path, mode):
     name = "us_massachusetts_counties.wkt"
-    _, expected, _ = run_program(program, data / name, tmp_path, "--boundary", "resample",
+    _, expected, _ = run_program(program, data / name, tmp_path, "--boundary", mode,
                                  "--cells", 800, "--seed", 5)
     d = cvt2.Domain.from_file(data / name).resample(cells=800)
     points = cvt2.random_points(d, cells=800, seed=5)
     assert len(points) + d.own_cells == 800
-    r = cvt2.optimize(d, points)
+    r = cvt2.optimize(d, points, boundary=mode)
     assert np.array_equal(r.points, expected[:, :2])
+    if mode == "resample":
+        return
+    kept = cvt2.optimize(d, points)
+    assert not np.array_equal(r.points, kept.points)
+    # The result's domain is the slid one: its ridges along the lines name its segments.
+    assert dict(r.domain._impl.metadata)["boundary"] == "slide"
+    b = r.bounded_voronoi()
+    assert r.domain.area == pytest.approx(b.areas.sum(), rel=1e-9)
+    assert (np.asarray(b.ridge_constraint) >= 0).sum() > 0
+    assert set(map(tuple, r.domain.vertices)) <= set(map(tuple, r.points))
+    with pytest.raises(ValueError, match="made by Domain.resample"):
+        cvt2.optimize(cvt2.Domain.from_file(data / name), points, boundary="slide")
+    with pytest.raises(ValueError, match="boundary must be"):
+        cvt2.optimize(d, points, boundary="slid")
 
 
 def test_resample_report_and_arguments(data):
@@ -102,7 +117,7 @@ def test_program_size_and_errors(program, data, tmp_path):
         assert p.returncode != 0
         return p.stderr
 
-    assert "not built yet: use --boundary resample" in fails("--boundary", "slide")
+    assert "expects 'keep', 'resample' or 'slide'" in fails("--boundary", "glide")
     assert "give one of -n, --cells and --size" in fails("--cells", 100, "-n", 5)
     assert "--deviation-bound needs --boundary resample" in fails("--deviation-bound", 1)
     assert "fewer than the 533 vertices" in fails("--cells", 100)
@@ -167,3 +182,50 @@ def test_minimum_ring_area_drops_small_islands(program, data, tmp_path):
     p = subprocess.run([program, str(data / "world_land_110m.wkt"), "--minimum-ring-area", "1"],
                        capture_output=True, text=True)
     assert p.returncode != 0 and "--minimum-ring-area needs --boundary resample" in p.stderr
+
+
+def _on_lines(points, domain):
+    """The distance from each point to the nearest segment of `domain`'s description."""
+    v, seg = domain.vertices, domain.segments
+    a, b = v[seg[:, 0]], v[seg[:, 1]]
+    d = b - a
+    out = []
+    for p in points:
+        t = np.clip(np.einsum("ij,ij->i", p - a, d) / np.einsum("ij,ij->i", d, d), 0, 1)
+        out.append(np.min(np.hypot(*(a + t[:, None] * d - p).T)))
+    return np.array(out)
+
+
+@pytest.mark.parametrize("name", ["france_mainland.poly", "us_massachusetts_counties.wkt"])
+def test_program_slides_the_boundary_on_the_input_valid_and_tiling(program, data, tmp_path, name):
+    domain = cvt2.Domain.from_file(data / name)
+    cells = 1500
+    summary, points, files = run_program(program, data / name, tmp_path, "--boundary", "slide",
+                                         "--cells", cells, outputs=("points", "geojson", "disv"))
+    assert summary["stop"] == "converged"
+    features = json.loads(files["geojson"].read_text())["features"]
+    assert len(features) == cells == len(points)
+    polygons = [shape(f["geometry"]) for f in features]
+    assert all(p.is_valid and p.area > 0 for p in polygons)
+    union = unary_union(polygons)
+    assert union.area == pytest.approx(sum(p.area for p in polygons), rel=1e-9)  # no overlap
+    # The boundary slid (not the resampled one any more), along the input, within the bound.
+    resampled = domain.resample(cells=cells)
+    constrained = points[points[:, 2] == 1, :2]
+    scale = np.ptp(domain.vertices, axis=0).max()
+    assert np.max(_on_lines(constrained, domain)) <= 1e-12 * scale
+    moved = [tuple(p) not in set(map(tuple, resampled.vertices)) for p in constrained]
+    assert sum(moved) >= 10
+    assert union.area == pytest.approx(domain.area, rel=0.02)
+    metadata = json.loads(files["geojson"].read_text())["metadata"]
+    assert metadata["boundary"] == "slide"
+    assert "# boundary: slide\n" in files["disv"].read_text()
+    # --domain-out writes the lines where the vertices slid to.
+    import subprocess
+    poly = tmp_path / "slid.poly"
+    subprocess.run([program, str(data / name), "--quiet", "--boundary", "slide", "--cells",
+                    str(cells), "--domain-out", str(poly)], check=True, capture_output=True)
+    back = cvt2.Domain.from_file(poly)
+    on_lines = np.unique(back.segments)
+    assert set(map(tuple, back.vertices[on_lines])) == set(map(tuple, constrained))
+    assert back.area == pytest.approx(union.area, rel=1e-9)

@@ -18,6 +18,7 @@
 #include <CVT_2/IO/write_vtu.h>
 #include <CVT_2/Point_refinement_sizing_2.h>
 #include <CVT_2/Simulation_grid_2.h>
+#include <CVT_2/Sliding_runs_2.h>
 #include <CVT_2/conforming_sites_2.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
@@ -74,7 +75,8 @@ struct Options {
   std::optional<std::size_t> points;  // -n; by default from the domain file
   std::optional<std::size_t> cells;   // --cells: in all, the domain's vertices included
   std::optional<double> size;         // --size: the spacing of a hexagonal tiling
-  bool resample = false;              // --boundary resample
+  bool resample = false;              // --boundary resample or slide
+  bool slide = false;                 // --boundary slide
   std::optional<double> deviation_bound;
   double corner_angle = 30;
   double minimum_ring_area = 0;
@@ -126,10 +128,12 @@ void print_help(std::ostream& os) {
         "      --size H           cells of spacing H: H apart in a hexagonal tiling, a cell of\n"
         "                         area sqrt(3)/2 H^2 (instead of -n)\n"
         "Boundary:\n"
-        "      --boundary B       keep | resample (default keep). keep: every vertex of DOMAIN\n"
-        "                         is a generator. resample: the polylines are cut at junctions,\n"
-        "                         ends and corners and resampled between them to the cell size\n"
-        "                         (from --size, --cells or -n), on the input to rounding\n"
+        "      --boundary B       keep | resample | slide (default keep). keep: every vertex of\n"
+        "                         DOMAIN is a generator. resample: the polylines are cut at\n"
+        "                         junctions, ends and corners and resampled between them to the\n"
+        "                         cell size (from --size, --cells or -n), on the input to\n"
+        "                         rounding. slide: resample, then the new vertices slide along\n"
+        "                         the input during the optimization, features fixed\n"
         "      --deviation-bound D  resample: a chord leaves the input by at most D (default a\n"
         "                         quarter of the cell size)\n"
         "      --corner-angle A   resample: a vertex where the polyline turns by more than A\n"
@@ -173,8 +177,9 @@ void print_help(std::ostream& os) {
         "                         beside it. A GeoJSON feature's \"kind\" property (slit,\n"
         "                         barrier, conforming) says it for its own lines\n"
         "      --mesh-out PREFIX  the final triangulation: PREFIX.node, .ele, .edge (Triangle)\n"
-        "      --domain-out FILE  the domain (resampled with --boundary resample) and its own\n"
-        "                         generators as a Triangle .poly file\n"
+        "      --domain-out FILE  the domain (resampled with --boundary resample, where its\n"
+        "                         vertices slid to with slide) and its own generators as a\n"
+        "                         Triangle .poly file\n"
         "      --cells-out FILE   one 'x y c k x1 y1 ... xk yk' per cell (bvd_cells format)\n"
         "      --points-out FILE  one 'x y c' per generator, c = 1 if constrained\n"
         "      --svg FILE         picture: domain, cells, constraints, generators\n"
@@ -257,11 +262,9 @@ const std::map<std::string, Setter>& valued_options() {
       {"--size", [](Options& o, auto& n, auto& v) { o.size = parse_positive(n, v); }},
       {"--boundary",
        [](Options& o, auto& n, auto& v) {
-         if (v == "slide")
-           throw Usage_error(n +
-                             " slide (vertices that slide along the boundary) is not built "
-                             "yet: use --boundary resample");
-         o.resample = parse_choice(n, v, "keep", "resample") == "resample";
+         const std::string mode = parse_choice(n, v, "keep", "resample", "slide");
+         o.resample = mode != "keep";
+         o.slide = mode == "slide";
        }},
       {"--constraints",
        [](Options& o, auto& n, auto& v) {
@@ -415,10 +418,12 @@ double physical_memory() {
 // minutes of work.
 double bytes_per_generator(const Options& o) { return o.lbfgs ? 750 : 360; }
 
-// The pair of generators of a step of a conforming line, and the line's input item.
-struct Conforming_pair {
-  Point_2 left, right;
-  std::int64_t item;
+// The conforming lines (--constraints conforming, or a feature's "kind"), their input items and
+// the pairs of generators mirrored across their steps.
+struct Conforming {
+  std::vector<std::vector<Point_2>> lines;
+  std::vector<std::int64_t> items;
+  std::vector<CVT_2::Conforming_pair_2<Point_2>> pairs;
 };
 
 // The sizing field of --density lipschitz or of --refine, if any.
@@ -507,7 +512,8 @@ class Progress {
 // The optimization, with progress on standard error; Ctrl-C ends it early.
 CVT_2::Optimization_result optimize(CDT& cdt, const Options& o, const Sizing_choice& sizing,
                                     const std::vector<Point_2>& fixed,
-                                    const CVT_2::Conforming_disks<Point_2>& keep_out) {
+                                    const CVT_2::Conforming_disks<Point_2>& keep_out,
+                                    CVT_2::Sliding_runs_2<CDT>* sliding) {
   Progress progress(o.quiet);
   const std::function<bool(const CVT_2::Optimization_result&)> callback = std::ref(progress);
   const auto np = CVT_2::parameters::number_of_iterations(o.iterations)
@@ -516,7 +522,8 @@ CVT_2::Optimization_result optimize(CDT& cdt, const Options& o, const Sizing_cho
                       .number_of_threads(o.threads)
                       .callback(callback)
                       .fixed_points(fixed)
-                      .keep_out(keep_out);
+                      .keep_out(keep_out)
+                      .sliding_runs(sliding);
   const auto run = [&o](CDT& t, const auto& parameters) {
     return o.lbfgs ? CVT_2::lbfgs_optimize_2(t, parameters)
                    : CVT_2::lloyd_optimize_2(t, parameters);
@@ -582,8 +589,8 @@ struct Kinds {
 
 void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
                    const CVT_2::IO::Metadata& metadata, const CDT& domain, const Segments& segments,
-                   const Kinds& kinds, const std::vector<Conforming_pair>& pairs,
-                   const std::vector<double>& top, const std::vector<double>& bottom) {
+                   const Kinds& kinds, const Conforming& conforming, const std::vector<double>& top,
+                   const std::vector<double>& bottom) {
   using namespace CVT_2::IO;
   Output_files out;
   if (!o.svg.empty()) out.write(o.svg, [&](std::ostream& os) { write_svg(os, bvd); });
@@ -618,21 +625,9 @@ void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
       out.write(o.disv, [&](std::ostream& os) { write_disv(os, *grid_if, top, bottom, metadata); });
     if (!o.cells_on_constraints.empty())
       out.write(o.cells_on_constraints, [&](std::ostream& os) {
-        // The cells of each conforming pair, by their generators.
-        const Grid& grid = *grid_if;
-        std::vector<std::size_t> first_part(mesh.number_of_cells(), Grid::none);
-        for (std::size_t g = grid.number_of_cells(); g-- > 0;) first_part[grid.mesh_cell(g)] = g;
-        std::vector<CVT_2::IO::Line_pair> sides;
-        for (const Conforming_pair& p : pairs) {
-          CDT::Locate_type lt[2];
-          int li[2];
-          const CDT::Face_handle f = cdt.locate(p.left, lt[0], li[0]);
-          const CDT::Face_handle g = cdt.locate(p.right, lt[1], li[1], f);
-          if (lt[0] == CDT::VERTEX && lt[1] == CDT::VERTEX)
-            sides.push_back({p.item, first_part[mesh.cell_of(f->vertex(li[0]))],
-                             first_part[mesh.cell_of(g->vertex(li[1]))]});
-        }
-        write_cells_on_constraints(os, grid, items, sides);
+        write_cells_on_constraints(
+            os, *grid_if, items,
+            conforming_line_pairs(cdt, *grid_if, conforming.pairs, conforming.items));
       });
   }
   if (!o.domain_out.empty())
@@ -680,18 +675,19 @@ std::size_t vertices_in_domain(const CDT& cdt) {
   return n;
 }
 
-// --boundary resample: the constraints resampled to the cell size that --size, --cells or the
-// number of free generators asks for; a note of what changed on standard error.
+// --boundary resample (and slide): the constraints resampled to the cell size that --size, --cells
+// or the number of free generators asks for; a note of what changed on standard error.
 void resample(const Options& o, std::size_t free_generators, CDT& cdt,
-              CVT_2::IO::Metadata& metadata) {
+              CVT_2::IO::Metadata& metadata, CVT_2::Sliding_runs_2<CDT>& runs) {
   const double area = domain_area(cdt);
   const double h =
       o.size    ? *o.size
       : o.cells ? CVT_2::cell_size_for_cells_2(cdt, *o.cells)
                 : std::sqrt(2 * area /
                             (std::sqrt(3.0) * double(std::max<std::size_t>(free_generators, 1))));
-  const auto np =
-      CVT_2::parameters::corner_angle(o.corner_angle).minimum_ring_area(o.minimum_ring_area);
+  const auto np = CVT_2::parameters::corner_angle(o.corner_angle)
+                      .minimum_ring_area(o.minimum_ring_area)
+                      .sliding_runs(&runs);
   const auto r = o.deviation_bound
                      ? CVT_2::resample_constraints_2(cdt, h, np.deviation_bound(*o.deviation_bound))
                      : CVT_2::resample_constraints_2(cdt, h, np);
@@ -700,6 +696,7 @@ void resample(const Options& o, std::size_t free_generators, CDT& cdt,
   CDT described;
   CVT_2::IO::insert_poly(described, CVT_2::IO::domain_poly_data(cdt));
   cdt.swap(described);
+  runs.relocate(cdt);
   using CVT_2::internal::number_text;
   metadata.emplace_back("cell_size", number_text(h));
   metadata.emplace_back("deviation_bound",
@@ -715,6 +712,43 @@ void resample(const Options& o, std::size_t free_generators, CDT& cdt,
             << r.max_deviation << ", area " << r.area_before << " -> " << r.area_after << '\n';
 }
 
+// --boundary slide, after the optimization: the domain's lines where the vertices slid to, for
+// --cells-on-constraints and --domain-out (with the file's own generators where they were given),
+// and a note of how far the lines are from the input.
+void slid_domain(const Options& o, const CDT& cdt, const CVT_2::Sliding_runs_2<CDT>& runs,
+                 Segments& segments, CDT& domain_alone) {
+  const CVT_2::IO::Poly_data<Point_2> poly = CVT_2::IO::domain_poly_data(cdt);
+  if (!segments.ends.empty()) {
+    CVT_2::IO::Domain_data<K> slid;
+    slid.description = poly;
+    segments = CVT_2::IO::domain_segments(slid);
+  }
+  if (!o.domain_out.empty()) {
+    std::vector<bool> on_segment(poly.vertices.size(), false);
+    for (const auto& [a, b] : poly.segments) on_segment[a] = on_segment[b] = true;
+    std::vector<Point_2> generators;
+    for (auto v = domain_alone.finite_vertices_begin(); v != domain_alone.finite_vertices_end();
+         ++v)
+      if (!domain_alone.are_there_incident_constraints(v)) generators.push_back(v->point());
+    CDT out;
+    CVT_2::IO::Poly_data<Point_2> lines = poly;
+    lines.vertices.clear();
+    lines.vertex_lines.clear();
+    std::vector<std::size_t> number(poly.vertices.size(), 0);
+    for (std::size_t i = 0; i < poly.vertices.size(); ++i)
+      if (on_segment[i])
+        number[i] = lines.vertices.size(), lines.vertices.push_back(poly.vertices[i]);
+    for (auto& [a, b] : lines.segments) a = number[a], b = number[b];
+    lines.vertices.insert(lines.vertices.end(), generators.begin(), generators.end());
+    CVT_2::IO::insert_poly(out, lines);
+    domain_alone.swap(out);
+  }
+  if (!o.quiet)
+    std::cerr << std::setprecision(4) << "cvt2: " << runs.number_of_sliding_vertices()
+              << " boundary vertices slid along " << runs.number_of_runs()
+              << " runs; largest deviation from the input now " << runs.max_deviation() << '\n';
+}
+
 // The background cell size: that of -n, --cells or --size uniform cells in the domain.
 double background_size(const Options& o, std::size_t cells, const CDT& cdt) {
   if (o.size) return *o.size;
@@ -724,43 +758,17 @@ double background_size(const Options& o, std::size_t cells, const CDT& cdt) {
 
 // --constraints conforming: the pairs of generators mirrored across each line, fixed, those of
 // a step whose pair is not both strictly inside the domain left out (noted).
-std::vector<Conforming_pair> insert_conforming_sites(const std::vector<std::vector<Point_2>>& lines,
-                                                     const std::vector<std::int64_t>& items,
-                                                     const Options& o, std::size_t free_generators,
-                                                     CDT& cdt, std::vector<Point_2>& fixed,
-                                                     CVT_2::Conforming_disks<Point_2>& disks) {
-  std::vector<Conforming_pair> pairs;
+void insert_conforming_sites(const Options& o, std::size_t free_generators, CDT& cdt,
+                             std::vector<Point_2>& fixed, Conforming& conforming,
+                             CVT_2::Conforming_disks<Point_2>& disks) {
   const std::size_t cells = o.cells ? *o.cells : free_generators + vertices_in_domain(cdt);
-  const double spacing = background_size(o, cells, cdt);
-  std::vector<Point_2> sites;
-  std::size_t steps = 0, left_out = 0;
-  CDT::Face_handle hint;
-  const auto strictly_inside = [&](const Point_2& p) {  // in a domain face or on a free edge
-    CDT::Locate_type lt;
-    int li;
-    hint = cdt.locate(p, lt, li, hint);
-    if (lt == CDT::EDGE) return !cdt.is_constrained({hint, li}) && hint->is_inside_domain();
-    return lt == CDT::FACE && hint->is_inside_domain();
-  };
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    const auto c = CVT_2::conforming_sites_2(lines[i], spacing);
-    disks.add(c);
-    for (std::size_t k = 0; k + 1 < c.sites.size(); k += 2, ++steps) {
-      if (strictly_inside(c.sites[k]) && strictly_inside(c.sites[k + 1])) {
-        sites.push_back(c.sites[k]);
-        sites.push_back(c.sites[k + 1]);
-        pairs.push_back({c.sites[k], c.sites[k + 1], items[i]});
-      } else {
-        ++left_out;
-      }
-    }
-  }
-  CVT_2::insert_generators_2(cdt, sites);
-  fixed.insert(fixed.end(), sites.begin(), sites.end());
+  std::size_t left_out = 0;
+  conforming.pairs = CVT_2::insert_conforming_sites_2(
+      cdt, conforming.lines, background_size(o, cells, cdt), disks, &left_out);
+  for (const auto& p : conforming.pairs) fixed.push_back(p.left), fixed.push_back(p.right);
   if (left_out > 0 && !o.quiet)
-    std::cerr << "cvt2: note: " << left_out << " of " << steps
+    std::cerr << "cvt2: note: " << left_out << " of " << left_out + conforming.pairs.size()
               << " steps of the conforming lines have a generator outside the domain: left out\n";
-  return pairs;
 }
 
 int run(const Options& o) {
@@ -775,8 +783,7 @@ int run(const Options& o) {
   // constraints, only where faces will lie.
   Kinds kinds;
   kinds.by_default = o.barriers ? "barrier" : o.conforming ? "conforming" : "slit";
-  std::vector<std::vector<Point_2>> conforming_lines;
-  std::vector<std::int64_t> conforming_items;
+  Conforming conforming;
   if (auto* w = std::get_if<1>(&data.description)) {
     kinds.of_item = w->item_kinds;
     if (std::all_of(kinds.of_item.begin(), kinds.of_item.end(),
@@ -788,8 +795,8 @@ int run(const Options& o) {
     for (std::size_t i = 0; i < w->polylines.size(); ++i) {
       const std::size_t item = w->polyline_lines[i];
       if (kinds.of(std::int64_t(item)) == "conforming") {
-        conforming_lines.push_back(std::move(w->polylines[i]));
-        conforming_items.push_back(std::int64_t(item));
+        conforming.lines.push_back(std::move(w->polylines[i]));
+        conforming.items.push_back(std::int64_t(item));
       } else {
         if (kept != i) w->polylines[kept] = std::move(w->polylines[i]);
         w->polyline_lines[kept++] = item;
@@ -810,8 +817,11 @@ int run(const Options& o) {
       o.points ? *o.points : (domain.number_of_generators == 0 && o.points_in.empty() ? 1000 : 0);
   CVT_2::IO::Metadata metadata{{"program", std::string("cvt2 ") + CVT_2_VERSION_STRING},
                                {"domain", o.domain},
-                               {"boundary", o.resample ? "resample" : "keep"}};
-  if (o.resample) resample(o, default_n, cdt, metadata);
+                               {"boundary", o.slide      ? "slide"
+                                            : o.resample ? "resample"
+                                                         : "keep"}};
+  CVT_2::Sliding_runs_2<CDT> runs;  // --boundary slide: the runs the resampled vertices slide on
+  if (o.resample) resample(o, default_n, cdt, metadata, runs);
   if (o.barriers || o.conforming)
     metadata.emplace_back("constraints", o.barriers ? "barrier" : "conforming");
   if (!kinds.of_item.empty()) metadata.emplace_back("constraint_kinds", "by feature");
@@ -862,10 +872,8 @@ int run(const Options& o) {
     if (!note.empty()) std::cerr << "cvt2: note: " << note << '\n';
   }
   CVT_2::Conforming_disks<Point_2> disks;
-  const std::vector<Conforming_pair> pairs =
-      conforming_lines.empty() ? std::vector<Conforming_pair>()
-                               : insert_conforming_sites(conforming_lines, conforming_items, o,
-                                                         default_n, cdt, fixed, disks);
+  if (!conforming.lines.empty())
+    insert_conforming_sites(o, default_n, cdt, fixed, conforming, disks);
   const std::size_t present = vertices_in_domain(cdt);
   std::size_t n = default_n;
   if (counted) {
@@ -888,8 +896,10 @@ int run(const Options& o) {
       sizing.refinement->add_point(Point_2(x, y), std::min(size, background), radius);
   }
   insert_random_points(n, o, sizing, cdt, disks);
-  const CVT_2::Optimization_result r = optimize(cdt, o, sizing, fixed, disks);
-  if (!conforming_lines.empty() && !o.quiet) {  // what breaks the faces on the lines, if any
+  const CVT_2::Optimization_result r =
+      optimize(cdt, o, sizing, fixed, disks, o.slide ? &runs : nullptr);
+  if (o.slide) slid_domain(o, cdt, runs, segments, domain_alone);
+  if (!conforming.lines.empty() && !o.quiet) {  // what breaks the faces on the lines, if any
     std::size_t inside = 0;
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
       inside += disks.contains(v->point()) ? 1 : 0;
@@ -899,7 +909,7 @@ int run(const Options& o) {
                    "near them are not on the lines\n";
   }
   const BVD bvd(cdt);
-  write_outputs(o, cdt, bvd, metadata, domain_alone, segments, kinds, pairs, top, bottom);
+  write_outputs(o, cdt, bvd, metadata, domain_alone, segments, kinds, conforming, top, bottom);
   print_summary(o, r, bvd, domain_area(cdt));
   return EXIT_SUCCESS;
 }

@@ -50,6 +50,33 @@ struct Line_pair {
 };
 
 /// \ingroup PkgCvt2IO
+/// The `Line_pair` of each of `pairs` (a range of `Conforming_pair_2`, whose points are vertices
+/// of `cdt`, the triangulation of `grid`'s mesh): the grid cells of its two generators (the
+/// first part of a split cell), and `ids[line]` as the line's id. A pair whose points are not
+/// both vertices is left out.
+template <class CDT, class Grid, class PairRange>
+std::vector<Line_pair> conforming_line_pairs(const CDT& cdt, const Grid& grid,
+                                             const PairRange& pairs,
+                                             const std::vector<std::int64_t>& ids) {
+  const auto& mesh = grid.mesh();
+  std::vector<std::size_t> first_part(mesh.number_of_cells(), Grid::none);
+  for (std::size_t g = grid.number_of_cells(); g-- > 0;) first_part[grid.mesh_cell(g)] = g;
+  std::vector<Line_pair> out;
+  typename CDT::Face_handle hint;
+  for (const auto& p : pairs) {
+    typename CDT::Locate_type lt[2];
+    int li[2];
+    const auto f = cdt.locate(p.left, lt[0], li[0], hint);
+    const auto g = cdt.locate(p.right, lt[1], li[1], f);
+    hint = g;
+    if (lt[0] == CDT::VERTEX && lt[1] == CDT::VERTEX)
+      out.push_back({ids.at(p.line), first_part[mesh.cell_of(f->vertex(li[0]))],
+                     first_part[mesh.cell_of(g->vertex(li[1]))]});
+  }
+  return out;
+}
+
+/// \ingroup PkgCvt2IO
 /// Writes, as CSV with the header `constraint,cell,length,other_cell`, one row per piece of a
 /// constraint that bounds or crosses a cell of `grid` (a `Simulation_grid_2`): `constraint` is
 /// `ids[c]` for the mesh's constraint `c` (the input line it lies on, say; -1 if `ids` is

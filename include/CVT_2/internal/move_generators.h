@@ -22,9 +22,10 @@
 namespace CVT_2 {
 namespace internal {
 
-// What the moves work in. All is freed at the end of a call (release()): the lists of one item a
-// vertex would otherwise sit through the evaluation that follows (40 bytes a generator), and so
-// would the flips' stacks of a first move from random points (20 bytes a generator).
+// What the moves work in. All is freed at the end of a call but a small one's (release()): the
+// lists of one item a vertex would otherwise sit through the evaluation that follows (40 bytes a
+// generator), and so would the flips' stacks of a first move from random points (20 bytes a
+// generator).
 template <class CDT>
 struct Move_buffers {
   std::vector<std::size_t> pending, moved, kept_back;
@@ -43,11 +44,15 @@ struct Move_buffers {
       chunk_left;
   // flips so far: made by the chunks on their own, and edges they left for after (for tests)
   std::size_t chunk_flips = 0, deferred_edges = 0;
+  static constexpr std::size_t small_job = std::size_t(1) << 16;  // vertices moved
   // If set, the moves are local (no pass over all vertices or edges), and every face they
   // change is pushed here (some more than once): the faces around a moved vertex, both faces
   // of each flip.
   std::vector<typename CDT::Face_handle>* changed = nullptr;
   void release() {  // all but the counts and `changed`
+    // A small job keeps them: freeing a megabyte or two at each move made glibc trim the heap's
+    // top and fault it in again at the next (26% of an iteration at 2 * 10^4 generators).
+    if (pending.capacity() < small_job && from.capacity() < small_job) return;
     Move_buffers released;
     released.chunk_flips = chunk_flips;
     released.deferred_edges = deferred_edges;
@@ -280,15 +285,6 @@ void move_all_at_once(CDT& cdt, const Face_chunks<CDT>& chunks, unsigned threads
   set_targets(pending, vertex, target, threads, b);
   check_moved_faces(cdt, chunks, threads, b);
   put_back_inverted(cdt, pending, vertex, threads, b);
-}
-
-// The faces around v into `out`.
-template <class CDT>
-void push_star(const CDT& cdt, typename CDT::Vertex_handle v,
-               std::vector<typename CDT::Face_handle>& out) {
-  auto fc = cdt.incident_faces(v), done = fc;
-  do out.push_back(fc);
-  while (++fc != done);
 }
 
 // Moves each free vertex vertex(i) toward target(i), for i in `order` (a range of numbers in

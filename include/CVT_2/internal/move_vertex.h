@@ -1,5 +1,5 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// Moving a free vertex in place, within its star: no edge, hence no constraint, is crossed.
+// Moving a vertex in place, within its star: no edge, hence no constraint, is crossed.
 #ifndef CVT_2_INTERNAL_MOVE_VERTEX_H
 #define CVT_2_INTERNAL_MOVE_VERTEX_H
 
@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <utility>
+#include <vector>
 
 namespace CVT_2 {
 namespace internal {
@@ -56,6 +57,47 @@ double move_free_vertex(const CDT& cdt, typename CDT::Vertex_handle v,
     return CGAL::to_double(t);
   }
   return 0;
+}
+
+// The faces around v into `out`.
+template <class CDT>
+void push_star(const CDT& cdt, typename CDT::Vertex_handle v,
+               std::vector<typename CDT::Face_handle>& out) {
+  auto fc = cdt.incident_faces(v), done = fc;
+  do out.push_back(fc);
+  while (++fc != done);
+}
+
+// Whether the triangulation stays valid with the vertex v (constrained or not, on the convex
+// hull or not) at p instead: every finite face around v positive, and, on the hull, the hull
+// convex (collinear allowed) at v and at its two neighbours on it. Exact orientations. The faces
+// around v then tile its old star, so its edges cross nothing, constrained or not.
+template <class CDT>
+bool stays_valid_at(const CDT& cdt, typename CDT::Vertex_handle v, const typename CDT::Point_2& p) {
+  using Vertex_handle = typename CDT::Vertex_handle;
+  const auto orientation = cdt.geom_traits().orientation_2_object();
+  const auto at = [&](Vertex_handle w) -> const typename CDT::Point_2& {
+    return w == v ? p : w->point();
+  };
+  auto fc = cdt.incident_faces(v), done = fc;
+  do {
+    if (!cdt.is_infinite(fc)) {
+      if (orientation(at(fc->vertex(0)), at(fc->vertex(1)), at(fc->vertex(2))) != CGAL::LEFT_TURN)
+        return false;
+      continue;
+    }
+    // The hull edge a b of the infinite face (inf, a, b), counterclockwise, and its neighbours
+    // on the hull, a' before a and b' after b: the hull turns right or goes straight at a and b.
+    const int i = fc->index(cdt.infinite_vertex());
+    const Vertex_handle a = fc->vertex(CDT::ccw(i)), b = fc->vertex(CDT::cw(i));
+    const auto before = fc->neighbor(CDT::cw(i)), after = fc->neighbor(CDT::ccw(i));
+    const Vertex_handle a0 = before->vertex(CDT::ccw(before->index(cdt.infinite_vertex())));
+    const Vertex_handle b1 = after->vertex(CDT::cw(after->index(cdt.infinite_vertex())));
+    if (orientation(at(a0), at(a), at(b)) == CGAL::LEFT_TURN ||
+        orientation(at(a), at(b), at(b1)) == CGAL::LEFT_TURN)
+      return false;
+  } while (++fc != done);
+  return true;
 }
 
 }  // namespace internal

@@ -38,6 +38,14 @@ class Run_resampler {
     bool left_inside, right_inside;
   };
 
+  // A run of the result with the domain on a side: its input polyline, and its points in order
+  // (numbers in points()), each on segment seg[k] of it at parameter t[k].
+  struct Resampled_run {
+    std::vector<Point_2> polyline;
+    std::vector<std::size_t> points, seg;
+    std::vector<double> t;
+  };
+
   // What resample() counted.
   std::size_t input_vertices = 0, output_vertices = 0, features = 0, corners = 0, runs = 0;
   std::size_t kept_for_deviation = 0, kept_for_topology = 0;
@@ -67,6 +75,7 @@ class Run_resampler {
   // The vertices of the result: the generators of the input, then the runs' points.
   const std::vector<Point_2>& points() const { return m_points; }
   const std::vector<Chord>& chords() const { return m_chords; }
+  const std::vector<Resampled_run>& resampled_runs() const { return m_resampled; }
 
   // The domain's area and its boundary's length (the constrained edges with the domain on one
   // side): sums of sorted terms, the same bits whatever the triangulation's layout.
@@ -596,13 +605,22 @@ class Run_resampler {
       if (is_new) m_points.push_back(p);
       return it->second;
     };
-    for (const Run& r : m_runs)
+    for (const Run& r : m_runs) {
       for (std::size_t j = 0; j + 1 < r.nodes.size(); ++j) {
         std::size_t v = 0;
         const double d = farthest(r, j, &v);
         if (d > 0) max_deviation = std::max(max_deviation, std::sqrt(d));
         m_chords.push_back({id(r.nodes[j].q), id(r.nodes[j + 1].q), r.left_inside, r.right_inside});
       }
+      if (r.keep() || r.nodes.size() < 3) continue;
+      Resampled_run out{r.p, {}, {}, {}};
+      for (const Node& n : r.nodes) {
+        out.points.push_back(id(n.q));
+        out.seg.push_back(n.seg);
+        out.t.push_back(n.t);
+      }
+      m_resampled.push_back(std::move(out));
+    }
     output_vertices = m_points.size() - generators;
   }
 
@@ -612,6 +630,7 @@ class Run_resampler {
   std::vector<std::vector<Point_2>> m_dropped;  // the rings below the minimum area
   std::vector<Point_2> m_points;
   std::vector<Chord> m_chords;
+  std::vector<Resampled_run> m_resampled;
 };
 
 // Marks the faces of `cdt` by the sides of its constraints: a face reached from the unbounded

@@ -181,6 +181,18 @@ void set_keep_out(Optimizer& optimizer, const NP& np) {
   }
 }
 
+// The named parameter `sliding_runs` (a pointer to a Sliding_runs_2, or nullptr), if given, to
+// the optimizer. \throws std::invalid_argument if a region is given too.
+template <class Optimizer, class NP>
+void set_sliding_runs(Optimizer& optimizer, const NP& np) {
+  if constexpr (internal_np::has_parameter<NP, internal_np::sliding_runs_t>) {
+    if constexpr (internal_np::has_parameter<NP, internal_np::region_t>)
+      throw std::invalid_argument(
+          "sliding_runs and region do not go together: a region moves free generators only");
+    optimizer.set_sliding_runs(get_parameter(np, internal_np::sliding_runs_t()));
+  }
+}
+
 // Lays out the faces of a big triangulation that CGAL's own insertion left scattered in
 // memory (insert_generators_2() lays out its own), before a run that may repay it: at 10^6
 // generators an iteration then takes about 3/4 of the time, and the layout costs about three
