@@ -508,10 +508,12 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
   return py::make_tuple(out, report);
 }
 
-// The domain of `cdt` after its vertices slid (optimize(..., boundary="slide")): its lines where
-// they are now, as Triangle's arrays, so that the diagram's ridges and the writers name them;
-// its generators are the optimization's.
-std::shared_ptr<Domain> slid_domain(const Domain& d, const CDT& cdt) {
+// The domain of `cdt` after its vertices slid along `runs` (optimize(..., boundary="slide")): its
+// lines where they are now, as Triangle's arrays, so that the diagram's ridges and the writers
+// name them, the runs as they are (to slide again), the largest deviation in the metadata; its
+// generators are the optimization's.
+std::shared_ptr<Domain> slid_domain(const Domain& d, const CDT& cdt,
+                                    const CVT_2::Sliding_runs_2<CDT>& runs) {
   auto out = std::make_shared<Domain>();
   auto poly = CVT_2::IO::domain_poly_data(cdt, "<arrays>");
   std::vector<bool> on_segment(poly.vertices.size(), false);
@@ -526,8 +528,12 @@ std::shared_ptr<Domain> slid_domain(const Domain& d, const CDT& cdt) {
   out->data.file.source = d.data.file.source;
   out->data.file.format = out->format = "arrays";
   out->metadata = d.metadata;
-  for (auto& [key, value] : out->metadata)
+  for (auto& [key, value] : out->metadata) {
     if (key == "boundary") value = "slide";
+    if (key == "max_deviation")  // the resampling's bound the chords that did not slide
+      value = CVT_2::internal::number_text(std::max(std::stod(value), runs.max_deviation()));
+  }
+  out->runs = std::make_shared<const CVT_2::Sliding_runs_2<CDT>>(runs);
   out->finish();
   return out;
 }
@@ -1263,7 +1269,7 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
           CVT_2::density_response_2(bvd, Python_density{choice.function, false});
     const std::string note = CVT_2::internal::density_response_note(out->density_response);
     if (!note.empty()) out->notes.push_back(note);
-    if (slide) out->domain = slid_domain(*domain, *cdt);
+    if (slide) out->domain = slid_domain(*domain, *cdt, *runs);
     out->cdt = std::move(cdt);
   }
   // The final state, which the callback has not seen unless it stopped the run there.

@@ -1142,38 +1142,75 @@ TEST_CASE("sliding on straight runs: the energy never rises, the domain stays, a
           "[slide]") {
   const Cdt_ids before = finely_cut_squares(64);
   const double h = CVT_2::cell_size_for_cells_2(before, 600);
+  for (const bool lbfgs : {false, true}) {
+    INFO((lbfgs ? "L-BFGS" : "Lloyd"));
+    Cdt_ids after = before;
+    CVT_2::Sliding_runs_2<Cdt_ids> runs;
+    CVT_2::resample_constraints_2(after, h, CVT_2::parameters::sliding_runs(&runs));
+    REQUIRE(runs.number_of_runs() == 8u);  // the sides between the corners
+    REQUIRE(runs.number_of_sliding_vertices() > 40u);
+    const Domain_marks marks = snapshot_marks(after);
+    std::vector<Point> start;
+    for (auto v = after.finite_vertices_begin(); v != after.finite_vertices_end(); ++v)
+      start.push_back(v->point());
+    std::sort(start.begin(), start.end());
+    CVT_2::insert_generators_2(
+        after, CVT_2::random_points_in_domain_2(after, 500, CVT_2::parameters::random_seed(5)));
+    std::vector<double> energies;
+    const std::function<bool(const CVT_2::Optimization_result&)> record =
+        [&](const CVT_2::Optimization_result& r) {
+          energies.push_back(r.energy);
+          return true;
+        };
+    const auto np = CVT_2::parameters::sliding_runs(&runs)
+                        .number_of_iterations(60)
+                        .move_ratio_bound(0)
+                        .callback(record);
+    lbfgs ? CVT_2::lbfgs_optimize_2(after, np) : CVT_2::lloyd_optimize_2(after, np);
+    REQUIRE(energies.size() > 50);
+    std::size_t rises = 0;
+    for (std::size_t i = 1; i < energies.size(); ++i)
+      rises += energies[i] > energies[i - 1] * (1 + 1e-12);
+    CHECK(rises == 0);
+    // The vertices slid, the domain did not change.
+    CHECK(vertices_not_among(after, start) > runs.number_of_sliding_vertices() / 2);
+    CHECK(domain_area(after) == Approx(1 - 0.25 * 0.25).epsilon(1e-12));
+    check_slid(before, after, h / 4, runs, marks);
+  }
+}
+
+TEST_CASE("sliding stops at a chord a point split, and at fixed points", "[slide]") {
+  const Cdt_ids before = finely_cut_squares(64);
+  const double h = CVT_2::cell_size_for_cells_2(before, 600);
   Cdt_ids after = before;
   CVT_2::Sliding_runs_2<Cdt_ids> runs;
   CVT_2::resample_constraints_2(after, h, CVT_2::parameters::sliding_runs(&runs));
-  REQUIRE(runs.number_of_runs() == 8u);  // the sides between the corners
-  REQUIRE(runs.number_of_sliding_vertices() > 40u);
-  const Domain_marks marks = snapshot_marks(after);
-  std::vector<Point> start;
+  // The bottom side's vertices, in order: split the chord between the second and the third,
+  // and fix the fifth.
+  std::vector<Point> bottom;
   for (auto v = after.finite_vertices_begin(); v != after.finite_vertices_end(); ++v)
-    start.push_back(v->point());
-  std::sort(start.begin(), start.end());
+    if (v->point().y() == 0) bottom.push_back(v->point());
+  std::sort(bottom.begin(), bottom.end());
+  REQUIRE(bottom.size() > 6);
+  const Point split((bottom[1].x() + bottom[2].x()) / 2, 0);
+  CVT_2::insert_generators_2(after, std::vector<Point>{split});  // on the chord: splits it
+  const Point fixed = bottom[4];
   CVT_2::insert_generators_2(
-      after, CVT_2::random_points_in_domain_2(after, 500, CVT_2::parameters::random_seed(5)));
-  std::vector<double> energies;
-  const std::function<bool(const CVT_2::Optimization_result&)> record =
-      [&](const CVT_2::Optimization_result& r) {
-        energies.push_back(r.energy);
-        return true;
-      };
-  const auto r = CVT_2::lloyd_optimize_2(
-      after,
-      CVT_2::parameters::sliding_runs(&runs).number_of_iterations(60).move_ratio_bound(0).callback(
-          record));
-  REQUIRE(energies.size() > 50);
-  std::size_t rises = 0;
-  for (std::size_t i = 1; i < energies.size(); ++i)
-    rises += energies[i] > energies[i - 1] * (1 + 1e-12);
-  CHECK(rises == 0);
-  // The vertices slid, the domain did not change.
-  CHECK(vertices_not_among(after, start) > runs.number_of_sliding_vertices() / 2);
-  CHECK(domain_area(after) == Approx(1 - 0.25 * 0.25).epsilon(1e-12));
-  check_slid(before, after, h / 4, runs, marks);
-  (void)r;
+      after, CVT_2::random_points_in_domain_2(after, 500, CVT_2::parameters::random_seed(7)));
+  CVT_2::lloyd_optimize_2(after, CVT_2::parameters::sliding_runs(&runs)
+                                     .fixed_points(std::vector<Point>{fixed})
+                                     .number_of_iterations(30)
+                                     .move_ratio_bound(0));
+  std::set<Point> now;
+  for (auto v = after.finite_vertices_begin(); v != after.finite_vertices_end(); ++v)
+    now.insert(v->point());
+  CHECK(now.count(bottom[1]) == 1);  // the ends of the split chord stayed
+  CHECK(now.count(bottom[2]) == 1);
+  CHECK(now.count(split) == 1);
+  CHECK(now.count(fixed) == 1);  // the fixed one too
+  CHECK(std::count_if(bottom.begin() + 5, bottom.end(),
+                      [&](const Point& p) { return now.count(p) == 0; }) > 0);  // others slid
+  CHECK(runs.max_deviation() == 0);                                             // a straight run
 }
 
 TEST_CASE("sliding on real coasts and county lines: on the input, within the bound, converged",

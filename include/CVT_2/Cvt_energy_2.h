@@ -141,9 +141,9 @@ class Cvt_energy_2 {
   void set_number_of_threads(unsigned n) { m_number_of_threads = n; }
   unsigned number_of_threads() const { return m_number_of_threads; }  ///< as set; 0: one per core
 
-  /// Fixes the generators `vertices` (free vertices of the triangulation): their cells count in
-  /// the energy, but they are not among `free_generators()`, so that no optimizer moves them (a
-  /// well, an observation point). Replaces the generators fixed before.
+  /// Fixes the generators `vertices` (vertices of the triangulation): their cells count in the
+  /// energy, but they are not among `free_generators()` and do not slide, so that no optimizer
+  /// moves them (a well, an observation point). Replaces the generators fixed before.
   void fix_generators(const std::vector<Vertex_handle>& vertices) {
     m_fixed.clear();
     m_fixed.insert(vertices.begin(), vertices.end());
@@ -181,8 +181,13 @@ class Cvt_energy_2 {
   /// Lets the vertices of `runs` slide along their runs (`Sliding_runs_2`): each evaluation
   /// plans their constrained centroids, counted in the move ratios, and `slide_generators()`
   /// moves them. Not with a region (`set_region()`), whose vertices are free generators only.
-  /// `runs` must outlive the evaluations; nullptr: none slide (the default).
-  void set_sliding_runs(Sliding_runs_2<CDT>* runs) { m_sliding = runs; }
+  /// `runs` must outlive the evaluations; nullptr: none slide (the default). Vertices next to a
+  /// chord that points inserted since split stop (`Sliding_runs_2::stop_at_split_chords()`), and
+  /// so do those fixed by `fix_generators()`.
+  void set_sliding_runs(Sliding_runs_2<CDT>* runs) {
+    m_sliding = runs;
+    if (runs) runs->stop_at_split_chords(m_cdt);
+  }
   /// Moves the vertices of the sliding runs toward the constrained centroids that the last
   /// evaluation planned (`Sliding_runs_2::slide()`); returns how many moved.
   std::size_t slide_generators() {
@@ -554,7 +559,7 @@ auto Cvt_energy_2<CDT, Density, Quadrature, Traits>::cell_figures(
       !std::isfinite(first2))
     throw Domain_error(bad_moments_message(v->point(), points, f.mass, f.energy, first2));
   if (!f.is_free) {
-    if (sliding() && f.mass > 0) {  // a vertex of a sliding run: its centroid, for the plan
+    if (sliding() && f.mass > 0 && !is_fixed(v)) {  // a sliding vertex: its centroid, for the plan
       const std::size_t k = m_sliding->slider(v);
       if (k != Sliding_runs_2<CDT>::none)
         m_sliding->set_cell(k, v->point() + m.first_moment / m.mass, squared_diameter(points));

@@ -26,7 +26,7 @@ namespace CVT_2 {
 
 /// \ingroup PkgCvt2Ref
 /// The vertices of resampled constraints that slide along the input polylines during Lloyd
-/// iteration and L-BFGS (issue 43, "sliding"). A *run* is a piece of an input polyline between
+/// iteration and L-BFGS. A *run* is a piece of an input polyline between
 /// two features (junctions, ends, corners, fixed points), which stay; the vertices between them
 /// are points on it, joined by the chords that are the triangulation's constraints.
 /// `resample_constraints_2(cdt, h, sliding_runs(&runs))` fills it; `lloyd_optimize_2()` and
@@ -41,7 +41,7 @@ namespace CVT_2 {
 /// convex hull does not leave it, and a vertex inside does not join it.) Then Lawson's flips
 /// restore the constrained Delaunay property. A slid vertex is computed on its input segment in
 /// double precision: on the input polyline to rounding. On a straight run the domain does not
-/// change and Lloyd's energy never rises; on a curved one the chords move with the vertices and so
+/// change and the energy never rises; on a curved one the chords move with the vertices and so
 /// does the domain, by at most the bound.
 ///
 /// \tparam CDT a constrained Delaunay triangulation whose faces model `BvdFaceBase_2`.
@@ -92,13 +92,13 @@ class Sliding_runs_2 {
   std::size_t number_of_sliding_vertices() const { return m_sliders.size(); }
   bool empty() const { return m_sliders.empty(); }  ///< whether no vertex slides
 
-  /// The largest distance from an input vertex to the chord over it, now.
+  /// The largest distance from an input vertex to the chord over it, now (by the points the
+  /// runs last saw their vertices at).
   double max_deviation() const {
     double worst = 0;
     for (const Run& r : m_runs)
       for (std::size_t k = 0; k + 1 < r.v.size(); ++k)
-        worst = std::max(
-            worst, chord_deviation2(r, r.at[k], r.v[k]->point(), r.at[k + 1], r.v[k + 1]->point()));
+        worst = std::max(worst, chord_deviation2(r, r.at[k], r.q[k], r.at[k + 1], r.q[k + 1]));
     return std::sqrt(worst);
   }
 
@@ -124,7 +124,30 @@ class Sliding_runs_2 {
     for (std::size_t i = 0; i < m_runs.size(); ++i) m_runs[i].v = std::move(found[i]);
     m_slider_of.clear();
     for (std::size_t k = 0; k < m_sliders.size(); ++k)
-      m_slider_of.emplace(m_runs[m_sliders[k].run].v[m_sliders[k].index], k);
+      if (!m_sliders[k].stopped)
+        m_slider_of.emplace(m_runs[m_sliders[k].run].v[m_sliders[k].index], k);
+  }
+
+  /// Stops the vertices at both ends of a chord that is no longer a constrained edge of `cdt`
+  /// (a point inserted on it split it) from sliding, so that no chord's bound is measured on a
+  /// chord that is not there; returns how many stopped. The optimizers call it first.
+  std::size_t stop_at_split_chords(const CDT& cdt) {
+    std::size_t stopped = 0;
+    const auto stop = [&](Vertex_handle v) {
+      const auto it = m_slider_of.find(v);
+      if (it == m_slider_of.end()) return;
+      m_sliders[it->second].stopped = true;
+      m_slider_of.erase(it);
+      ++stopped;
+    };
+    for (const Run& r : m_runs)
+      for (std::size_t k = 0; k + 1 < r.v.size(); ++k) {
+        typename CDT::Face_handle f;
+        int i = 0;
+        if (!cdt.is_edge(r.v[k], r.v[k + 1], f, i) || !f->is_constrained(i))
+          stop(r.v[k]), stop(r.v[k + 1]);
+      }
+    return stopped;
   }
 
   /// \cond SKIP_IN_MANUAL
@@ -239,7 +262,8 @@ class Sliding_runs_2 {
     Point_2 centroid{};
     double diameter2 = 0;
     bool evaluated = false;
-    double target = 0;  // the arc length planned
+    bool stopped = false;  // by stop_at_split_chords()
+    double target = 0;     // the arc length planned
   };
 
   static std::size_t segment_of(const Run& r, double s) {

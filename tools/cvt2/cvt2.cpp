@@ -20,6 +20,7 @@
 #include <CVT_2/Simulation_grid_2.h>
 #include <CVT_2/Sliding_runs_2.h>
 #include <CVT_2/conforming_sites_2.h>
+#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/mark_domain_2.h>
@@ -713,24 +714,23 @@ void resample(const Options& o, std::size_t free_generators, CDT& cdt,
 }
 
 // --boundary slide, after the optimization: the domain's lines where the vertices slid to, for
-// --cells-on-constraints and --domain-out (with the file's own generators where they were given),
-// and a note of how far the lines are from the input.
+// --cells-on-constraints and --domain-out (with the file's own generators where they were given,
+// those still strictly inside), the largest deviation from the input in the metadata, and a
+// note of it.
 void slid_domain(const Options& o, const CDT& cdt, const CVT_2::Sliding_runs_2<CDT>& runs,
-                 Segments& segments, CDT& domain_alone) {
+                 Segments& segments, CDT& domain_alone, CVT_2::IO::Metadata& metadata) {
   const CVT_2::IO::Poly_data<Point_2> poly = CVT_2::IO::domain_poly_data(cdt);
   if (!segments.ends.empty()) {
     CVT_2::IO::Domain_data<K> slid;
     slid.description = poly;
     segments = CVT_2::IO::domain_segments(slid);
   }
+  for (auto& [key, value] : metadata)  // the resampling's bound the chords that did not slide
+    if (key == "max_deviation")
+      value = CVT_2::internal::number_text(std::max(std::stod(value), runs.max_deviation()));
   if (!o.domain_out.empty()) {
     std::vector<bool> on_segment(poly.vertices.size(), false);
     for (const auto& [a, b] : poly.segments) on_segment[a] = on_segment[b] = true;
-    std::vector<Point_2> generators;
-    for (auto v = domain_alone.finite_vertices_begin(); v != domain_alone.finite_vertices_end();
-         ++v)
-      if (!domain_alone.are_there_incident_constraints(v)) generators.push_back(v->point());
-    CDT out;
     CVT_2::IO::Poly_data<Point_2> lines = poly;
     lines.vertices.clear();
     lines.vertex_lines.clear();
@@ -739,8 +739,18 @@ void slid_domain(const Options& o, const CDT& cdt, const CVT_2::Sliding_runs_2<C
       if (on_segment[i])
         number[i] = lines.vertices.size(), lines.vertices.push_back(poly.vertices[i]);
     for (auto& [a, b] : lines.segments) a = number[a], b = number[b];
-    lines.vertices.insert(lines.vertices.end(), generators.begin(), generators.end());
+    CDT out;
     CVT_2::IO::insert_poly(out, lines);
+    std::vector<Point_2> generators;
+    for (auto v = domain_alone.finite_vertices_begin(); v != domain_alone.finite_vertices_end();
+         ++v) {
+      if (domain_alone.are_there_incident_constraints(v)) continue;
+      CDT::Locate_type lt;
+      int li = 0;
+      const CDT::Face_handle f = out.locate(v->point(), lt, li);
+      if (lt == CDT::FACE && f->is_inside_domain()) generators.push_back(v->point());
+    }
+    CVT_2::insert_generators_2(out, generators);
     domain_alone.swap(out);
   }
   if (!o.quiet)
@@ -804,6 +814,10 @@ int run(const Options& o) {
     }
     w->polylines.resize(kept);
     w->polyline_lines.resize(kept);
+    if (!conforming.lines.empty() && o.slide)
+      throw Usage_error(
+          "--boundary slide and conforming lines do not go together yet (the sliding vertices "
+          "would not keep out of the lines' circles): use --boundary resample");
   } else if (o.conforming) {
     throw Usage_error(
         "--constraints conforming takes its lines from a .wkt or .geojson file (LINESTRING), "
@@ -898,7 +912,7 @@ int run(const Options& o) {
   insert_random_points(n, o, sizing, cdt, disks);
   const CVT_2::Optimization_result r =
       optimize(cdt, o, sizing, fixed, disks, o.slide ? &runs : nullptr);
-  if (o.slide) slid_domain(o, cdt, runs, segments, domain_alone);
+  if (o.slide) slid_domain(o, cdt, runs, segments, domain_alone, metadata);
   if (!conforming.lines.empty() && !o.quiet) {  // what breaks the faces on the lines, if any
     std::size_t inside = 0;
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)

@@ -115,8 +115,8 @@ std::vector<typename CDT::Vertex_handle> vertices_at(const CDT& cdt, const Point
   return vertices;
 }
 
-// The free vertices at the points of the named parameter `fixed_points` (none without it; a
-// point on a constraint is a constrained vertex, which never moves anyway).
+// The vertices at the points of the named parameter `fixed_points` (none without it; one on a
+// constraint never moves anyway, unless it would slide).
 // \throws std::invalid_argument naming a point that is not a vertex of `cdt`.
 template <class CDT, class NP>
 std::vector<typename CDT::Vertex_handle> fixed_vertices(const CDT& cdt, const NP& np) {
@@ -124,7 +124,7 @@ std::vector<typename CDT::Vertex_handle> fixed_vertices(const CDT& cdt, const NP
   if constexpr (internal_np::has_parameter<NP, internal_np::fixed_points_t>)
     for (const auto v :
          vertices_at(cdt, get_parameter(np, internal_np::fixed_points_t()), "fixed_points"))
-      if (!cdt.are_there_incident_constraints(v)) vertices.push_back(v);
+      vertices.push_back(v);
   return vertices;
 }
 
@@ -224,7 +224,7 @@ struct Lloyd_steps {
 template <class Evaluation>
 std::optional<Stop_reason> stop_reason(const Evaluation& e, const Optimization_result& r,
                                        const Run_options& o) {
-  if (e.number_of_free_generators == 0) return NO_FREE_GENERATOR;
+  if (e.number_of_free_generators + e.number_of_sliding_generators == 0) return NO_FREE_GENERATOR;
   if (o.bound > 0 && e.max_move_ratio < o.bound) return CONVERGED;
   if (r.number_of_iterations >= o.max_iterations) return MAX_ITERATIONS_REACHED;
   if (o.time_limit > 0 && r.seconds >= o.time_limit) return TIME_LIMIT_REACHED;
@@ -263,7 +263,7 @@ Optimization_result run_optimization(Optimizer&& optimizer, const Run_options& o
   auto e = optimizer.evaluate(o.lo);
   while (true) {
     if (o.bound > 0 && e.max_move_ratio < o.bound && e.resolution < o.hi &&
-        e.number_of_free_generators > 0) {
+        e.number_of_free_generators + e.number_of_sliding_generators > 0) {
       e = optimizer.evaluate(o.hi);  // converged at a low resolution: confirm at the highest
       continue;
     }

