@@ -7,7 +7,8 @@ input (`--boundary slide --cells N`), uniform density, L-BFGS to the 1% stop.
     python3 python/benchmarks/resample_table.py build/tools/cvt2/cvt2 [DATA_DIR] [N ...]
 
 Columns: the cells delivered; the share of them that are cells of the domain's vertices; specks
-(below a tenth of the median cell) and cells below a quarter of it; the smallest over the median;
+(below a tenth of the median cell) and cells below a quarter of it (and of those, how many
+have an input vertex as generator: a feature, or a vertex the bound or the topology kept); the smallest over the median;
 the normalized energy (1 for hexagons); for resample, the boundary vertices before and after and
 the largest deviation from the input, relative to the cell size.
 """
@@ -25,6 +26,15 @@ DOMAINS = ["world_land_110m.wkt", "france_mainland.poly", "us_kentucky_counties.
            "square_inner_constraints.poly"]
 
 
+def input_vertices(cvt2, domain, tmp):
+    """The domain's own vertices on constraints (junctions, corners, every vertex kept)."""
+    out = pathlib.Path(tmp) / "own.txt"
+    subprocess.run([cvt2, str(domain), "-n", "0", "--iterations", "0", "--quiet", "--points-out",
+                    str(out)], check=True, capture_output=True)
+    return {(x, y) for x, y, c in (map(float, line.split()) for line in out.read_text().splitlines())
+            if c == 1}
+
+
 def run(cvt2, domain, mode, n, tmp):
     out = pathlib.Path(tmp) / "cells.geojson"
     count = ["-n", str(n)] if mode == "keep" else ["--cells", str(n)]
@@ -39,9 +49,12 @@ def run(cvt2, domain, mode, n, tmp):
     areas = [f["properties"]["area"] for f in features]
     constrained = sum(f["properties"]["constrained"] for f in features)
     median = statistics.median(areas)
+    own = input_vertices(cvt2, domain, tmp)
     row = {"cells": len(areas), "constrained": constrained / len(areas),
            "specks": sum(a < 0.1 * median for a in areas) / len(areas),
            "quarter": sum(a < 0.25 * median for a in areas),
+           "quarter_at_input": sum(a < 0.25 * median and tuple(f["properties"]["generator"]) in own
+                                   for a, f in zip(areas, features)),
            "smallest": min(areas) / median, "energy": float(summary["normalized_energy"]),
            "iterations": int(summary["iterations"]), "seconds": seconds}
     m = re.search(r"cell size (\S+): (\d+) vertices on constraints -> (\d+) .*largest deviation (\S+),",
@@ -56,7 +69,7 @@ def main():
     cvt2 = sys.argv[1]
     data = pathlib.Path(sys.argv[2] if len(sys.argv) > 2 else "examples/data")
     sizes = [int(a) for a in sys.argv[3:]] or [2000, 20000]
-    print("| domain | N | mode | cells | of vertices | specks | < ¼ median | smallest / median "
+    print("| domain | N | mode | cells | of vertices | specks | < ¼ median (at input vertices) | smallest / median "
           "| normalized energy | boundary vertices | deviation / size | iterations | ms an iteration |")
     print("|---|--:|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|")
     with tempfile.TemporaryDirectory() as tmp:
@@ -69,7 +82,7 @@ def main():
                         continue
                     deviation = f"{r['deviation']:.3f}" if "deviation" in r else ""
                     print(f"| {name} | {n} | {mode} | {r['cells']} | {r['constrained']:.1%} | "
-                          f"{r['specks']:.1%} | {r['quarter']} | {r['smallest']:.1e} | "
+                          f"{r['specks']:.1%} | {r['quarter']} ({r['quarter_at_input']}) | {r['smallest']:.1e} | "
                           f"{r['energy']:.3f} | {r.get('boundary', '')} | {deviation} | "
                           f"{r['iterations']} | {1000 * r['seconds'] / max(r['iterations'], 1):.2f} |",
                           flush=True)
