@@ -270,6 +270,22 @@ struct Domain {
   std::vector<std::int64_t> conforming_items;
   std::int64_t item_offset = 0;  // from a polyline's number in the description to its item
 
+  // A GeoJSON feature's "kind" for the input item `item` ("slit", "barrier", "conforming"), or
+  // `by_default` where it says none (as cvt2's --constraints).
+  const std::string& kind(std::int64_t item, const std::string& by_default) const {
+    const auto* w = std::get_if<1>(&data.description);
+    if (w == nullptr) return by_default;
+    const std::int64_t k = item - item_offset - 1;  // item_kinds counts items from 1
+    if (k >= 0 && std::size_t(k) < w->item_kinds.size() && !w->item_kinds[std::size_t(k)].empty())
+      return w->item_kinds[std::size_t(k)];
+    return by_default;
+  }
+  bool has_kinds() const {
+    const auto* w = std::get_if<1>(&data.description);
+    return w != nullptr && std::any_of(w->item_kinds.begin(), w->item_kinds.end(),
+                                       [](const std::string& k) { return !k.empty(); });
+  }
+
   std::unique_ptr<CDT> triangulation() const {
     auto cdt = std::make_unique<CDT>();
     CVT_2::IO::insert_domain(*cdt, data);
@@ -538,26 +554,30 @@ std::shared_ptr<Domain> slid_domain(const Domain& d, const CDT& cdt,
   return out;
 }
 
-// The domain without its lines, which optimize(..., constraints="conforming") makes conforming:
-// `lines` gets them and `items` their items. \throws py::value_error for a domain with none.
-std::shared_ptr<Domain> without_lines(const Domain& d, std::vector<std::vector<Point_2>>& lines,
-                                      std::vector<std::int64_t>& items) {
-  const auto* w = std::get_if<1>(&d.data.description);
-  if (w == nullptr || w->polylines.empty())
-    throw py::value_error(
-        "constraints='conforming' makes the lines of a WKT, GeoJSON or shapely domain "
-        "(LineStrings) conforming; this domain has none");
+// The domain without its conforming lines, those whose kind (a GeoJSON feature's, else
+// `by_default`) is "conforming": `lines` gets them and `items` their items.
+std::shared_ptr<Domain> without_conforming_lines(const Domain& d, const std::string& by_default,
+                                                 std::vector<std::vector<Point_2>>& lines,
+                                                 std::vector<std::int64_t>& items) {
   auto out = std::make_shared<Domain>();
   out->data = d.data;
   auto& lw = std::get<1>(out->data.description);
-  lines = std::move(lw.polylines);
-  for (const std::size_t item : lw.polyline_lines)
-    items.push_back(std::int64_t(item) + d.item_offset);
-  lw.polylines.clear();
-  lw.polyline_lines.clear();
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < lw.polylines.size(); ++i) {
+    const std::int64_t item = std::int64_t(lw.polyline_lines[i]) + d.item_offset;
+    if (d.kind(item, by_default) == "conforming") {
+      lines.push_back(std::move(lw.polylines[i]));
+      items.push_back(item);
+    } else {
+      if (kept != i) lw.polylines[kept] = std::move(lw.polylines[i]);
+      lw.polyline_lines[kept++] = lw.polyline_lines[i];
+    }
+  }
+  lw.polylines.resize(kept);
+  lw.polyline_lines.resize(kept);
   out->format = d.format;
   out->metadata = d.metadata;
-  out->metadata.emplace_back("constraints", "conforming");
+  if (by_default == "conforming") out->metadata.emplace_back("constraints", "conforming");
   out->finish(d.item_offset);
   return out;
 }
@@ -809,8 +829,23 @@ struct Diagram {
     return CVT_2::IO::constraint_items(*cdt, *mesh, segments);
   }
 
-  // The mesh as a simulation grid, inner constraints all slits or all barriers.
-  Grid grid(bool barriers) const { return Grid(*mesh, barriers ? CVT_2::BARRIER : CVT_2::SLIT); }
+  // The mesh as a simulation grid: inner constraints barriers or slits, by the writer's choice
+  // or a GeoJSON feature's "kind" where it says one.
+  Grid grid(bool barriers) const {
+    if (!domain->has_kinds()) return Grid(*mesh, barriers ? CVT_2::BARRIER : CVT_2::SLIT);
+    const std::vector<std::int64_t> items = input_items();
+    const std::string by_default = barriers ? "barrier" : "slit";
+    return Grid(*mesh, [&](Grid::Index c) {
+      return domain->kind(c < items.size() ? items[c] : -1, by_default) == "barrier";
+    });
+  }
+  // Whether the writers need the grid: some constraint is a barrier.
+  bool any_barrier(bool barriers) const {
+    if (barriers) return true;
+    const auto* w = std::get_if<1>(&domain->data.description);
+    return w != nullptr &&
+           std::count(w->item_kinds.begin(), w->item_kinds.end(), std::string("barrier")) > 0;
+  }
 
   // Cells as lists of vertex indices: the cycles (slits walked there and back), the outlines
   // (slits dropped, lobes joined at the generator), or the valid polygons (a list of rings each).
@@ -1141,8 +1176,6 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
                                        std::optional<double> boundary_tolerance,
                                        const py::object& fixed_object, bool slide,
                                        bool conforming) {
-  if (slide && conforming)
-    throw py::value_error("boundary='slide' and constraints='conforming' do not go together yet");
   if (slide && !domain->runs)
     throw py::value_error(
         "boundary='slide' needs a domain made by Domain.resample(): its vertices slide along the "
@@ -1188,13 +1221,25 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
         if (PyErr_CheckSignals() != 0) throw py::error_already_set();
         return callback.is_none() || call_back(r);
       };
+  // Conforming lines: all with constraints="conforming", else those a GeoJSON "kind" names.
+  std::vector<std::vector<Point_2>> lines;
+  std::vector<std::int64_t> line_items;
+  std::shared_ptr<Domain> lineless;
+  if (domain->data.description.index() == 1)
+    lineless =
+        without_conforming_lines(*domain, conforming ? "conforming" : "slit", lines, line_items);
+  if (lines.empty()) lineless = nullptr;
+  if (conforming && !lineless)
+    throw py::value_error(
+        "constraints='conforming' makes the lines of a WKT, GeoJSON or shapely domain "
+        "(LineStrings) conforming; this domain has none");
+  if (lineless && slide)
+    throw py::value_error(
+        "boundary='slide' and conforming lines do not go together yet (the sliding vertices "
+        "would not keep out of the lines' circles)");
   {
     py::gil_scoped_release release;
     const CVT_2::internal::Interrupt_scope interruptible{Signal_check()};
-    std::vector<std::vector<Point_2>> lines;
-    std::vector<std::int64_t> line_items;
-    std::shared_ptr<Domain> lineless =
-        conforming ? without_lines(*domain, lines, line_items) : nullptr;
     std::shared_ptr<CDT> cdt = (lineless ? lineless : domain)->triangulation();
     const std::optional<Sizing> sizing = choice.sizing(*cdt);
     out->notes = insert_points(*cdt, points, "points", boundary_tolerance);
@@ -1326,6 +1371,7 @@ PYBIND11_MODULE(_cvt2, m) {
       .def_property_readonly("area", [](const Domain& d) { return d.area; })
       .def_property_readonly("own_cells", [](const Domain& d) { return d.own_cells; })
       .def_property_readonly("metadata", [](const Domain& d) { return d.metadata; })
+      .def_property_readonly("has_kinds", &Domain::has_kinds)
       .def_property_readonly("bounds",
                              [](const Domain& d) {
                                return py::make_tuple(d.bounds[0], d.bounds[1], d.bounds[2],
@@ -1367,8 +1413,8 @@ PYBIND11_MODULE(_cvt2, m) {
            [](const Diagram& d, const std::string& path, bool barriers,
               const CVT_2::IO::Metadata& metadata) {
              d.write(path, [&](std::ostream& os) {
-               if (barriers)
-                 CVT_2::IO::write_geojson(os, d.grid(true), metadata);
+               if (d.any_barrier(barriers))
+                 CVT_2::IO::write_geojson(os, d.grid(barriers), metadata);
                else
                  CVT_2::IO::write_geojson(os, *d.mesh, metadata);
              });
@@ -1377,8 +1423,8 @@ PYBIND11_MODULE(_cvt2, m) {
            [](const Diagram& d, const std::string& path, bool barriers,
               const CVT_2::IO::Metadata& metadata) {
              d.write(path, [&](std::ostream& os) {
-               if (barriers)
-                 CVT_2::IO::write_vtu(os, d.grid(true), metadata);
+               if (d.any_barrier(barriers))
+                 CVT_2::IO::write_vtu(os, d.grid(barriers), metadata);
                else
                  CVT_2::IO::write_vtu(os, *d.mesh, metadata);
              });

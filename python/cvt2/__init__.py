@@ -439,7 +439,10 @@ def optimize(
       generator enters their circles, so that the faces between the cells lie on the line, each
       perpendicular to the line between the two cells' centres. The result's ``domain`` is the
       domain without its lines; its writers take ``constraints="conforming"``, and
-      ``to_cells_on_constraints`` lists the pairs of cells along each line.
+      ``to_cells_on_constraints`` lists the pairs of cells along each line. A GeoJSON
+      feature's ``"kind"`` property (``"slit"``, ``"barrier"``, ``"conforming"``) says it for its
+      own lines, as for ``cvt2``: its conforming lines are made so whatever ``constraints``, and
+      the writers split the cells on its barriers whatever theirs.
 
     Ctrl-C raises KeyboardInterrupt. Returns an :class:`OptimizeResult`.
     """
@@ -980,7 +983,8 @@ class BoundedVoronoi:
         if constraints == "conforming" and ("constraints", "conforming") not in metadata:
             raise ValueError("constraints='conforming' writes the cells of "
                              "optimize(..., constraints='conforming'), which made the lines conforming")
-        return metadata + ([("constraints", "barrier")] if barriers else [])
+        kinds = [("constraint_kinds", "by feature")] if self.domain._impl.has_kinds else []
+        return metadata + ([("constraints", "barrier")] if barriers else []) + kinds
 
     def __len__(self):
         return len(self.points)

@@ -552,3 +552,28 @@ def test_conforming_lines_in_optimize_and_the_writers(tmp_path):
         cvt2.optimize(square, [[0.5, 0.5]], constraints="conforming")
     with pytest.raises(ValueError, match="None or 'conforming'"):
         cvt2.optimize(domain, points, constraints="barrier")
+
+
+def test_kinds_by_feature_in_python_are_the_programs(program, data, tmp_path):
+    """examples/data/aquifer.geojson in Python: the river's "kind" makes it conforming in
+    optimize(), the fault's splits its cells in the writers; the DISV, GeoJSON and CSV are the
+    program's, byte for byte, from the same points."""
+    import cvt2
+
+    name = data / "aquifer.geojson"
+    domain = cvt2.Domain.from_file(name)
+    points = cvt2.random_points(domain, 1200, seed=8)
+    start = tmp_path / "start.txt"
+    np.savetxt(start, points, fmt="%.17g")
+    csv = tmp_path / "program.csv"
+    _, _, files = run_program(program, name, tmp_path, "--points-in", start,
+                              "--cells-on-constraints", csv, outputs=("disv", "geojson"))
+    d = cvt2.optimize(domain, points).bounded_voronoi()
+    d.to_disv(tmp_path / "ours.disv")
+    d.to_geojson(tmp_path / "ours.geojson")
+    d.to_cells_on_constraints(tmp_path / "ours.csv")
+    assert (tmp_path / "ours.disv").read_bytes() == files["disv"].read_bytes()
+    assert (tmp_path / "ours.geojson").read_bytes() == files["geojson"].read_bytes()
+    assert (tmp_path / "ours.csv").read_bytes() == csv.read_bytes()
+    item, _, _, _ = read_csv(csv)
+    assert set(item) == {1, 2, 3}  # the boundary, the fault, the river
