@@ -531,16 +531,7 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
 std::shared_ptr<Domain> slid_domain(const Domain& d, const CDT& cdt,
                                     const CVT_2::Sliding_runs_2<CDT>& runs) {
   auto out = std::make_shared<Domain>();
-  auto poly = CVT_2::IO::domain_poly_data(cdt, "<arrays>");
-  std::vector<bool> on_segment(poly.vertices.size(), false);
-  for (const auto& s : poly.segments) on_segment[s[0]] = on_segment[s[1]] = true;
-  std::vector<std::size_t> number(poly.vertices.size(), 0);
-  std::vector<Point_2> kept;
-  for (std::size_t i = 0; i < poly.vertices.size(); ++i)
-    if (on_segment[i]) number[i] = kept.size(), kept.push_back(poly.vertices[i]);
-  for (auto& s : poly.segments) s = {number[s[0]], number[s[1]]};
-  poly.vertices = std::move(kept);
-  out->data.description = std::move(poly);
+  out->data.description = CVT_2::IO::domain_poly_data(cdt, "<arrays>", false);
   out->data.file.source = d.data.file.source;
   out->data.file.format = out->format = "arrays";
   out->metadata = d.metadata;

@@ -182,17 +182,7 @@ class Sliding_runs_2 {
       const std::size_t k = s.index;
       const double lo = r.at[k] - reach * (r.at[k] - r.at[k - 1]);
       const double hi = r.at[k] + reach * (r.at[k + 1] - r.at[k]);
-      // the nearest point, or the point half as far as many times as needed
-      s.target = r.at[k];
-      double to = nearest(r, lo, hi, s.centroid);
-      for (int attempt = 0; attempt < halvings && to != r.at[k];
-           ++attempt, to = r.at[k] + (to - r.at[k]) / 2) {
-        const Point_2 q = point_at(r, to);
-        if (within_bound(r, k, to, q) && internal::stays_valid_at(cdt, r.v[k], q)) {
-          s.target = to;
-          break;
-        }
-      }
+      s.target = reachable(cdt, r, k, nearest(r, lo, hi, s.centroid));
       const double d2 =
           s.target == r.at[k]
               ? 0
@@ -216,21 +206,14 @@ class Sliding_runs_2 {
       s.evaluated = false;  // one slide an evaluation
       Run& r = m_runs[s.run];
       const std::size_t k = s.index;
-      const double from = r.at[k];
-      double to = s.target;
-      for (int attempt = 0; attempt < halvings && to != from;
-           ++attempt, to = from + (to - from) / 2) {
-        const Point_2 q = point_at(r, to);
-        if (q == r.v[k]->point()) break;
-        if (!within_bound(r, k, to, q) || !internal::stays_valid_at(cdt, r.v[k], q)) continue;
-        r.v[k]->set_point(q);
-        r.q[k] = q;
-        r.at[k] = to;
-        ++moved;
-        internal::push_star_edges(cdt, r.v[k], m_stack);
-        if (changed) internal::push_star(cdt, r.v[k], *changed);
-        break;
-      }
+      const double to = reachable(cdt, r, k, s.target);  // its neighbours may have moved
+      if (to == r.at[k]) continue;
+      r.q[k] = point_at(r, to);
+      r.at[k] = to;
+      r.v[k]->set_point(r.q[k]);
+      ++moved;
+      internal::push_star_edges(cdt, r.v[k], m_stack);
+      if (changed) internal::push_star(cdt, r.v[k], *changed);
     }
     internal::lawson_flips(cdt, m_stack, [changed](auto f, auto g) {
       if (changed) changed->push_back(f), changed->push_back(g);
@@ -301,6 +284,19 @@ class Sliding_runs_2 {
       if (ex * ex + ey * ey < best_d2) best_d2 = ex * ex + ey * ey, best = s;
     }
     return best;
+  }
+  // The arc length `to`, or the first of the points half as far from vertex k of r, then half
+  // as far again (up to `halvings` times), where its chords stay within the bound and the
+  // triangulation valid; else, or where a point is where the vertex is, the vertex's own.
+  double reachable(const CDT& cdt, const Run& r, std::size_t k, double to) const {
+    const double from = r.at[k];
+    for (int attempt = 0; attempt < halvings && to != from;
+         ++attempt, to = from + (to - from) / 2) {
+      const Point_2 q = point_at(r, to);
+      if (q == r.v[k]->point()) break;
+      if (within_bound(r, k, to, q) && internal::stays_valid_at(cdt, r.v[k], q)) return to;
+    }
+    return from;
   }
   // Whether the chords of vertex k of r at arc length `to`, at q, stay within the bound.
   bool within_bound(const Run& r, std::size_t k, double to, const Point_2& q) const {

@@ -719,26 +719,16 @@ void resample(const Options& o, std::size_t free_generators, CDT& cdt,
 // note of it.
 void slid_domain(const Options& o, const CDT& cdt, const CVT_2::Sliding_runs_2<CDT>& runs,
                  Segments& segments, CDT& domain_alone, CVT_2::IO::Metadata& metadata) {
-  const CVT_2::IO::Poly_data<Point_2> poly = CVT_2::IO::domain_poly_data(cdt);
+  const auto lines = CVT_2::IO::domain_poly_data(cdt, "<triangulation>", false);
   if (!segments.ends.empty()) {
     CVT_2::IO::Domain_data<K> slid;
-    slid.description = poly;
+    slid.description = lines;
     segments = CVT_2::IO::domain_segments(slid);
   }
   for (auto& [key, value] : metadata)  // the resampling's bound the chords that did not slide
     if (key == "max_deviation")
       value = CVT_2::internal::number_text(std::max(std::stod(value), runs.max_deviation()));
   if (!o.domain_out.empty()) {
-    std::vector<bool> on_segment(poly.vertices.size(), false);
-    for (const auto& [a, b] : poly.segments) on_segment[a] = on_segment[b] = true;
-    CVT_2::IO::Poly_data<Point_2> lines = poly;
-    lines.vertices.clear();
-    lines.vertex_lines.clear();
-    std::vector<std::size_t> number(poly.vertices.size(), 0);
-    for (std::size_t i = 0; i < poly.vertices.size(); ++i)
-      if (on_segment[i])
-        number[i] = lines.vertices.size(), lines.vertices.push_back(poly.vertices[i]);
-    for (auto& [a, b] : lines.segments) a = number[a], b = number[b];
     CDT out;
     CVT_2::IO::insert_poly(out, lines);
     std::vector<Point_2> generators;

@@ -23,14 +23,15 @@ namespace IO {
 
 /// \ingroup PkgCvt2IO
 /// The domain of `cdt` as Triangle's description: its constrained edges as segments, its
-/// vertices (those on no segment are generators), and one hole point in each region that
-/// Triangle's rule would otherwise put in the domain (a region outside it, closed by
-/// constraints): `insert_poly()` of the result marks the same faces.
+/// vertices (those on no segment are generators; left out if `with_generators` is false), and
+/// one hole point in each region that Triangle's rule would otherwise put in the domain (a region
+/// outside it, closed by constraints): `insert_poly()` of the result marks the same faces.
 /// \throws Domain_error for a region outside the domain so thin that no centroid of its
 ///         triangles lies strictly inside it in double precision.
 template <class CDT>
 Poly_data<typename CDT::Point_2> domain_poly_data(const CDT& cdt,
-                                                  const std::string& source = "<triangulation>") {
+                                                  const std::string& source = "<triangulation>",
+                                                  bool with_generators = true) {
   using Face_handle = typename CDT::Face_handle;
   Poly_data<typename CDT::Point_2> d;
   d.source = source;
@@ -38,7 +39,7 @@ Poly_data<typename CDT::Point_2> domain_poly_data(const CDT& cdt,
   // description whatever the triangulation's layout.
   std::map<typename CDT::Point_2, std::size_t> index;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-    index.emplace(v->point(), 0);
+    if (with_generators || cdt.are_there_incident_constraints(v)) index.emplace(v->point(), 0);
   for (auto& [p, i] : index) i = d.vertices.size(), d.vertices.push_back(p);
   for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
     if (cdt.is_constrained(*e)) {
