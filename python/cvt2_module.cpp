@@ -1148,6 +1148,7 @@ struct Optimization {
   std::vector<std::int64_t> input_index;  // of each generator: its first input row, or -1
   std::vector<std::string> notes;         // the points moved onto the boundary, ...
   double density_response = std::numeric_limits<double>::quiet_NaN();  // density_response_2()
+  bool redistributed = false;  // the points given replaced by points drawn from the density
 
   std::shared_ptr<Diagram> diagram(std::int64_t threads) {
     const unsigned t = unsigned(checked_count(threads, "threads"));
@@ -1165,8 +1166,8 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
                                        std::int64_t threads, const py::object& callback,
                                        double lipschitz_k, const py::object& boundary_size,
                                        std::optional<double> boundary_tolerance,
-                                       const py::object& fixed_object, bool slide,
-                                       bool conforming) {
+                                       const py::object& fixed_object, bool slide, bool conforming,
+                                       const std::string& redistribute, std::uint64_t seed) {
   if (slide && !domain->runs)
     throw py::value_error(
         "boundary='slide' needs a domain made by Domain.resample(): its vertices slide along the "
@@ -1176,6 +1177,8 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
       fixed_object.is_none() ? std::vector<Point_2>() : to_points(fixed_object, "fixed_points");
   if (algorithm != "lbfgs" && algorithm != "lloyd")
     throw py::value_error("algorithm must be 'lbfgs' or 'lloyd', not '" + algorithm + "'");
+  if (redistribute != "auto" && redistribute != "always" && redistribute != "never")
+    throw py::value_error("redistribute must be 'auto', True or False, not '" + redistribute + "'");
   if (!(move_ratio >= 0) || !std::isfinite(move_ratio))
     throw py::value_error("move_ratio must be >= 0, not " + std::to_string(move_ratio));
   if (!(time_limit >= 0) || std::isnan(time_limit))
@@ -1264,6 +1267,38 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
                              " steps of the conforming lines have a generator outside the "
                              "domain: left out");
       out->domain = lineless;
+    }
+    // As cvt2 --redistribute: with a density, the free generators given replaced by as many
+    // drawn from it, always or if they do not follow it.
+    if (redistribute != "never" && choice.kind != Density_choice::UNIFORM) {
+      const std::vector<CDT::Vertex_handle> given =
+          CVT_2::internal::movable_generators(*cdt, fixed);
+      bool replace = !given.empty() && redistribute == "always";
+      if (!given.empty() && redistribute == "auto") {
+        const BVD bvd(*cdt);
+        replace =
+            choice.kind == Density_choice::LIPSCHITZ
+                ? !CVT_2::follows_density_2(bvd, CVT_2::make_sizing_field_density_2<K>(*sizing))
+                : !CVT_2::follows_density_2(bvd, Python_density{choice.function, false});
+      }
+      if (replace) {
+        CVT_2::remove_generators_2(*cdt, given);
+        row.clear();  // no vertex comes from a row now; their addresses may be reused
+        const auto np = CVT_2::parameters::random_seed(seed);
+        CVT_2::insert_generators_2(
+            *cdt, choice.kind == Density_choice::LIPSCHITZ
+                      ? CVT_2::random_points_in_domain_2(*cdt, given.size(),
+                                                         np.sizing_field(std::cref(*sizing)))
+                      : CVT_2::random_points_in_domain_2(
+                            *cdt, given.size(), np.density(Python_density{choice.function, true})));
+        out->redistributed = true;
+        out->notes.push_back("the " + std::to_string(given.size()) + " generators given " +
+                             (redistribute == "auto"
+                                  ? "do not follow the density (their cells' areas do not "
+                                    "shrink as it grows)"
+                                  : "are redistributed (redistribute=True)") +
+                             ": replaced by as many drawn from it (redistribute=False keeps them)");
+      }
     }
     std::optional<CVT_2::Sliding_runs_2<CDT>> runs;
     if (slide) {
@@ -1489,6 +1524,7 @@ PYBIND11_MODULE(_cvt2, m) {
       .def_property_readonly("notes", [](const Optimization& o) { return o.notes; })
       .def_property_readonly("density_response",
                              [](const Optimization& o) { return o.density_response; })
+      .def_property_readonly("redistributed", [](const Optimization& o) { return o.redistributed; })
       .def("diagram", &Optimization::diagram, py::arg("threads") = 0);
 
   m.def(
@@ -1508,7 +1544,7 @@ PYBIND11_MODULE(_cvt2, m) {
         py::arg("density"), py::arg("move_ratio"), py::arg("max_iterations"), py::arg("time_limit"),
         py::arg("threads"), py::arg("callback"), py::arg("lipschitz_k"), py::arg("boundary_size"),
         py::arg("boundary_tolerance"), py::arg("fixed_points"), py::arg("slide") = false,
-        py::arg("conforming") = false);
+        py::arg("conforming") = false, py::arg("redistribute") = "auto", py::arg("seed") = 1);
   m.def("bounded_voronoi", &bounded_voronoi, py::arg("domain"), py::arg("points"),
         py::arg("threads"), py::arg("boundary_tolerance"));
   m.def("natural_neighbours", &natural_neighbours, py::arg("domain"), py::arg("nodes"),

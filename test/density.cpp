@@ -612,6 +612,16 @@ TEST_CASE("the density response is the slope of log(area) on log(density): 0, -1
   CHECK_THROWS_WITH(
       response(grid(2, false), [](const Point& p) { return p.x() > 0.5 ? -1.0 : 1.0; }),
       Catch::Contains("the density is -1") && Catch::Contains("at ("));
+  // Points follow the density for a start when the response is at most -1/4, or not defined.
+  const auto follows = [](const std::vector<Point>& points, const auto& rho) {
+    Domain d;
+    load_square(d);
+    CVT_2::insert_generators_2(d.cdt, points);
+    return CVT_2::follows_density_2(Bvd(d.cdt), rho);
+  };
+  CHECK_FALSE(follows(grid(10, false), step));
+  CHECK(follows(grid(20, true), step));
+  CHECK(follows(grid(10, true), [](const Point& p) { return 1 + 0.5 * p.x(); }));
   // The note speaks up only for a response above -1/4.
   CHECK(CVT_2::internal::density_response_note(-0.3).empty());
   CHECK(CVT_2::internal::density_response_note(not_a_number).empty());

@@ -6,6 +6,7 @@
 #include <CVT_2/IO/read_domain.h>
 #include <CVT_2/IO/read_points.h>
 #include <CVT_2/IO/read_wkt.h>
+#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 
 #include <CGAL/IO/WKT.h>
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <random>
+#include <set>
 #include <sstream>
 
 using namespace support;
@@ -223,6 +225,59 @@ TEST_CASE("inserting generators keeps a domain marked from polygons, holes inclu
   CHECK(domain_area(cdt) == Approx(64).epsilon(1e-14));
   const Bvd bvd(cdt);
   CHECK(total_cell_area(bvd) == Approx(64).epsilon(1e-10));
+}
+
+TEST_CASE("removing generators keeps the domain marked: each hole filled in the domain",
+          "[io][domain][remove]") {
+  for (const char* file :
+       {"bubble_with_hole.poly", "square_inner_constraints.poly", "four_clusters.poly"}) {
+    INFO(file);
+    Domain d;
+    load_domain(d, file);
+    const std::vector<Point> drawn = random_points_in_domain(d.cdt, 1500, 5);
+    CVT_2::insert_generators_2(d.cdt, drawn);
+    Domain_marks marks = snapshot_marks(d.cdt);
+    // Every other drawn generator goes (the file's own stay); the first is named twice, which
+    // counts once.
+    const auto free = CVT_2::internal::movable_generators(d.cdt, std::vector<Point>());
+    const std::set<Point> is_drawn(drawn.begin(), drawn.end());
+    std::vector<Cdt::Vertex_handle> gone;
+    std::vector<Point> kept;
+    for (const auto v : free)
+      if (is_drawn.count(v->point()) != 0)
+        gone.size() <= kept.size() ? gone.push_back(v) : kept.push_back(v->point());
+    REQUIRE(gone.size() >= 700);
+    gone.push_back(gone.front());
+    CVT_2::remove_generators_2(d.cdt, gone);
+    marks.number_of_vertices -= gone.size() - 1;
+    // Valid, constrained Delaunay, both sides of each unconstrained edge alike (a filled hole
+    // left unmarked would differ from its neighbours), the domain's area, and a diagram that
+    // tiles it with each point in its nearest visible generator's cell.
+    check_invariants(d.cdt, marks, 300);
+    // Its faces are those of the kept points inserted into the bare domain.
+    Domain fresh;
+    load_domain(fresh, file);
+    CVT_2::insert_generators_2(fresh.cdt, kept);
+    const auto faces_inside = [](const Cdt& cdt) {
+      std::size_t n = 0;
+      for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+        n += f->is_inside_domain() ? 1 : 0;
+      return n;
+    };
+    CHECK(d.cdt.number_of_vertices() == fresh.cdt.number_of_vertices());
+    CHECK(faces_inside(d.cdt) == faces_inside(fresh.cdt));
+  }
+  // Only free generators: a constrained vertex is refused, and nothing is removed.
+  Domain d;
+  load_square(d);
+  CVT_2::insert_generators_2(d.cdt, std::vector<Point>{Point(0.5, 0.5)});
+  const auto corner = d.cdt.finite_vertices_begin();
+  std::vector<Cdt::Vertex_handle> both{
+      CVT_2::internal::movable_generators(d.cdt, std::vector<Point>())[0]};
+  both.push_back(d.cdt.are_there_incident_constraints(corner) ? corner : std::next(corner));
+  CHECK_THROWS_WITH(CVT_2::remove_generators_2(d.cdt, both),
+                    Catch::Contains("is not a free generator"));
+  CHECK(d.cdt.number_of_vertices() == 5);
 }
 
 namespace {

@@ -79,17 +79,39 @@ double density_response_2(const Diagram& bvd, const Density& rho) {
 }
 
 namespace internal {
+// Half way from cells of one size (0) to a centroidal tessellation's (-1/2).
+inline constexpr double density_response_bound = -0.25;
+}  // namespace internal
+
+/// \ingroup PkgCvt2Ref
+/// Whether the free generators of `bvd` are spread as a start for a centroidal tessellation of
+/// `rho` must be: `density_response_2()` at most -1/4, half way from cells of one size to a
+/// centroidal tessellation's, or not defined (rho varies by less than a factor 2). Points that
+/// do not follow the density (uniform ones under a density that varies) take the optimizers
+/// hundreds of iterations to move across the domain, and the move ratios fall below 1% long
+/// before they arrive; points drawn by `random_points_in_domain_2()` follow it, and
+/// `remove_generators_2()` takes the others away (`cvt2 --redistribute` and the Python
+/// module's `optimize(redistribute=)` replace them so by default).
+/// \tparam Diagram a `Bounded_voronoi_diagram_2`.
+/// \tparam Density a model of `DensityFunction_2`.
+template <class Diagram, class Density>
+bool follows_density_2(const Diagram& bvd, const Density& rho) {
+  return !(density_response_2(bvd, rho) > internal::density_response_bound);
+}
+
+namespace internal {
 
 // A note for a result whose cells do not follow the density (a slope of density_response_2()
-// above -1/4, half a centroidal tessellation's), empty otherwise.
+// above density_response_bound), empty otherwise.
 inline std::string density_response_note(double slope) {
-  if (!(slope > -0.25)) return {};
+  if (!(slope > density_response_bound)) return {};
   char s[32];
   std::snprintf(s, sizeof s, "%.2f", slope);
   return std::string("the cells do not follow the density: their areas scale as density^") + s +
          ", a centroidal tessellation's as density^-0.50. The points started far from the "
          "density's distribution and the iteration moves them across the domain slowly; start "
-         "from points drawn from the density (random_points with the same density)";
+         "from points drawn from the density (random points with the same density), as "
+         "redistribute='auto' (cvt2 --redistribute auto), the default, does";
 }
 
 }  // namespace internal

@@ -1,10 +1,11 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // insert_generators_2(): inserts generator points into a marked domain, checking each one;
-// those a rounding outside go onto the boundary.
+// those a rounding outside go onto the boundary. remove_generators_2(): the converse.
 #ifndef CVT_2_INSERT_GENERATORS_2_H
 #define CVT_2_INSERT_GENERATORS_2_H
 
 #include <CVT_2/exceptions.h>
+#include <CVT_2/internal/Handle_set.h>
 #include <CVT_2/internal/layout/sort_faces.h>
 #include <CVT_2/internal/parallel/Interrupt_scope.h>
 #include <CVT_2/internal/snap_to_boundary.h>
@@ -285,7 +286,79 @@ Generator_insertion_result<typename CDT::Point_2> insert_generators_2(
   return result;
 }
 
+/// \ingroup PkgCvt2Ref
+/// Removes generators from a triangulation whose domain is marked, and keeps the marking: the
+/// faces that fill each hole are in the domain, as all the faces around a free generator were.
+/// Face handles held before the call may refer to other faces, and the faces' blind tags of the
+/// filled holes are cleared: a diagram on it must be updated.
+/// \param vertices a range of vertex handles of `cdt`, each a free generator: in the domain,
+///        with no constraint through it (a repeated handle counts once).
+/// \throws std::invalid_argument naming a vertex that is not a free generator; nothing is
+///         removed then.
+template <class CDT, class VertexRange>
+void remove_generators_2(CDT& cdt, const VertexRange& vertices) {
+  using Vertex_handle = typename CDT::Vertex_handle;
+  using Face_handle = typename CDT::Face_handle;
+  std::vector<Vertex_handle> removed;
+  internal::Handle_set<Vertex_handle> seen;
+  for (const Vertex_handle v : vertices) {
+    if (cdt.is_infinite(v) || cdt.are_there_incident_constraints(v) ||
+        !internal::has_domain_face(cdt, v))
+      throw std::invalid_argument("remove_generators_2: the vertex at " +
+                                  internal::to_string(v->point()) +
+                                  " is not a free generator (a constrained vertex, or outside "
+                                  "the domain)");
+    if (seen.insert(v)) removed.push_back(v);
+  }
+  std::vector<Vertex_handle> link;
+  internal::Handle_set<Face_handle> star, kept;
+  for (const Vertex_handle v : removed) {
+    internal::poll_interrupt_sometimes();
+    link.clear(), star.clear(), kept.clear();
+    auto vc = cdt.incident_vertices(v), done = vc;
+    do link.push_back(vc);
+    while (++vc != done);
+    auto fc = cdt.incident_faces(v), fdone = fc;
+    do star.insert(fc);
+    while (++fc != fdone);
+    for (const Vertex_handle x : link) {
+      auto xc = cdt.incident_faces(x), xdone = xc;
+      do
+        if (!star.contains(xc)) kept.insert(xc);
+      while (++xc != xdone);
+    }
+    cdt.remove(v);  // Delaunay fills the hole with new faces only (CGAL's remove_2D)
+    for (const Vertex_handle x : link) {
+      if (cdt.is_infinite(x)) continue;
+      auto xc = cdt.incident_faces(x), xdone = xc;
+      do
+        if (!kept.contains(xc) && !cdt.is_infinite(xc)) xc->set_inside_domain(true);
+      while (++xc != xdone);
+    }
+  }
+}
+
 namespace internal {
+
+// The free generators of `cdt` (in the domain, no constraint through them) but those at the
+// points `fixed`: the generators an optimizer with fixed_points(fixed) moves.
+template <class CDT, class PointRange>
+std::vector<typename CDT::Vertex_handle> movable_generators(const CDT& cdt,
+                                                            const PointRange& fixed) {
+  Handle_set<typename CDT::Vertex_handle> kept;
+  typename CDT::Face_handle hint;
+  for (const auto& p : fixed) {
+    typename CDT::Locate_type lt;
+    int li;
+    hint = cdt.locate(p, lt, li, hint);
+    if (lt == CDT::VERTEX) kept.insert(hint->vertex(li));
+  }
+  std::vector<typename CDT::Vertex_handle> out;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    if (!cdt.are_there_incident_constraints(v) && has_domain_face(cdt, v) && !kept.contains(v))
+      out.push_back(v);
+  return out;
+}
 
 // The note on the points insert_generators_2() moved onto the boundary: the first in full,
 // named by `name(k)` for its input position k (a file and line, a row), then how many others

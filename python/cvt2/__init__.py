@@ -365,10 +365,9 @@ def random_points(
             )
         n = cells - domain.own_cells
     n = _count(n, "n")
-    seed = _count(seed, "seed", below=None)
-    if seed >= 2**64:
-        raise ValueError(f"seed must be below 2**64, not {seed}")
-    return _cvt2.random_points(_impl(domain), n, seed, density, float(lipschitz_k), boundary_size)
+    return _cvt2.random_points(
+        _impl(domain), n, _seed(seed), density, float(lipschitz_k), boundary_size
+    )
 
 
 def optimize(
@@ -388,6 +387,8 @@ def optimize(
     fixed_points=None,
     boundary=None,
     constraints=None,
+    redistribute="auto",
+    seed=1,
 ) -> "OptimizeResult":
     """Moves ``points`` to a centroidal Voronoi tessellation of ``domain``: each free generator
     to the centroid of its bounded Voronoi cell (under the density), again and again. The same
@@ -442,7 +443,15 @@ def optimize(
       ``to_cells_on_constraints`` lists the pairs of cells along each line. A GeoJSON
       feature's ``"kind"`` property (``"slit"``, ``"barrier"``, ``"conforming"``) says it for its
       own lines, as for ``cvt2``: its conforming lines are made so whatever ``constraints``, and
-      the writers split the cells on its barriers whatever theirs.
+      the writers split the cells on its barriers whatever theirs;
+    - ``redistribute``: with a density, whether to replace the free generators given (``points``
+      and the domain's own, not ``fixed_points``) by as many drawn from the density
+      (:func:`random_points` with ``seed``): ``"auto"`` (the default) if their cells do not
+      follow it (``density_response`` above -1/4: uniform points under a density that varies,
+      from which the iteration would stop with every move ratio small, far from the optimum),
+      ``True`` always, ``False`` never (``cvt2 --redistribute auto|always|never``). The result's
+      ``redistributed`` says whether it did, and its ``input_index`` is then -1 for them;
+    - ``seed``: the seed of those points (an integer, 0 to 2**64 - 1).
 
     Ctrl-C raises KeyboardInterrupt. Returns an :class:`OptimizeResult`.
     """
@@ -464,10 +473,26 @@ def optimize(
         fixed_points,
         _slide(boundary),
         _conforming(constraints),
+        _redistribute(redistribute),
+        _seed(seed),
     )
     if _slide(boundary) or _conforming(constraints):  # the domain the cells are of
         domain = Domain._wrap(result.domain)
     return OptimizeResult(result, domain)
+
+
+def _redistribute(redistribute):
+    for value, name in (("auto", "auto"), (True, "always"), (False, "never")):
+        if redistribute is value or (isinstance(value, str) and redistribute == value):
+            return name
+    raise ValueError(f"redistribute must be 'auto', True or False, not {redistribute!r}")
+
+
+def _seed(seed):
+    seed = _count(seed, "seed", below=None)
+    if seed >= 2**64:
+        raise ValueError(f"seed must be below 2**64, not {seed}")
+    return seed
 
 
 def _conforming(constraints):
@@ -752,7 +777,10 @@ class OptimizeResult:
       or where it varies by less than a factor 2;
     - ``input_index``: int (N,), for each generator, the row of the ``points`` given that it
       started from (the first of rows merged as duplicates), or -1 for a generator of the
-      domain's own: ``points[input_index == i]`` is where input row i went.
+      domain's own or one drawn in their place: ``points[input_index == i]`` is where input row
+      i went;
+    - ``redistributed``: whether the points given were replaced by points drawn from the density
+      (``optimize``'s ``redistribute``; a note says why).
     """
 
     def __init__(self, impl, domain):
@@ -773,6 +801,7 @@ class OptimizeResult:
         self.notes = impl.notes
         self.density_response = impl.density_response
         self.input_index = impl.input_index
+        self.redistributed = impl.redistributed
 
     @property
     def normalized_energy(self) -> float:

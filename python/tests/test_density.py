@@ -44,10 +44,11 @@ def test_the_density_is_called_with_batches(data):
     assert result.evaluations == 4
     # One call a chunk of cells an evaluation (up to 1024 faces under a quadrature rule): tens of
     # calls, each with the quadrature points of hundreds of cells (about 42 a cell: 7 a fan
-    # triangle, 6 fan triangles a cell on average), the last chunk's fewer; and one at the end,
-    # at the free generators, for the density response.
-    assert rho.sizes[-1] == np.count_nonzero(~result.constrained)
-    calls_per_evaluation = (len(rho.sizes) - 1) / result.evaluations
+    # triangle, 6 fan triangles a cell on average), the last chunk's fewer; and one at the
+    # free generators before (whether they follow the density: redistribute="auto") and after
+    # (the density response).
+    assert rho.sizes[0] == rho.sizes[-1] == np.count_nonzero(~result.constrained)
+    calls_per_evaluation = (len(rho.sizes) - 2) / result.evaluations
     assert calls_per_evaluation == int(calls_per_evaluation) and 10 <= calls_per_evaluation <= 100
     assert sorted(rho.sizes)[len(rho.sizes) // 2] >= 30 * 400
     assert sum(rho.sizes) >= 30 * len(result.points) * result.evaluations
@@ -132,8 +133,9 @@ def test_cells_that_do_not_follow_the_density_say_so(rectangle):
     # share (about 4 times as many cells as the left at a CVT: areas ~ density^-1/2): the
     # result says "converged", and its density response and a note say what it is.
     uniform = cvt2.random_points(rectangle, 600, seed=4)
-    result = cvt2.optimize(rectangle, uniform, density=step)
+    result = cvt2.optimize(rectangle, uniform, density=step, redistribute=False)
     assert result.stop_reason == "converged"
+    assert not result.redistributed
     assert result.density_response > -0.25
     assert any("do not follow the density" in note for note in result.notes)
     # From points drawn from the density, the cells follow it: no note, a slope near -1/2.
@@ -146,6 +148,58 @@ def test_cells_that_do_not_follow_the_density_say_so(rectangle):
     # from uniform points: its variation is local, within reach of the iteration's moves.
     assert np.isnan(cvt2.optimize(rectangle, drawn, max_iterations=2).density_response)
     sizing = dict(density="lipschitz", boundary_size=0.05, lipschitz_k=0.3)
-    lipschitz = cvt2.optimize(rectangle, cvt2.random_points(rectangle, 600), **sizing)
+    lipschitz = cvt2.optimize(
+        rectangle, cvt2.random_points(rectangle, 600), redistribute=False, **sizing
+    )
     assert -0.6 < lipschitz.density_response < -0.4
     assert not any("density" in note for note in lipschitz.notes)
+
+
+def cell_area_ratio(result):
+    """The mean area of the free cells on the left half over that on the right half."""
+    free = ~result.constrained
+    areas, x = result.bounded_voronoi().areas[free], result.points[free, 0]
+    return areas[x < 1].mean() / areas[x >= 1].mean()
+
+
+@pytest.mark.parametrize("algorithm", ["lbfgs", "lloyd"])
+def test_points_that_do_not_follow_the_density_are_redistributed(rectangle, algorithm):
+    # The issue's case, 2 000 uniform points: by default they are replaced by points drawn from
+    # the density, and the result is what those give: cell areas 4 times larger on the left
+    # (16^1/2), the energy of the run from drawn points within 1%. Kept, they stop "converged"
+    # with areas about 1.3 times larger and 20% more energy.
+    uniform = cvt2.random_points(rectangle, 2000, seed=4)
+    drawn = cvt2.random_points(rectangle, 2000, seed=1, density=step)
+    options = dict(algorithm=algorithm, density=step, max_iterations=3000)
+    auto = cvt2.optimize(rectangle, uniform, **options)
+    reference = cvt2.optimize(rectangle, drawn, redistribute=False, **options)
+    kept = cvt2.optimize(rectangle, uniform, redistribute=False, **options)
+    assert auto.redistributed and not reference.redistributed and not kept.redistributed
+    assert auto.stop_reason == "converged"
+    assert cell_area_ratio(auto) == pytest.approx(4, rel=0.1)
+    assert cell_area_ratio(reference) == pytest.approx(4, rel=0.1)
+    assert auto.energy == pytest.approx(reference.energy, rel=0.01)
+    assert cell_area_ratio(kept) < 2 and kept.energy > 1.1 * reference.energy
+    # The rows given are gone: no generator comes from one, and a note says why.
+    assert (auto.input_index == -1).all()
+    assert any("do not follow the density" in n and "replaced" in n for n in auto.notes)
+    # Points drawn from the density are kept (auto), replaced when asked (True); uniform density
+    # keeps any points.
+    assert not cvt2.optimize(rectangle, drawn, density=step, max_iterations=0).redistributed
+    assert cvt2.optimize(rectangle, drawn, density=step, max_iterations=0,
+                         redistribute=True).redistributed
+    assert not cvt2.optimize(rectangle, uniform, max_iterations=0, redistribute=True).redistributed
+    # Fixed points stay, and so does their count of free generators.
+    well = [0.5, 0.5]
+    fixed = cvt2.optimize(rectangle, uniform, density=step, max_iterations=0, fixed_points=[well])
+    assert fixed.redistributed and len(fixed.points) == len(auto.points) + 1
+    assert (fixed.points == well).all(axis=1).sum() == 1
+
+
+def test_redistribute_takes_auto_true_or_false(rectangle):
+    points = cvt2.random_points(rectangle, 10)
+    for bad in ("always", 1, None):
+        with pytest.raises(ValueError, match="redistribute must be 'auto', True or False"):
+            cvt2.optimize(rectangle, points, density=step, redistribute=bad)
+    with pytest.raises(ValueError, match="seed must be below 2\\*\\*64"):
+        cvt2.optimize(rectangle, points, density=step, seed=2**64)

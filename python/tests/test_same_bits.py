@@ -97,6 +97,24 @@ def test_points_given_are_the_programs_points_in(program, data, tmp_path):
     assert same(result.points, theirs[:, :2])
 
 
+@pytest.mark.parametrize("redistribute, option", [("auto", "auto"), (True, "always"),
+                                                 (False, "never")])
+def test_redistributed_points_are_the_programs(program, data, tmp_path, redistribute, option):
+    # Uniform points under the automatic sizing: cvt2 --redistribute and optimize(redistribute=)
+    # replace them (auto: they do not follow it) by the same draw, or keep them.
+    file = data / "earcut_dude.poly"
+    domain = cvt2.Domain.from_file(file)
+    points = cvt2.random_points(domain, 600, seed=9)
+    np.savetxt(tmp_path / "in.txt", points, fmt="%.17g")
+    result = cvt2.optimize(domain, points, density="lipschitz", max_iterations=5,
+                           redistribute=redistribute, seed=3)
+    _, theirs, _ = run_program(program, file, tmp_path, "--points-in", tmp_path / "in.txt",
+                               "--density", "lipschitz", "--iterations", 5, "--seed", 3,
+                               "--redistribute", option)
+    assert same(result.points, theirs[:, :2])
+    assert result.redistributed == (redistribute is not False)
+
+
 def test_threads_do_not_change_the_bits(data):
     domain = cvt2.Domain.from_file(data / "us_massachusetts_counties.poly")
     points = cvt2.random_points(domain, 30000, seed=4)

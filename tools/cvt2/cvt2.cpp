@@ -18,8 +18,10 @@
 #include <CVT_2/IO/write_vtu.h>
 #include <CVT_2/Point_refinement_sizing_2.h>
 #include <CVT_2/Simulation_grid_2.h>
+#include <CVT_2/Sizing_field_density_2.h>
 #include <CVT_2/Sliding_runs_2.h>
 #include <CVT_2/conforming_sites_2.h>
+#include <CVT_2/density_response_2.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
@@ -92,6 +94,7 @@ struct Options {
   bool lipschitz = false;
   double lipschitz_k = 0.1;
   std::optional<double> boundary_size;  // default: each boundary edge's length
+  std::string redistribute = "auto";    // --redistribute: auto | always | never
   double time_limit = 0;
   unsigned threads = 0;  // 0: all cores
   std::string svg, points_out, cells_out, geojson, vtu, disv, mesh_out, domain_out;
@@ -151,6 +154,12 @@ void print_help(std::ostream& os) {
         "      --density D        uniform | lipschitz (default uniform)\n"
         "      --lipschitz-k K    growth of the cell size away from the boundary (default 0.1)\n"
         "      --boundary-size S  cell size on the boundary (default: the local edge length)\n"
+        "      --redistribute R   auto | always | never (default auto): with a density\n"
+        "                         (lipschitz, --refine), replace the points of --points-in and\n"
+        "                         DOMAIN by as many drawn from the density (--seed): always, or\n"
+        "                         (auto) if their cells do not follow it (areas scaling as\n"
+        "                         density^s, s > -1/4; a centroidal tessellation's: -1/2), from\n"
+        "                         where the iteration would stop far from the optimum\n"
         "      --time-limit T     stop after T seconds (default 0: no limit)\n"
         "      --threads N        threads (default 0: one per core); the result is the same\n"
         "Outputs (written only when the optimization succeeded; an existing file is replaced):\n"
@@ -290,6 +299,10 @@ const std::map<std::string, Setter>& valued_options() {
       {"--density",
        [](Options& o, auto& n, auto& v) {
          o.lipschitz = parse_choice(n, v, "uniform", "lipschitz") == "lipschitz";
+       }},
+      {"--redistribute",
+       [](Options& o, auto& n, auto& v) {
+         o.redistribute = parse_choice(n, v, "auto", "always", "never");
        }},
       {"--lipschitz-k", [](Options& o, auto& n, auto& v) { o.lipschitz_k = parse_positive(n, v); }},
       {"--boundary-size",
@@ -465,6 +478,31 @@ void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& 
     points.insert(points.end(), more.begin(), more.end());
   }
   CVT_2::insert_generators_2(cdt, points);
+}
+
+// --redistribute: with a density, the free generators given (--points-in, the domain file's;
+// not the fixed ones) removed, always or (auto) if their cells do not follow it. Returns how
+// many, to draw as many from the density.
+std::size_t redistribute(const Options& o, const Sizing_choice& sizing,
+                         const std::vector<Point_2>& fixed, CDT& cdt) {
+  if (o.redistribute == "never" || (!sizing.lipschitz && !sizing.refinement)) return 0;
+  const std::vector<CDT::Vertex_handle> given = CVT_2::internal::movable_generators(cdt, fixed);
+  if (given.empty()) return 0;
+  if (o.redistribute == "auto") {
+    const BVD bvd(cdt);
+    const auto follows = [&bvd](const auto& mu) {
+      return CVT_2::follows_density_2(bvd, CVT_2::make_sizing_field_density_2<K>(mu));
+    };
+    if (sizing.lipschitz ? follows(*sizing.lipschitz) : follows(*sizing.refinement)) return 0;
+  }
+  CVT_2::remove_generators_2(cdt, given);
+  if (!o.quiet)
+    std::cerr << "cvt2: note: the " << given.size() << " generators given "
+              << (o.redistribute == "auto" ? "do not follow the density (their cells' areas do "
+                                             "not shrink as it grows)"
+                                           : "are redistributed (--redistribute always)")
+              << ": replaced by as many drawn from it (--redistribute never keeps them)\n";
+  return given.size();
 }
 
 // --- optimization ------------------------------------------------------------------------------
@@ -845,6 +883,7 @@ int run(const Options& o) {
     sizing.lipschitz.emplace(
         cdt, o.lipschitz_k,
         o.boundary_size ? std::optional<K::FT>(*o.boundary_size) : std::nullopt);
+  const std::size_t own = vertices_in_domain(cdt);  // the domain's vertices and generators
   if (!o.points_in.empty()) {
     if (!std::ifstream(o.points_in))
       throw std::runtime_error("cannot open the points file '" + o.points_in + "'");
@@ -890,8 +929,8 @@ int run(const Options& o) {
                         (o.resample ? "" : " (--boundary resample spaces the domain's vertices)"));
     n = static_cast<std::size_t>(wanted) - present;
   }
-  if (!o.resample && present > n / 10 && present > 100)
-    std::cerr << "cvt2: note: the domain's " << present << " vertices are generators too, "
+  if (!o.resample && own > (present - own + n) / 10 && own > 100)
+    std::cerr << "cvt2: note: the domain's " << own << " vertices are generators too, "
               << present + n << " cells in all; --boundary resample spaces them to the cell size\n";
   if (!o.refine.empty()) {  // the background: uniform cells, as many as asked for
     const double background = background_size(o, n + present, cdt);
@@ -899,6 +938,7 @@ int run(const Options& o) {
     for (const auto& [x, y, size, radius] : o.refine)
       sizing.refinement->add_point(Point_2(x, y), std::min(size, background), radius);
   }
+  n += redistribute(o, sizing, fixed, cdt);
   insert_random_points(n, o, sizing, cdt, disks);
   const CVT_2::Optimization_result r =
       optimize(cdt, o, sizing, fixed, disks, o.slide ? &runs : nullptr);
