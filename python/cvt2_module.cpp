@@ -472,6 +472,11 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
                           double corner_angle, py::handle fixed, double minimum_ring_area) {
   // The numbers are checked by resample_constraints_2() and cell_size_for_cells_2().
   if (cells.has_value() == size.has_value()) throw py::value_error("give one of cells and size");
+  if (d.has_kinds())
+    throw py::value_error(
+        "Domain.resample does not carry the GeoJSON features' \"kind\" properties yet (its "
+        "conforming lines would be resampled as constraints): use cvt2 --boundary resample, or "
+        "a domain without kinds");
   const std::vector<Point_2> fixed_points =
       fixed.is_none() ? std::vector<Point_2>() : to_points(fixed, "fixed_points");
   auto out = std::make_shared<Domain>();
@@ -482,10 +487,15 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
     const auto cdt = d.triangulation();
     h = size ? *size : CVT_2::cell_size_for_cells_2(*cdt, *cells);
     auto runs = std::make_shared<CVT_2::Sliding_runs_2<CDT>>();
+    // The input item of each constrained edge, for the chords that replace them.
+    const auto edge_items = CVT_2::IO::constrained_edge_items(
+        *cdt, CVT_2::IO::Domain_segments<K>{d.segment_ends, d.segment_items});
+    std::vector<CVT_2::Resampled_chord<Point_2>> chords;
     auto np = CVT_2::parameters::corner_angle(corner_angle)
                   .fixed_points(fixed_points)
                   .minimum_ring_area(minimum_ring_area)
-                  .sliding_runs(runs.get());
+                  .sliding_runs(runs.get())
+                  .resampled_chords(&chords);
     r = deviation_bound
             ? CVT_2::resample_constraints_2(*cdt, h, np.deviation_bound(*deviation_bound))
             : CVT_2::resample_constraints_2(*cdt, h, np);
@@ -505,6 +515,16 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
     for (const auto& s : poly.segments) on_segment[s[0]] = on_segment[s[1]] = true;
     for (const bool b : on_segment) out->data.file.number_of_generators += b ? 0 : 1;
     out->finish();
+    // Each chord named by the input line it replaces, not by its row.
+    const auto named = CVT_2::IO::resampled_segments<K>(chords, edge_items);
+    std::map<std::pair<Point_2, Point_2>, std::int64_t> item_of;
+    for (std::size_t i = 0; i < named.items.size(); ++i)
+      item_of.emplace(std::minmax(named.ends[2 * i], named.ends[2 * i + 1]), named.items[i]);
+    for (std::size_t i = 0; i < out->segment_items.size(); ++i) {
+      const auto it =
+          item_of.find(std::minmax(out->segment_ends[2 * i], out->segment_ends[2 * i + 1]));
+      out->segment_items[i] = it == item_of.end() ? -1 : it->second;
+    }
   }
   py::dict report;
   report["size"] = h;
@@ -528,8 +548,9 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
 // lines where they are now, as Triangle's arrays, so that the diagram's ridges and the writers
 // name them, the runs as they are (to slide again), the largest deviation in the metadata; its
 // generators are the optimization's.
-std::shared_ptr<Domain> slid_domain(const Domain& d, const CDT& cdt,
-                                    const CVT_2::Sliding_runs_2<CDT>& runs) {
+std::shared_ptr<Domain> slid_domain(
+    const Domain& d, const CDT& cdt, const CVT_2::Sliding_runs_2<CDT>& runs,
+    const std::vector<std::pair<CDT::Vertex_handle, Point_2>>& constrained) {
   auto out = std::make_shared<Domain>();
   out->data.description = CVT_2::IO::domain_poly_data(cdt, "<arrays>", false);
   out->data.file.source = d.data.file.source;
@@ -542,6 +563,23 @@ std::shared_ptr<Domain> slid_domain(const Domain& d, const CDT& cdt,
   }
   out->runs = std::make_shared<const CVT_2::Sliding_runs_2<CDT>>(runs);
   out->finish();
+  // Each line named as before the slide: by the item of the segment between its ends' places
+  // then (`constrained`: each constrained vertex and where it was).
+  std::map<Point_2, Point_2> was;
+  for (const auto& [v, p] : constrained) was.emplace(v->point(), p);
+  std::map<std::pair<Point_2, Point_2>, std::int64_t> item_of;
+  for (std::size_t i = 0; i < d.segment_items.size(); ++i)
+    item_of.emplace(std::minmax(d.segment_ends[2 * i], d.segment_ends[2 * i + 1]),
+                    d.segment_items[i]);
+  const auto before = [&was](const Point_2& p) {
+    const auto it = was.find(p);
+    return it == was.end() ? p : it->second;
+  };
+  for (std::size_t i = 0; i < out->segment_items.size(); ++i) {
+    const auto it = item_of.find(
+        std::minmax(before(out->segment_ends[2 * i]), before(out->segment_ends[2 * i + 1])));
+    out->segment_items[i] = it == item_of.end() ? -1 : it->second;
+  }
   return out;
 }
 
@@ -1318,6 +1356,10 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
       return algorithm == "lbfgs" ? CVT_2::lbfgs_optimize_2(*cdt, parameters)
                                   : CVT_2::lloyd_optimize_2(*cdt, parameters);
     };
+    std::vector<std::pair<CDT::Vertex_handle, Point_2>> constrained;  // where they were
+    if (slide)
+      for (auto v = cdt->finite_vertices_begin(); v != cdt->finite_vertices_end(); ++v)
+        if (cdt->are_there_incident_constraints(v)) constrained.emplace_back(v, v->point());
     if (choice.kind == Density_choice::LIPSCHITZ)
       out->result = run(np.sizing_field(*sizing));
     else if (choice.kind == Density_choice::CALLABLE)
@@ -1340,7 +1382,7 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
           CVT_2::density_response_2(bvd, Python_density{choice.function, false});
     const std::string note = CVT_2::internal::density_response_note(out->density_response);
     if (!note.empty()) out->notes.push_back(note);
-    if (slide) out->domain = slid_domain(*domain, *cdt, *runs);
+    if (slide) out->domain = slid_domain(*domain, *cdt, *runs, constrained);
     out->cdt = std::move(cdt);
   }
   // The final state, which the callback has not seen unless it stopped the run there.

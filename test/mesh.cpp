@@ -917,9 +917,38 @@ TEST_CASE("resampled constraints lie on the input, keep its junctions, bound and
       CVT_2::IO::read_domain(data_path(file), before);
       const double h = CVT_2::cell_size_for_cells_2(before, cells);
       Cdt_ids after = before;
-      const auto r = CVT_2::resample_constraints_2(after, h);
+      std::vector<CVT_2::Resampled_chord<Point>> chords;
+      const auto r =
+          CVT_2::resample_constraints_2(after, h, CVT_2::parameters::resampled_chords(&chords));
       check_resampling(before, after, h, h / 4, r);
       CHECK(r.output_vertices <= r.input_vertices);
+      // Each constraint after is a chord, with a constrained edge before as its source, within
+      // the bound of it: what outputs name the chord by.
+      const auto constrained_edge = [](const Cdt_ids& t, const Point& a, const Point& b) {
+        const auto vertex = [&t](const Point& p) {
+          Cdt_ids::Locate_type lt;
+          int li = 0;
+          const auto f = t.locate(p, lt, li);
+          return lt == Cdt_ids::VERTEX ? f->vertex(li) : Cdt_ids::Vertex_handle();
+        };
+        const auto u = vertex(a), v = vertex(b);
+        Cdt_ids::Face_handle f;
+        int i = 0;
+        return u != Cdt_ids::Vertex_handle() && v != Cdt_ids::Vertex_handle() &&
+               t.is_edge(u, v, f, i) && t.is_constrained({f, i});
+      };
+      std::size_t constraints = 0, unknown = 0, far = 0;
+      for (auto e = after.finite_edges_begin(); e != after.finite_edges_end(); ++e)
+        constraints += after.is_constrained(*e) ? 1 : 0;
+      for (const auto& c : chords) {
+        unknown +=
+            !constrained_edge(after, c.a, c.b) || !constrained_edge(before, c.source_a, c.source_b);
+        far += CGAL::squared_distance(K::Segment_2(c.a, c.b),
+                                      K::Segment_2(c.source_a, c.source_b)) > h * h / 16 * 1.0001;
+      }
+      CHECK(chords.size() == constraints);
+      CHECK(unknown == 0);
+      CHECK(far == 0);
       // Its description read back (Triangle's rule, hole points) marks the same domain.
       auto poly = CVT_2::IO::domain_poly_data(after);
       const Cdt_ids described = triangulate(poly);

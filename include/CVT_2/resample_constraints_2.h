@@ -48,6 +48,18 @@ struct Resampling_report {
 };
 
 /// \ingroup PkgCvt2Ref
+/// A constraint of a resampled triangulation, with the input constraint it replaces
+/// (`resample_constraints_2()`'s `resampled_chords`): so that outputs name each chord by the
+/// input line it comes from (`IO::resampled_segments()`).
+template <class Point_2>
+struct Resampled_chord {
+  Point_2 a, b;  ///< the chord's ends
+  /// a constrained edge of the triangulation before, under the middle of the chord's stretch
+  /// of its run (the chord itself if it was kept)
+  Point_2 source_a, source_b;
+};
+
+/// \ingroup PkgCvt2Ref
 /// Resamples the constraints of `cdt` to the cell size `h`: each input polyline (outer rings,
 /// holes, inner constraints) is cut at its *features*, which stay: junctions (vertices of three
 /// or more constrained edges, or of one: the ends of open polylines), `fixed_points`, and
@@ -80,7 +92,9 @@ struct Resampling_report {
 ///     the domain on a side, three points or more and a length of three cell sizes or more
 ///     (their input polylines and new vertices; a shorter ring, a small island, could only
 ///     collapse), and the deviation bound: for `lloyd_optimize_2()` and `lbfgs_optimize_2()` with
-///     `sliding_runs(&runs)`, which slide the vertices along the input.
+///     `sliding_runs(&runs)`, which slide the vertices along the input;
+///   - `resampled_chords(&chords)`: a pointer to a `std::vector<Resampled_chord<Point_2>>`,
+///     which gets every constraint of the result with the input constraint it replaces.
 /// \throws Domain_error for a size that is not a positive number, a bound, angle or area that
 ///         is not a non-negative one, or a minimum ring area that removes the whole domain (the
 ///         triangulation is then unchanged).
@@ -154,6 +168,12 @@ Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()
     throw Domain_error("the minimum ring area " + internal::number_to_string(minimum_ring_area) +
                        " removes the whole domain; the triangulation is unchanged");
   cdt.swap(out);
+  if constexpr (internal_np::has_parameter<NP, internal_np::resampled_chords_t>) {
+    auto& chords = *get_parameter(np, internal_np::resampled_chords_t());
+    chords.clear();
+    for (const auto& c : resampler.chords())
+      chords.push_back({points[c.a], points[c.b], c.source_a, c.source_b});
+  }
   if constexpr (internal_np::has_parameter<NP, internal_np::sliding_runs_t>) {
     Sliding_runs_2<CDT>& runs = *get_parameter(np, internal_np::sliding_runs_t());
     runs.set_deviation_bound(bound);

@@ -230,7 +230,9 @@ class Domain:
     def segment_items(self) -> np.ndarray:
         """(S,) int: the input item each segment comes from: its own row (``.poly``, arrays), the
         line of its geometry (``.wkt``), its feature from 1 (``.geojson``), or 0 for the polygon
-        and k + 1 for ``constraints[k]`` (shapely)."""
+        and k + 1 for ``constraints[k]`` (shapely). A domain made by :meth:`resample` (or slid
+        by ``optimize(..., boundary="slide")``) gives each chord the item of the input line it
+        replaces (for a ``.poly`` file, the segment under the middle of the chord's stretch)."""
         return self._arrays["segment_items"]
 
     @property

@@ -229,3 +229,60 @@ def test_program_slides_the_boundary_on_the_input_valid_and_tiling(program, data
     on_lines = np.unique(back.segments)
     assert set(map(tuple, back.vertices[on_lines])) == set(map(tuple, constrained))
     assert back.area == pytest.approx(union.area, rel=1e-9)
+
+
+def item_lines(domain):
+    """The input lines of each item of `domain`, as shapely geometry."""
+    from shapely.geometry import MultiLineString
+
+    ends = domain.vertices[domain.segments]
+    return {item: MultiLineString(list(ends[domain.segment_items == item]))
+            for item in np.unique(domain.segment_items)}
+
+
+@pytest.mark.parametrize("name", ["us_kentucky_counties.geojson", "us_massachusetts_counties.wkt",
+                                  "france_mainland.poly"])
+def test_resampled_lines_keep_the_items_of_the_input(data, name):
+    # Each chord of a resampled (and a slid) domain is named by the input line it replaces (a
+    # feature, a WKT line, a .poly row: the one under the middle of the chord's stretch), and
+    # lies on it: within the deviation bound of it (twice after sliding); a feature or WKT line
+    # has the chord's ends and middle (a .poly row may hold neither end).
+    from shapely.geometry import LineString, Point
+
+    domain = cvt2.Domain.from_file(data / name)
+    lines = item_lines(domain)
+    resampled = domain.resample(cells=1500)
+    slid = cvt2.optimize(resampled, cvt2.random_points(resampled, cells=1500),
+                         boundary="slide").domain
+    bound = resampled.resampling["deviation_bound"]
+    for d, tolerance in ((resampled, bound), (slid, 2 * bound)):
+        items = d.segment_items
+        assert (items >= 0).all() and set(items) <= set(lines)
+        ends = d.vertices[d.segments]
+        for (a, b), item in zip(ends, items):
+            assert d is slid or lines[item].distance(LineString([a, b])) <= bound * (1 + 1e-9)
+            if name.endswith(".poly"):  # a row, not a line: a slide moves the chord off it
+                continue
+            assert lines[item].distance(Point(a)) < 1e-9 * (1 + np.abs(a).max())
+            assert lines[item].distance(Point((a + b) / 2)) <= tolerance * (1 + 1e-9)
+    # With no resampling a segment is its own item.
+    assert (resampled.segment_items != np.arange(len(resampled.segments))).any()
+
+
+def test_program_names_resampled_lines_by_the_input_items(program, data, tmp_path):
+    # --cells-on-constraints names the chords of --boundary resample and slide by the GeoJSON's
+    # features, as keep does; and the features' kinds hold under resampling (the fault a
+    # barrier, the river conforming).
+    def constraints(file, *options):
+        csv = tmp_path / "on.csv"
+        run_program(program, data / file, tmp_path, "--cells", 2500, *options,
+                    "--cells-on-constraints", csv)
+        rows = np.loadtxt(csv, delimiter=",", skiprows=1, ndmin=2)
+        return set(rows[:, 0].astype(int))
+
+    keep = constraints("us_kentucky_counties.geojson")
+    assert len(keep) > 100 and min(keep) >= 1
+    for mode in ("resample", "slide"):
+        assert constraints("us_kentucky_counties.geojson", "--boundary", mode) == keep
+    assert constraints("aquifer.geojson", "--boundary", "resample") == constraints(
+        "aquifer.geojson")

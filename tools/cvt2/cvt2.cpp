@@ -175,7 +175,8 @@ void print_help(std::ostream& os) {
         "                         (constraint: the .poly segment's row from 0, the .wkt line,\n"
         "                         the .geojson feature from 1; cell and other_cell: the DISV's\n"
         "                         numbers, other_cell -1 on the boundary; with --boundary\n"
-        "                         resample, constraint is the row of --domain-out's segment)\n"
+        "                         resample or slide, a new chord is named by the input line\n"
+        "                         it replaces)\n"
         "      --constraints C    slit | barrier | conforming (default slit): what the inner\n"
         "                         constraints are. slit: cells cross them (a constrained\n"
         "                         generator's cell lies on both sides). barrier: a wall; a cell\n"
@@ -717,16 +718,20 @@ std::size_t vertices_in_domain(const CDT& cdt) {
 // --boundary resample (and slide): the constraints resampled to the cell size that --size, --cells
 // or the number of free generators asks for; a note of what changed on standard error.
 void resample(const Options& o, std::size_t free_generators, CDT& cdt,
-              CVT_2::IO::Metadata& metadata, CVT_2::Sliding_runs_2<CDT>& runs) {
+              CVT_2::IO::Metadata& metadata, CVT_2::Sliding_runs_2<CDT>& runs, Segments* segments) {
   const double area = domain_area(cdt);
   const double h =
       o.size    ? *o.size
       : o.cells ? CVT_2::cell_size_for_cells_2(cdt, *o.cells)
                 : std::sqrt(2 * area /
                             (std::sqrt(3.0) * double(std::max<std::size_t>(free_generators, 1))));
+  // The input line of each constrained edge, for the chords that replace them.
+  const auto edge_items = CVT_2::IO::constrained_edge_items(cdt, segments ? *segments : Segments());
+  std::vector<CVT_2::Resampled_chord<Point_2>> chords;
   const auto np = CVT_2::parameters::corner_angle(o.corner_angle)
                       .minimum_ring_area(o.minimum_ring_area)
-                      .sliding_runs(&runs);
+                      .sliding_runs(&runs)
+                      .resampled_chords(&chords);
   const auto r = o.deviation_bound
                      ? CVT_2::resample_constraints_2(cdt, h, np.deviation_bound(*o.deviation_bound))
                      : CVT_2::resample_constraints_2(cdt, h, np);
@@ -736,6 +741,7 @@ void resample(const Options& o, std::size_t free_generators, CDT& cdt,
   CVT_2::IO::insert_poly(described, CVT_2::IO::domain_poly_data(cdt));
   cdt.swap(described);
   runs.relocate(cdt);
+  if (segments) *segments = CVT_2::IO::resampled_segments<K>(chords, edge_items);
   using CVT_2::internal::number_text;
   metadata.emplace_back("cell_size", number_text(h));
   metadata.emplace_back("deviation_bound",
@@ -751,18 +757,19 @@ void resample(const Options& o, std::size_t free_generators, CDT& cdt,
             << r.max_deviation << ", area " << r.area_before << " -> " << r.area_after << '\n';
 }
 
-// --boundary slide, after the optimization: the domain's lines where the vertices slid to, for
+// --boundary slide, after the optimization: the domain's lines where the vertices slid to (the
+// named segments' ends follow the vertices of `constrained`, as they were before), for
 // --cells-on-constraints and --domain-out (with the file's own generators where they were given,
 // those still strictly inside), the largest deviation from the input in the metadata, and a
 // note of it.
 void slid_domain(const Options& o, const CDT& cdt, const CVT_2::Sliding_runs_2<CDT>& runs,
+                 const std::vector<std::pair<CDT::Vertex_handle, Point_2>>& constrained,
                  Segments& segments, CDT& domain_alone, CVT_2::IO::Metadata& metadata) {
   const auto lines = CVT_2::IO::domain_poly_data(cdt, "<triangulation>", false);
-  if (!segments.ends.empty()) {
-    CVT_2::IO::Domain_data<K> slid;
-    slid.description = lines;
-    segments = CVT_2::IO::domain_segments(slid);
-  }
+  std::map<Point_2, Point_2> slid;  // where each constrained vertex was -> where it is
+  for (const auto& [v, p] : constrained) slid.emplace(p, v->point());
+  for (Point_2& p : segments.ends)
+    if (const auto it = slid.find(p); it != slid.end()) p = it->second;
   for (auto& [key, value] : metadata)  // the resampling's bound the chords that did not slide
     if (key == "max_deviation")
       value = CVT_2::internal::number_text(std::max(std::stod(value), runs.max_deviation()));
@@ -827,8 +834,6 @@ int run(const Options& o) {
     if (std::all_of(kinds.of_item.begin(), kinds.of_item.end(),
                     [](const std::string& k) { return k.empty(); }))
       kinds.of_item.clear();
-    if (!kinds.of_item.empty() && o.resample)
-      throw Usage_error("the GeoJSON features' \"kind\" properties need --boundary keep");
     std::size_t kept = 0;
     for (std::size_t i = 0; i < w->polylines.size(); ++i) {
       const std::size_t item = w->polyline_lines[i];
@@ -862,19 +867,16 @@ int run(const Options& o) {
                                {"boundary", o.slide      ? "slide"
                                             : o.resample ? "resample"
                                                          : "keep"}};
+  // The input lines that --cells-on-constraints and the features' kinds name, by the file's
+  // items (a resampled domain's chords named by the lines they replace).
+  Segments segments;
+  const bool named = !o.cells_on_constraints.empty() || !kinds.of_item.empty();
+  if (named) segments = CVT_2::IO::domain_segments(data);
   CVT_2::Sliding_runs_2<CDT> runs;  // --boundary slide: the runs the resampled vertices slide on
-  if (o.resample) resample(o, default_n, cdt, metadata, runs);
+  if (o.resample) resample(o, default_n, cdt, metadata, runs, named ? &segments : nullptr);
   if (o.barriers || o.conforming)
     metadata.emplace_back("constraints", o.barriers ? "barrier" : "conforming");
   if (!kinds.of_item.empty()) metadata.emplace_back("constraint_kinds", "by feature");
-  // The input lines that --cells-on-constraints names: the file's, or the resampled domain's
-  // (the segments of --domain-out).
-  Segments segments;
-  if (!o.cells_on_constraints.empty() || !kinds.of_item.empty()) {
-    CVT_2::IO::Domain_data<K> resampled;
-    if (o.resample) resampled.description = CVT_2::IO::domain_poly_data(cdt);
-    segments = CVT_2::IO::domain_segments(o.resample ? resampled : data);
-  }
   CDT domain_alone;  // for --domain-out: the domain and the file's own generators, no others
   if (!o.domain_out.empty()) domain_alone = cdt;
   // The sizing's default sizes are the boundary edges, before generators split any.
@@ -940,9 +942,14 @@ int run(const Options& o) {
   }
   n += redistribute(o, sizing, fixed, cdt);
   insert_random_points(n, o, sizing, cdt, disks);
+  // --boundary slide: where each constrained vertex was, to follow the named lines' ends
+  std::vector<std::pair<CDT::Vertex_handle, Point_2>> constrained;
+  if (o.slide)
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      if (cdt.are_there_incident_constraints(v)) constrained.emplace_back(v, v->point());
   const CVT_2::Optimization_result r =
       optimize(cdt, o, sizing, fixed, disks, o.slide ? &runs : nullptr);
-  if (o.slide) slid_domain(o, cdt, runs, segments, domain_alone, metadata);
+  if (o.slide) slid_domain(o, cdt, runs, constrained, segments, domain_alone, metadata);
   if (!conforming.lines.empty() && !o.quiet) {  // what breaks the faces on the lines, if any
     std::size_t inside = 0;
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)

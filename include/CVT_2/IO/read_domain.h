@@ -8,10 +8,13 @@
 #include <CVT_2/IO/read_poly.h>
 #include <CVT_2/IO/read_wkt.h>
 #include <CVT_2/exceptions.h>
+#include <CVT_2/internal/input_segments_of_constraints.h>
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -88,6 +91,38 @@ Domain_segments<K> domain_segments(const Domain_data<K>& d) {
   }
   for (std::size_t i = 0; i < w.polylines.size(); ++i)
     add(w.polylines[i], false, w.polyline_lines[i]);
+  return s;
+}
+
+/// \ingroup PkgCvt2IO
+/// The item of each constrained edge of `cdt` that lies on a segment of `segments` (as
+/// `Domain_segments`): the input line it belongs to, keyed by its two points (the smaller
+/// first). Taken before `resample_constraints_2()`, for `resampled_segments()`.
+template <class CDT, class Segments>
+std::map<std::pair<typename CDT::Point, typename CDT::Point>, std::int64_t> constrained_edge_items(
+    const CDT& cdt, const Segments& segments) {
+  std::map<std::pair<typename CDT::Point, typename CDT::Point>, std::int64_t> items;
+  internal::for_each_edge_on_input_segments(cdt, segments.ends, [&](auto u, auto w, std::size_t i) {
+    items.emplace(std::minmax(u->point(), w->point()), segments.items[i]);
+  });
+  return items;
+}
+
+/// \ingroup PkgCvt2IO
+/// The segments of a resampled domain named as the input's lines: each of `chords`
+/// (`resample_constraints_2()`'s `resampled_chords`) from `a` to `b`, with the item that
+/// `edge_items` (`constrained_edge_items()` before the resampling) gives its source edge, or -1.
+/// So `--cells-on-constraints`, the kinds of a GeoJSON's features and Python's `segment_items`
+/// name a chord by the line the user gave.
+template <class K, class Chords, class EdgeItems>
+Domain_segments<K> resampled_segments(const Chords& chords, const EdgeItems& edge_items) {
+  Domain_segments<K> s;
+  for (const auto& c : chords) {
+    s.ends.push_back(c.a);
+    s.ends.push_back(c.b);
+    const auto it = edge_items.find(std::minmax(c.source_a, c.source_b));
+    s.items.push_back(it == edge_items.end() ? -1 : it->second);
+  }
   return s;
 }
 

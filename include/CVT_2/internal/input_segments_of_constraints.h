@@ -31,27 +31,21 @@ bool is_bent_onto(const Point_2& w, const Point_2& u, const Point_2& a, const Po
          distance_to_line(w, a, b) <= std::ldexp(m, -44);
 }
 
-// For each constraint of `mesh` (a constrained edge of the triangulation, by the cells of its
-// ends), the first input segment it lies on (segment i from ends[2i] to ends[2i + 1]), or -1:
-// each input segment is walked from one end to the other along the constrained edges that lie
-// on it (they meet it exactly: the triangulation constructs no intersection).
-template <class CDT, class Mesh>
-std::vector<std::int64_t> input_segments_of_constraints(
-    const CDT& cdt, const Mesh& mesh, const std::vector<typename CDT::Point>& ends) {
+// Walks each input segment i (from ends[2i] to ends[2i + 1]) from one end to the other along
+// the constrained edges of `cdt` that lie on it (they meet it exactly: the triangulation
+// constructs no intersection), calling f(u, w, i) for each such edge uw.
+template <class CDT, class F>
+void for_each_edge_on_input_segments(const CDT& cdt, const std::vector<typename CDT::Point>& ends,
+                                     F f) {
   using Vertex_handle = typename CDT::Vertex_handle;
   using Face_handle = typename CDT::Face_handle;
-  using Index = typename Mesh::Index;
-  std::unordered_map<std::uint64_t, std::int64_t> of_edge;
-  const auto key = [](Index a, Index b) {
-    return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
-  };
   Face_handle hint;
   const auto vertex_at = [&](const typename CDT::Point& p) {
     typename CDT::Locate_type lt;
     int li;
-    const Face_handle f = cdt.locate(p, lt, li, hint);
-    if (f != Face_handle()) hint = f;
-    return lt == CDT::VERTEX ? f->vertex(li) : Vertex_handle();
+    const Face_handle face = cdt.locate(p, lt, li, hint);
+    if (face != Face_handle()) hint = face;
+    return lt == CDT::VERTEX ? face->vertex(li) : Vertex_handle();
   };
   for (std::size_t i = 0; i < ends.size() / 2; ++i) {
     const auto &a = ends[2 * i], &b = ends[2 * i + 1];
@@ -76,11 +70,26 @@ std::vector<std::int64_t> input_segments_of_constraints(
       } while (++e != done);
       if (next == Vertex_handle()) next = bent;
       if (next == Vertex_handle()) break;
-      if (has_domain_face(cdt, u) && has_domain_face(cdt, next))
-        of_edge.emplace(key(Index(mesh.cell_of(u)), Index(mesh.cell_of(next))), std::int64_t(i));
+      f(u, next, i);
       u = next;
     }
   }
+}
+
+// For each constraint of `mesh` (a constrained edge of the triangulation, by the cells of its
+// ends), the first input segment it lies on (segment i from ends[2i] to ends[2i + 1]), or -1.
+template <class CDT, class Mesh>
+std::vector<std::int64_t> input_segments_of_constraints(
+    const CDT& cdt, const Mesh& mesh, const std::vector<typename CDT::Point>& ends) {
+  using Index = typename Mesh::Index;
+  std::unordered_map<std::uint64_t, std::int64_t> of_edge;
+  const auto key = [](Index a, Index b) {
+    return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
+  };
+  for_each_edge_on_input_segments(cdt, ends, [&](auto u, auto next, std::size_t i) {
+    if (has_domain_face(cdt, u) && has_domain_face(cdt, next))
+      of_edge.emplace(key(Index(mesh.cell_of(u)), Index(mesh.cell_of(next))), std::int64_t(i));
+  });
   std::vector<std::int64_t> input;
   for (const auto& c : mesh.constraints()) {
     const auto it = of_edge.find(key(c[0], c[1]));

@@ -36,6 +36,7 @@ class Run_resampler {
   struct Chord {
     std::size_t a, b;
     bool left_inside, right_inside;
+    Point_2 source_a, source_b;  // the input constrained edge under the chord's middle
   };
 
   // A run of the result with the domain on a side: its input polyline, and its points in order
@@ -610,7 +611,11 @@ class Run_resampler {
         std::size_t v = 0;
         const double d = farthest(r, j, &v);
         if (d > 0) max_deviation = std::max(max_deviation, std::sqrt(d));
-        m_chords.push_back({id(r.nodes[j].q), id(r.nodes[j + 1].q), r.left_inside, r.right_inside});
+        // the input segment under the middle of the chord's stretch of the run
+        const double middle = (r.nodes[j].pos() + r.nodes[j + 1].pos()) / 2;
+        const std::size_t s = std::min(static_cast<std::size_t>(middle), r.p.size() - 2);
+        m_chords.push_back({id(r.nodes[j].q), id(r.nodes[j + 1].q), r.left_inside, r.right_inside,
+                            r.p[s], r.p[s + 1]});
       }
       if (r.keep() || r.nodes.size() < 3) continue;
       Resampled_run out{r.p, {}, {}, {}};
