@@ -88,6 +88,11 @@ def optimize(
     lipschitz_k: float = ...,
     boundary_size: Optional[float] = ...,
     boundary_tolerance: Optional[float] = ...,
+    fixed_points: Optional[_Points] = ...,
+    boundary: Optional[Literal["slide"]] = ...,
+    constraints: Optional[Literal["conforming"]] = ...,
+    redistribute: Union[Literal["auto"], bool] = ...,
+    seed: int = ...,
 ) -> OptimizeResult: ...
 def bounded_voronoi(
     domain: Domain, points: _Points, threads: int = ..., *, boundary_tolerance: Optional[float] = ...
@@ -139,6 +144,7 @@ class OptimizeResult:
     notes: list[str]
     density_response: float  # slope of log(area) on log(density): -0.5 at a CVT, NaN uniform
     input_index: np.ndarray  # int (N,), the input row of each generator, -1 for the domain's
+    redistributed: bool  # the points given were replaced by points drawn from the density
     @property
     def normalized_energy(self) -> float: ...
     def bounded_voronoi(self, threads: int = ...) -> BoundedVoronoi: ...
