@@ -464,6 +464,19 @@ py::dict domain_arrays(const Domain& d) {
   return out;
 }
 
+// The item of each row of `out`'s segments: that of the segment of `ends`/`items` (two points,
+// one item a segment) that it lies on, walked along the constrained edges of `cdt`, out's
+// triangulation; -1 for none. So a resampled or slid domain names its lines as the input does.
+void name_segments(Domain& out, const CDT& cdt, const std::vector<Point_2>& ends,
+                   const std::vector<std::int64_t>& items) {
+  const auto of_edge =
+      CVT_2::IO::constrained_edge_items(cdt, CVT_2::IO::Domain_segments<K>{ends, items});
+  for (std::size_t i = 0; i < out.segment_items.size(); ++i) {
+    const auto it = of_edge.find(std::minmax(out.segment_ends[2 * i], out.segment_ends[2 * i + 1]));
+    out.segment_items[i] = it == of_edge.end() ? -1 : it->second;
+  }
+}
+
 // The domain with its constraints resampled (resample_constraints_2()) to the size h, or to
 // the size that gives `cells` cells: a new domain described as Triangle's arrays, and what the
 // resampling did.
@@ -517,14 +530,7 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
     out->finish();
     // Each chord named by the input line it replaces, not by its row.
     const auto named = CVT_2::IO::resampled_segments<K>(chords, edge_items);
-    std::map<std::pair<Point_2, Point_2>, std::int64_t> item_of;
-    for (std::size_t i = 0; i < named.items.size(); ++i)
-      item_of.emplace(std::minmax(named.ends[2 * i], named.ends[2 * i + 1]), named.items[i]);
-    for (std::size_t i = 0; i < out->segment_items.size(); ++i) {
-      const auto it =
-          item_of.find(std::minmax(out->segment_ends[2 * i], out->segment_ends[2 * i + 1]));
-      out->segment_items[i] = it == item_of.end() ? -1 : it->second;
-    }
+    name_segments(*out, *cdt, named.ends, named.items);
   }
   py::dict report;
   report["size"] = h;
@@ -563,23 +569,14 @@ std::shared_ptr<Domain> slid_domain(
   }
   out->runs = std::make_shared<const CVT_2::Sliding_runs_2<CDT>>(runs);
   out->finish();
-  // Each line named as before the slide: by the item of the segment between its ends' places
-  // then (`constrained`: each constrained vertex and where it was).
-  std::map<Point_2, Point_2> was;
-  for (const auto& [v, p] : constrained) was.emplace(v->point(), p);
-  std::map<std::pair<Point_2, Point_2>, std::int64_t> item_of;
-  for (std::size_t i = 0; i < d.segment_items.size(); ++i)
-    item_of.emplace(std::minmax(d.segment_ends[2 * i], d.segment_ends[2 * i + 1]),
-                    d.segment_items[i]);
-  const auto before = [&was](const Point_2& p) {
-    const auto it = was.find(p);
-    return it == was.end() ? p : it->second;
-  };
-  for (std::size_t i = 0; i < out->segment_items.size(); ++i) {
-    const auto it = item_of.find(
-        std::minmax(before(out->segment_ends[2 * i]), before(out->segment_ends[2 * i + 1])));
-    out->segment_items[i] = it == item_of.end() ? -1 : it->second;
-  }
+  // Each line named as before the slide: d's segments, their ends where their vertices slid
+  // (`constrained`: each constrained vertex and where it was), walked in the slid triangulation.
+  std::map<Point_2, Point_2> now;
+  for (const auto& [v, p] : constrained) now.emplace(p, v->point());
+  std::vector<Point_2> ends = d.segment_ends;
+  for (Point_2& p : ends)
+    if (const auto it = now.find(p); it != now.end()) p = it->second;
+  name_segments(*out, cdt, ends, d.segment_items);
   return out;
 }
 
@@ -1320,15 +1317,19 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
                 : !CVT_2::follows_density_2(bvd, Python_density{choice.function, false});
       }
       if (replace) {
+        for (const auto v : given) row.erase(&*v);  // before their addresses may be reused
         CVT_2::remove_generators_2(*cdt, given);
-        row.clear();  // no vertex comes from a row now; their addresses may be reused
-        const auto np = CVT_2::parameters::random_seed(seed);
-        CVT_2::insert_generators_2(
-            *cdt, choice.kind == Density_choice::LIPSCHITZ
-                      ? CVT_2::random_points_in_domain_2(*cdt, given.size(),
-                                                         np.sizing_field(std::cref(*sizing)))
-                      : CVT_2::random_points_in_domain_2(
-                            *cdt, given.size(), np.density(Python_density{choice.function, true})));
+        // As cvt2 draws them: none in the circles of conforming lines.
+        const auto draw = [&](std::size_t count, std::uint64_t s) {
+          const auto np = CVT_2::parameters::random_seed(s);
+          return choice.kind == Density_choice::LIPSCHITZ
+                     ? CVT_2::random_points_in_domain_2(*cdt, count,
+                                                        np.sizing_field(std::cref(*sizing)))
+                     : CVT_2::random_points_in_domain_2(
+                           *cdt, count, np.density(Python_density{choice.function, true}));
+        };
+        CVT_2::insert_generators_2(*cdt,
+                                   CVT_2::draw_outside_disks_2(disks, given.size(), seed, draw));
         out->redistributed = true;
         out->notes.push_back("the " + std::to_string(given.size()) + " generators given " +
                              (redistribute == "auto"

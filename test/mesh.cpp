@@ -922,8 +922,8 @@ TEST_CASE("resampled constraints lie on the input, keep its junctions, bound and
           CVT_2::resample_constraints_2(after, h, CVT_2::parameters::resampled_chords(&chords));
       check_resampling(before, after, h, h / 4, r);
       CHECK(r.output_vertices <= r.input_vertices);
-      // Each constraint after is a chord, with a constrained edge before as its source, within
-      // the bound of it: what outputs name the chord by.
+      // Each constraint after is a chord, with a constrained edge before as its source, whose
+      // middle is within the bound of it: what outputs name the chord by.
       const auto constrained_edge = [](const Cdt_ids& t, const Point& a, const Point& b) {
         const auto vertex = [&t](const Point& p) {
           Cdt_ids::Locate_type lt;
@@ -943,7 +943,7 @@ TEST_CASE("resampled constraints lie on the input, keep its junctions, bound and
       for (const auto& c : chords) {
         unknown +=
             !constrained_edge(after, c.a, c.b) || !constrained_edge(before, c.source_a, c.source_b);
-        far += CGAL::squared_distance(K::Segment_2(c.a, c.b),
+        far += CGAL::squared_distance(CGAL::midpoint(c.a, c.b),
                                       K::Segment_2(c.source_a, c.source_b)) > h * h / 16 * 1.0001;
       }
       CHECK(chords.size() == constraints);

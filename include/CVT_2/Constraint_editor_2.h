@@ -486,26 +486,15 @@ class Constraint_editor_2 {
       lift(f, k, stack);
     }
     flip(stack);  // constrained Delaunay again before CGAL removes v (its hole filling expects it)
-    std::vector<Vertex_handle> link;
-    auto vc = m_cdt.incident_vertices(v), done = vc;
-    do link.push_back(vc);
-    while (++vc != done);
     // the faces around the link but v's own keep their domain marks (a hole next to v's)
-    internal::Handle_set<Face_handle> star, kept;
-    auto fc = m_cdt.incident_faces(v), fdone = fc;
-    do star.insert(fc);
-    while (++fc != fdone);
-    for (const Vertex_handle x : link) {
-      auto xc = m_cdt.incident_faces(x), xdone = xc;
-      do
-        if (!star.contains(xc)) kept.insert(xc);
-      while (++xc != xdone);
-    }
+    std::vector<Vertex_handle> link;
+    internal::Handle_set<Face_handle> kept;
+    internal::link_and_kept_faces(m_cdt, v, link, kept);
     m_cdt.remove(v);
     for (const Vertex_handle x : link) note_star(x);  // the faces of the hole among them
     const Vertex_handle w = insert_point(to);
     internal::Handle_set<Face_handle> made;  // faces made since, which may reuse kept ones
-    fc = m_cdt.incident_faces(w), fdone = fc;
+    auto fc = m_cdt.incident_faces(w), fdone = fc;
     do made.insert(fc);
     while (++fc != fdone);
     for (auto& line : m_polylines) std::replace(line.begin(), line.end(), v, w);

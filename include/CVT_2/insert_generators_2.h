@@ -311,22 +311,10 @@ void remove_generators_2(CDT& cdt, const VertexRange& vertices) {
     if (seen.insert(v)) removed.push_back(v);
   }
   std::vector<Vertex_handle> link;
-  internal::Handle_set<Face_handle> star, kept;
+  internal::Handle_set<Face_handle> kept;
   for (const Vertex_handle v : removed) {
     internal::poll_interrupt_sometimes();
-    link.clear(), star.clear(), kept.clear();
-    auto vc = cdt.incident_vertices(v), done = vc;
-    do link.push_back(vc);
-    while (++vc != done);
-    auto fc = cdt.incident_faces(v), fdone = fc;
-    do star.insert(fc);
-    while (++fc != fdone);
-    for (const Vertex_handle x : link) {
-      auto xc = cdt.incident_faces(x), xdone = xc;
-      do
-        if (!star.contains(xc)) kept.insert(xc);
-      while (++xc != xdone);
-    }
+    internal::link_and_kept_faces(cdt, v, link, kept);
     cdt.remove(v);  // Delaunay fills the hole with new faces only (CGAL's remove_2D)
     for (const Vertex_handle x : link) {
       if (cdt.is_infinite(x)) continue;

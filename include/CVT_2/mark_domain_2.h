@@ -37,6 +37,28 @@ bool has_domain_face(const CDT& cdt, typename CDT::Vertex_handle v) {
   return false;
 }
 
+// Before `cdt.remove(v)`: `link` gets v's neighbours, `kept` the faces around them but v's
+// own, which the removal keeps with their domain marks; the faces around the link after it
+// that are not in `kept` fill the hole.
+template <class CDT, class FaceSet>
+void link_and_kept_faces(const CDT& cdt, typename CDT::Vertex_handle v,
+                         std::vector<typename CDT::Vertex_handle>& link, FaceSet& kept) {
+  link.clear(), kept.clear();
+  FaceSet star;
+  auto vc = cdt.incident_vertices(v), done = vc;
+  do link.push_back(vc);
+  while (++vc != done);
+  auto fc = cdt.incident_faces(v), fdone = fc;
+  do star.insert(fc);
+  while (++fc != fdone);
+  for (const auto x : link) {
+    auto xc = cdt.incident_faces(x), xdone = xc;
+    do
+      if (!star.contains(xc)) kept.insert(xc);
+    while (++xc != xdone);
+  }
+}
+
 // Whether some face of the triangulation is in the domain.
 template <class CDT>
 bool has_domain_face(const CDT& cdt) {

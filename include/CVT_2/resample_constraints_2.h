@@ -54,8 +54,9 @@ struct Resampling_report {
 template <class Point_2>
 struct Resampled_chord {
   Point_2 a, b;  ///< the chord's ends
-  /// a constrained edge of the triangulation before, under the middle of the chord's stretch
-  /// of its run (the chord itself if it was kept)
+  /// a constrained edge of the triangulation before: of the chord's stretch of its run, the
+  /// one nearest to the chord's middle, which is within the deviation bound of it (the chord
+  /// itself if it was kept)
   Point_2 source_a, source_b;
 };
 

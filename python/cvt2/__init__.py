@@ -232,7 +232,7 @@ class Domain:
         line of its geometry (``.wkt``), its feature from 1 (``.geojson``), or 0 for the polygon
         and k + 1 for ``constraints[k]`` (shapely). A domain made by :meth:`resample` (or slid
         by ``optimize(..., boundary="slide")``) gives each chord the item of the input line it
-        replaces (for a ``.poly`` file, the segment under the middle of the chord's stretch)."""
+        replaces (for a ``.poly`` file, the segment of its stretch nearest to its middle)."""
         return self._arrays["segment_items"]
 
     @property
@@ -484,9 +484,10 @@ def optimize(
 
 
 def _redistribute(redistribute):
-    for value, name in (("auto", "auto"), (True, "always"), (False, "never")):
-        if redistribute is value or (isinstance(value, str) and redistribute == value):
-            return name
+    if isinstance(redistribute, (bool, np.bool_)):
+        return "always" if redistribute else "never"
+    if isinstance(redistribute, str) and redistribute == "auto":
+        return "auto"
     raise ValueError(f"redistribute must be 'auto', True or False, not {redistribute!r}")
 
 

@@ -189,6 +189,12 @@ def test_points_that_do_not_follow_the_density_are_redistributed(rectangle, algo
     assert cvt2.optimize(rectangle, drawn, density=step, max_iterations=0,
                          redistribute=True).redistributed
     assert not cvt2.optimize(rectangle, uniform, max_iterations=0, redistribute=True).redistributed
+    # Rows that were not replaced keep their index: one at a fixed point, one at a corner.
+    given = np.vstack([uniform[:300], [[0.5, 0.5], [2.0, 0.0]]])
+    kept_rows = cvt2.optimize(rectangle, given, density=step, max_iterations=0,
+                              fixed_points=[[0.5, 0.5]])
+    assert kept_rows.redistributed
+    assert sorted(kept_rows.input_index[kept_rows.input_index >= 0]) == [300, 301]
     # Fixed points stay, and so does their count of free generators.
     well = [0.5, 0.5]
     fixed = cvt2.optimize(rectangle, uniform, density=step, max_iterations=0, fixed_points=[well])

@@ -244,10 +244,10 @@ def item_lines(domain):
                                   "france_mainland.poly"])
 def test_resampled_lines_keep_the_items_of_the_input(data, name):
     # Each chord of a resampled (and a slid) domain is named by the input line it replaces (a
-    # feature, a WKT line, a .poly row: the one under the middle of the chord's stretch), and
+    # feature, a WKT line, a .poly row: the one of its stretch nearest to its middle), and
     # lies on it: within the deviation bound of it (twice after sliding); a feature or WKT line
     # has the chord's ends and middle (a .poly row may hold neither end).
-    from shapely.geometry import LineString, Point
+    from shapely.geometry import Point
 
     domain = cvt2.Domain.from_file(data / name)
     lines = item_lines(domain)
@@ -260,11 +260,12 @@ def test_resampled_lines_keep_the_items_of_the_input(data, name):
         assert (items >= 0).all() and set(items) <= set(lines)
         ends = d.vertices[d.segments]
         for (a, b), item in zip(ends, items):
-            assert d is slid or lines[item].distance(LineString([a, b])) <= bound * (1 + 1e-9)
+            middle = lines[item].distance(Point((a + b) / 2))
             if name.endswith(".poly"):  # a row, not a line: a slide moves the chord off it
+                assert d is slid or middle <= bound * (1 + 1e-9)
                 continue
             assert lines[item].distance(Point(a)) < 1e-9 * (1 + np.abs(a).max())
-            assert lines[item].distance(Point((a + b) / 2)) <= tolerance * (1 + 1e-9)
+            assert middle <= tolerance * (1 + 1e-9)
     # With no resampling a segment is its own item.
     assert (resampled.segment_items != np.arange(len(resampled.segments))).any()
 
@@ -286,3 +287,20 @@ def test_program_names_resampled_lines_by_the_input_items(program, data, tmp_pat
         assert constraints("us_kentucky_counties.geojson", "--boundary", mode) == keep
     assert constraints("aquifer.geojson", "--boundary", "resample") == constraints(
         "aquifer.geojson")
+
+
+def test_a_slid_chord_split_by_a_fixed_point_keeps_its_item():
+    # A fixed point on a chord splits it (its ends then stay): both pieces are still named by
+    # the input segment they lie on.
+    bottom = [[x, 0.0] for x in np.linspace(0, 2, 101)]
+    vertices = bottom + [[2, 1], [0, 1]]
+    n = len(vertices)
+    strip = cvt2.Domain(vertices, [[i, (i + 1) % n] for i in range(n)])
+    resampled = strip.resample(cells=300)
+    ends = resampled.vertices[resampled.segments]
+    on_bottom = [i for i, (a, b) in enumerate(ends) if a[1] == 0 and b[1] == 0]
+    middle = ends[on_bottom[len(on_bottom) // 2]].mean(axis=0)
+    result = cvt2.optimize(resampled, cvt2.random_points(resampled, cells=300, seed=2),
+                           boundary="slide", fixed_points=[middle], max_iterations=20)
+    items = result.domain.segment_items
+    assert (items >= 0).all() and set(items) <= set(strip.segment_items)

@@ -115,6 +115,21 @@ def test_redistributed_points_are_the_programs(program, data, tmp_path, redistri
     assert result.redistributed == (redistribute is not False)
 
 
+def test_redistributed_points_keep_out_of_conforming_circles_as_the_programs(program, data,
+                                                                           tmp_path):
+    # The river of aquifer.geojson is conforming: points drawn in place of the given ones keep
+    # out of its circles, drawn again as cvt2 draws them.
+    file = data / "aquifer.geojson"
+    domain = cvt2.Domain.from_file(file)
+    points = cvt2.random_points(domain, 800, seed=9)
+    np.savetxt(tmp_path / "in.txt", points, fmt="%.17g")
+    result = cvt2.optimize(domain, points, density="lipschitz", max_iterations=0, seed=3)
+    _, theirs, _ = run_program(program, file, tmp_path, "--points-in", tmp_path / "in.txt",
+                               "--density", "lipschitz", "--iterations", 0, "--seed", 3)
+    assert result.redistributed
+    assert same(result.points, theirs[:, :2])
+
+
 def test_threads_do_not_change_the_bits(data):
     domain = cvt2.Domain.from_file(data / "us_massachusetts_counties.poly")
     points = cvt2.random_points(domain, 30000, seed=4)

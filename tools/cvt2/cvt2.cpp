@@ -468,17 +468,8 @@ void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& 
       return CVT_2::random_points_in_domain_2(cdt, count, np);
     });
   };
-  std::vector<Point_2> points = draw(n, o.seed);
-  // Points in the circles of conforming lines drawn again, with the next seeds.
-  for (std::uint64_t seed = o.seed + 1; seed != o.seed + 64; ++seed) {
-    const auto kept = std::remove_if(points.begin(), points.end(),
-                                     [&](const Point_2& p) { return keep_out.contains(p); });
-    if (kept == points.end()) break;
-    points.erase(kept, points.end());
-    const std::vector<Point_2> more = draw(n - points.size(), seed);
-    points.insert(points.end(), more.begin(), more.end());
-  }
-  CVT_2::insert_generators_2(cdt, points);
+  // (points in the circles of conforming lines drawn again, with the next seeds)
+  CVT_2::insert_generators_2(cdt, CVT_2::draw_outside_disks_2(keep_out, n, o.seed, draw));
 }
 
 // --redistribute: with a density, the free generators given (--points-in, the domain file's;

@@ -9,11 +9,13 @@
 #include <CGAL/Kernel/global_functions.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/enum.h>
+#include <CGAL/intersections.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -611,9 +613,17 @@ class Run_resampler {
         std::size_t v = 0;
         const double d = farthest(r, j, &v);
         if (d > 0) max_deviation = std::max(max_deviation, std::sqrt(d));
-        // the input segment under the middle of the chord's stretch of the run
-        const double middle = (r.nodes[j].pos() + r.nodes[j + 1].pos()) / 2;
-        const std::size_t s = std::min(static_cast<std::size_t>(middle), r.p.size() - 2);
+        // its source: the input segment of its stretch of the run nearest to its middle, within
+        // the deviation bound of it (the stretch is within the bound of the chord, end to end)
+        const Point_2 middle = CGAL::midpoint(r.nodes[j].q, r.nodes[j + 1].q);
+        const std::size_t last = std::min(r.nodes[j + 1].seg, r.p.size() - 2);
+        std::size_t s = std::min(r.nodes[j].seg, last);
+        double nearest = std::numeric_limits<double>::infinity();
+        for (std::size_t k = s; k <= last; ++k) {
+          const double d = CGAL::to_double(CGAL::squared_distance(
+              middle, typename CDT::Geom_traits::Segment_2(r.p[k], r.p[k + 1])));
+          if (d < nearest) nearest = d, s = k;
+        }
         m_chords.push_back({id(r.nodes[j].q), id(r.nodes[j + 1].q), r.left_inside, r.right_inside,
                             r.p[s], r.p[s + 1]});
       }
