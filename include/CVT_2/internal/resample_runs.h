@@ -38,7 +38,7 @@ class Run_resampler {
   struct Chord {
     std::size_t a, b;
     bool left_inside, right_inside;
-    Point_2 source_a, source_b;  // the input constrained edge under the chord's middle
+    Point_2 source_a, source_b;  // the input segment of its stretch nearest to its middle
   };
 
   // A run of the result with the domain on a side: its input polyline, and its points in order
@@ -620,9 +620,9 @@ class Run_resampler {
         std::size_t s = std::min(r.nodes[j].seg, last);
         double nearest = std::numeric_limits<double>::infinity();
         for (std::size_t k = s; k <= last; ++k) {
-          const double d = CGAL::to_double(CGAL::squared_distance(
+          const double to_k = CGAL::to_double(CGAL::squared_distance(
               middle, typename CDT::Geom_traits::Segment_2(r.p[k], r.p[k + 1])));
-          if (d < nearest) nearest = d, s = k;
+          if (to_k < nearest) nearest = to_k, s = k;
         }
         m_chords.push_back({id(r.nodes[j].q), id(r.nodes[j + 1].q), r.left_inside, r.right_inside,
                             r.p[s], r.p[s + 1]});
