@@ -4,6 +4,7 @@
 // (Sibson: the areas each cell loses; Laplace: q's cell's edges, each given to the nearest
 // visible generator of its midpoint by brute force), CGAL's coordinates on a Delaunay
 // triangulation of the same nodes where no constraint is near, exact visibility.
+#include <CVT_2/Constraint_editor_2.h>
 #include <CVT_2/natural_neighbor_coordinates_2.h>
 
 #include "support/invariants.h"
@@ -739,4 +740,33 @@ TEST_CASE("a hint, a query that is not a number, a query outside", "[natural_nei
   CHECK(!r.third);
   CHECK(r.second == 0);
   CHECK(w.empty());
+}
+
+// Beside CGAL's own natural_neighbor_coordinates_2() (included above, found by argument-dependent
+// lookup on CGAL's points), the editor calls ours: a crack's new vertex carries the Sibson
+// coordinates the diagram gave its point before the edit.
+TEST_CASE("Constraint_editor_2 carries the Sibson coordinates of the diagram before the edit",
+          "[natural_neighbors][edit]") {
+  Domain d;
+  load_domain(d, "four_clusters.poly");
+  insert_random_points(d, 300, 3);
+  Bvd bvd(d.cdt);
+  CVT_2::Constraint_editor_2<Cdt> editor(d.cdt, bvd);
+  editor.carry_weights(true);
+  const std::vector<Point> crack = random_points_in_domain(d.cdt, 2, 5);
+  std::vector<Weights> before;
+  for (const Point& p : crack)
+    before.push_back(coordinates(bvd, p, CVT_2::Natural_neighbor_method::SIBSON).weights);
+  editor.insert_constraint(crack);
+  const auto& report = editor.report();
+  REQUIRE(report.new_vertices.size() == 2);
+  REQUIRE(report.carried_weights.size() == 2);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const std::size_t i = report.new_vertices[k]->point() == crack[0] ? 0 : 1;
+    REQUIRE(report.carried_weights[k].size() == before[i].size());
+    for (const auto& [v, w] : report.carried_weights[k]) {
+      REQUIRE(before[i].count(v->point()) == 1);
+      CHECK(std::abs(w - before[i].at(v->point())) < 1e-12);
+    }
+  }
 }

@@ -332,7 +332,8 @@ class Constraint_editor_2 {
   std::vector<Weights> old_weights(const std::vector<Point_2>& path, std::size_t first) const {
     std::vector<Weights> out(m_carry ? path.size() : 0);
     for (std::size_t k = first; k < out.size(); ++k) {
-      const auto r = natural_neighbor_coordinates_2(m_diagram, path[k], std::back_inserter(out[k]));
+      const auto r =
+          CVT_2::natural_neighbor_coordinates_2(m_diagram, path[k], std::back_inserter(out[k]));
       if (!r.third || r.second == 0) out[k].clear();
       for (auto& [v, w] : out[k]) w /= r.second;
     }

@@ -1,6 +1,7 @@
 # Installs the CVT_2 build tree into a fresh prefix, then configures, builds and runs the
 # consumer project against it; with -DBUILD_TREE=ON, against the build tree itself, uninstalled
-# (CVT_2_DIR); with -DSUBPROJECT=<source dir>, through add_subdirectory, with no build type.
+# (CVT_2_DIR); with -DSUBPROJECT=<source dir>, through add_subdirectory. With no build type in
+# all three (no optimization): the consumer proves the export, it need not run fast.
 # Run by the CTest tests consumer_find_package, consumer_build_tree and consumer_subproject:
 #   cmake -DCVT_2_BINARY_DIR=... -DCONSUMER_SOURCE_DIR=... -DCONSUMER_BINARY_DIR=...
 #         -DCONSUMER_PREFIX=... [-DBUILD_TREE=ON | -DSUBPROJECT=...] [-DGENERATOR=...]
@@ -25,12 +26,11 @@ set(configure_args -S ${CONSUMER_SOURCE_DIR} -B ${CONSUMER_BINARY_DIR})
 if(SUBPROJECT)
   list(APPEND configure_args -DCVT_2_SOURCE=${SUBPROJECT})
 elseif(BUILD_TREE)
-  list(APPEND configure_args -DCMAKE_BUILD_TYPE=Release -DCVT_2_DIR=${CVT_2_BINARY_DIR})
   list(APPEND configure_args -DCVT_2_DIR=${CVT_2_BINARY_DIR})
 else()
   run_step("install into ${CONSUMER_PREFIX}"
     ${CMAKE_COMMAND} --install ${CVT_2_BINARY_DIR} --prefix ${CONSUMER_PREFIX})
-  list(APPEND configure_args -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${CONSUMER_PREFIX})
+  list(APPEND configure_args -DCMAKE_PREFIX_PATH=${CONSUMER_PREFIX})
 endif()
 if(GENERATOR)
   list(APPEND configure_args -G ${GENERATOR})
