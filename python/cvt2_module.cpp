@@ -1306,17 +1306,14 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
     // As cvt2 --redistribute: with a density, the free generators given replaced by as many
     // drawn from it, always or if they do not follow it.
     if (redistribute != "never" && choice.kind != Density_choice::UNIFORM) {
+      const bool always = redistribute == "always";
       const std::vector<CDT::Vertex_handle> given =
-          CVT_2::internal::movable_generators(*cdt, fixed);
-      bool replace = !given.empty() && redistribute == "always";
-      if (!given.empty() && redistribute == "auto") {
-        const BVD bvd(*cdt);
-        replace =
-            choice.kind == Density_choice::LIPSCHITZ
-                ? !CVT_2::follows_density_2(bvd, CVT_2::make_sizing_field_density_2<K>(*sizing))
-                : !CVT_2::follows_density_2(bvd, Python_density{choice.function, false});
-      }
-      if (replace) {
+          choice.kind == Density_choice::LIPSCHITZ
+              ? CVT_2::generators_to_redistribute_2(
+                    *cdt, CVT_2::make_sizing_field_density_2<K>(*sizing), fixed, always)
+              : CVT_2::generators_to_redistribute_2(*cdt, Python_density{choice.function, false},
+                                                    fixed, always);
+      if (!given.empty()) {
         for (const auto v : given) row.erase(&*v);  // before their addresses may be reused
         CVT_2::remove_generators_2(*cdt, given);
         // As cvt2 draws them: none in the circles of conforming lines.

@@ -15,6 +15,7 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
@@ -622,6 +623,30 @@ TEST_CASE("the density response is the slope of log(area) on log(density): 0, -1
   CHECK_FALSE(follows(grid(10, false), step));
   CHECK(follows(grid(20, true), step));
   CHECK(follows(grid(10, true), [](const Point& p) { return 1 + 0.5 * p.x(); }));
+  // What a redistribution replaces: every free generator but the fixed ones, if they do not
+  // follow the density or always; none if they do; a fixed point that is not a generator named.
+  const auto to_redistribute = [&step](const std::vector<Point>& points,
+                                       const std::vector<Point>& fixed, bool always) {
+    Domain d;
+    load_square(d);
+    CVT_2::insert_generators_2(d.cdt, points);
+    const auto given = CVT_2::generators_to_redistribute_2(d.cdt, step, fixed, always);
+    std::set<Point> out;
+    for (const auto v : given) out.insert(v->point());
+    CHECK(out.size() == given.size());
+    return out;
+  };
+  const std::vector<Point> uniform = grid(10, false), drawn = grid(20, true);
+  const std::vector<Point> fixed{uniform[7], uniform[42]};
+  const std::set<Point> replaced = to_redistribute(uniform, fixed, false);
+  CHECK(replaced.size() == uniform.size() - 2);
+  for (const Point& p : uniform)
+    CHECK(replaced.count(p) == (p == fixed[0] || p == fixed[1] ? 0 : 1));
+  CHECK(to_redistribute(drawn, {}, false).empty());
+  CHECK(to_redistribute(drawn, {drawn[3]}, true).size() == drawn.size() - 1);
+  CHECK(to_redistribute(uniform, {Point(0, 0)}, false).size() == uniform.size());  // a corner
+  CHECK_THROWS_WITH(to_redistribute(uniform, {Point(0.123, 0.5)}, true),
+                    Catch::Contains("fixed_points") && Catch::Contains("(0.123, 0.5)"));
   // The note speaks up only for a response above -1/4.
   CHECK(CVT_2::internal::density_response_note(-0.3).empty());
   CHECK(CVT_2::internal::density_response_note(not_a_number).empty());

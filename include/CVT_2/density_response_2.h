@@ -4,6 +4,7 @@
 #ifndef CVT_2_DENSITY_RESPONSE_2_H
 #define CVT_2_DENSITY_RESPONSE_2_H
 
+#include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/Concepts/DensityFunction_2.h>
 #include <CVT_2/internal/density_evaluation.h>
 
@@ -97,6 +98,28 @@ inline constexpr double density_response_bound = -0.25;
 template <class Diagram, class Density>
 bool follows_density_2(const Diagram& bvd, const Density& rho) {
   return !(density_response_2(bvd, rho) > internal::density_response_bound);
+}
+
+/// \ingroup PkgCvt2Ref
+/// The generators that points drawn from the density `rho` should replace before an optimization
+/// under it: the free generators of `cdt` (in the domain, on no constraint) but those at the
+/// points `fixed`, the ones an optimizer with `fixed_points(fixed)` moves. With `always`, all of
+/// them; otherwise all of them if they do not `follows_density_2()`, none if they do.
+/// `remove_generators_2()` removes them and `random_points_in_domain_2()` draws as many from rho:
+/// `cvt2 --redistribute` and the Python module's `optimize(redistribute=)` do so.
+/// \tparam CDT a constrained Delaunay triangulation whose faces model `BvdFaceBase_2`, its domain
+/// marked and its generators inserted.
+/// \tparam Density a model of `DensityFunction_2`.
+/// \throws std::invalid_argument naming a point of `fixed` that is not a generator.
+template <class CDT, class Density, class PointRange>
+std::vector<typename CDT::Vertex_handle> generators_to_redistribute_2(const CDT& cdt,
+                                                                      const Density& rho,
+                                                                      const PointRange& fixed,
+                                                                      bool always = false) {
+  std::vector<typename CDT::Vertex_handle> given = internal::movable_generators(cdt, fixed);
+  if (!given.empty() && !always && follows_density_2(Bounded_voronoi_diagram_2<CDT>(cdt), rho))
+    given.clear();
+  return given;
 }
 
 namespace internal {

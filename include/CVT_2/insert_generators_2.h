@@ -11,6 +11,7 @@
 #include <CVT_2/internal/snap_to_boundary.h>
 #include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/valid_point.h>
+#include <CVT_2/internal/vertices_at.h>
 #include <CVT_2/mark_domain_2.h>
 #include <CVT_2/parameters.h>
 
@@ -330,17 +331,12 @@ namespace internal {
 
 // The free generators of `cdt` (in the domain, no constraint through them) but those at the
 // points `fixed`: the generators an optimizer with fixed_points(fixed) moves.
+// \throws std::invalid_argument naming a point of `fixed` that is not a vertex.
 template <class CDT, class PointRange>
 std::vector<typename CDT::Vertex_handle> movable_generators(const CDT& cdt,
                                                             const PointRange& fixed) {
   Handle_set<typename CDT::Vertex_handle> kept;
-  typename CDT::Face_handle hint;
-  for (const auto& p : fixed) {
-    typename CDT::Locate_type lt;
-    int li;
-    hint = cdt.locate(p, lt, li, hint);
-    if (lt == CDT::VERTEX) kept.insert(hint->vertex(li));
-  }
+  for (const auto v : vertices_at(cdt, fixed, "fixed_points")) kept.insert(v);
   std::vector<typename CDT::Vertex_handle> out;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     if (!cdt.are_there_incident_constraints(v) && has_domain_face(cdt, v) && !kept.contains(v))

@@ -478,15 +478,14 @@ void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& 
 std::size_t redistribute(const Options& o, const Sizing_choice& sizing,
                          const std::vector<Point_2>& fixed, CDT& cdt) {
   if (o.redistribute == "never" || (!sizing.lipschitz && !sizing.refinement)) return 0;
-  const std::vector<CDT::Vertex_handle> given = CVT_2::internal::movable_generators(cdt, fixed);
+  const bool always = o.redistribute == "always";
+  const auto to_replace = [&](const auto& mu) {
+    return CVT_2::generators_to_redistribute_2(cdt, CVT_2::make_sizing_field_density_2<K>(mu),
+                                               fixed, always);
+  };
+  const auto given =
+      sizing.lipschitz ? to_replace(*sizing.lipschitz) : to_replace(*sizing.refinement);
   if (given.empty()) return 0;
-  if (o.redistribute == "auto") {
-    const BVD bvd(cdt);
-    const auto follows = [&bvd](const auto& mu) {
-      return CVT_2::follows_density_2(bvd, CVT_2::make_sizing_field_density_2<K>(mu));
-    };
-    if (sizing.lipschitz ? follows(*sizing.lipschitz) : follows(*sizing.refinement)) return 0;
-  }
   CVT_2::remove_generators_2(cdt, given);
   if (!o.quiet)
     std::cerr << "cvt2: note: the " << given.size() << " generators given "

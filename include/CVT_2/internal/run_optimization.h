@@ -7,6 +7,7 @@
 #include <CVT_2/internal/layout/sort_faces.h>
 #include <CVT_2/internal/parallel/run_chunks.h>
 #include <CVT_2/internal/to_string.h>
+#include <CVT_2/internal/vertices_at.h>
 #include <CVT_2/parameters.h>
 
 #include <algorithm>
@@ -94,25 +95,6 @@ Run_options read_run_options(const NP& np) {
                                 std::to_string(o.lo) + ") <= maximum (" + std::to_string(o.hi) +
                                 ")");
   return o;
-}
-
-// The vertices of `cdt` at `points`, in order. \throws std::invalid_argument naming the
-// option `what` and a point that is not a vertex.
-template <class CDT, class PointRange>
-std::vector<typename CDT::Vertex_handle> vertices_at(const CDT& cdt, const PointRange& points,
-                                                     const std::string& what) {
-  std::vector<typename CDT::Vertex_handle> vertices;
-  typename CDT::Face_handle hint;
-  for (const auto& p : points) {
-    typename CDT::Locate_type lt;
-    int li;
-    hint = cdt.locate(p, lt, li, hint);
-    if (lt != CDT::VERTEX)
-      throw std::invalid_argument(what + ": " + to_string(p) +
-                                  " is not a generator (insert it first)");
-    vertices.push_back(hint->vertex(li));
-  }
-  return vertices;
 }
 
 // The vertices at the points of the named parameter `fixed_points` (none without it; one on a
