@@ -482,7 +482,8 @@ void name_segments(Domain& out, const CDT& cdt, const std::vector<Point_2>& ends
 // resampling did.
 py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
                           std::optional<double> size, std::optional<double> deviation_bound,
-                          double corner_angle, py::handle fixed, double minimum_ring_area) {
+                          double corner_angle, py::handle fixed, double minimum_ring_area,
+                          double spacing_ratio) {
   // The numbers are checked by resample_constraints_2() and cell_size_for_cells_2().
   if (cells.has_value() == size.has_value()) throw py::value_error("give one of cells and size");
   if (d.has_kinds())
@@ -498,13 +499,14 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
   {
     py::gil_scoped_release release;
     const auto cdt = d.triangulation();
-    h = size ? *size : CVT_2::cell_size_for_cells_2(*cdt, *cells);
+    h = size ? *size : CVT_2::cell_size_for_cells_2(*cdt, *cells, spacing_ratio);
     auto runs = std::make_shared<CVT_2::Sliding_runs_2<CDT>>();
     // The input item of each constrained edge, for the chords that replace them.
     const auto edge_items = CVT_2::IO::constrained_edge_items(
         *cdt, CVT_2::IO::Domain_segments<K>{d.segment_ends, d.segment_items});
     std::vector<CVT_2::Resampled_chord<Point_2>> chords;
     auto np = CVT_2::parameters::corner_angle(corner_angle)
+                  .spacing_ratio(spacing_ratio)
                   .fixed_points(fixed_points)
                   .minimum_ring_area(minimum_ring_area)
                   .sliding_runs(runs.get())
@@ -520,6 +522,7 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
                      d.metadata[1],
                      {"boundary", "resample"},
                      {"cell_size", number_text(h)},
+                     {"spacing_ratio", number_text(spacing_ratio)},
                      {"deviation_bound", number_text(deviation_bound ? *deviation_bound : h / 4)},
                      {"max_deviation", number_text(r.max_deviation)}};
     out->data.file.format = out->format = "arrays";
@@ -534,6 +537,7 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
   }
   py::dict report;
   report["size"] = h;
+  report["spacing_ratio"] = spacing_ratio;
   report["deviation_bound"] = deviation_bound ? *deviation_bound : h / 4;
   report["input_vertices"] = r.input_vertices;
   report["output_vertices"] = r.output_vertices;
@@ -609,9 +613,9 @@ std::shared_ptr<Domain> without_conforming_lines(const Domain& d, const std::str
 }
 
 // The number of cells that the size h gives the domain (cells_for_cell_size_2()).
-double domain_cells_for_size(const Domain& d, double h) {
+double domain_cells_for_size(const Domain& d, double h, double spacing_ratio) {
   py::gil_scoped_release release;
-  return CVT_2::cells_for_cell_size_2(*d.triangulation(), h);
+  return CVT_2::cells_for_cell_size_2(*d.triangulation(), h, spacing_ratio);
 }
 
 // The description's own points, numbered in Python after the points a call is given:
@@ -1447,8 +1451,8 @@ PYBIND11_MODULE(_cvt2, m) {
       .def("arrays", &domain_arrays)
       .def("resample", &domain_resample, py::arg("cells"), py::arg("size"),
            py::arg("deviation_bound"), py::arg("corner_angle"), py::arg("fixed_points"),
-           py::arg("minimum_ring_area"))
-      .def("cells_for_size", &domain_cells_for_size, py::arg("size"));
+           py::arg("minimum_ring_area"), py::arg("spacing_ratio"))
+      .def("cells_for_size", &domain_cells_for_size, py::arg("size"), py::arg("spacing_ratio"));
 
   py::class_<Diagram, std::shared_ptr<Diagram>>(m, "Diagram")
       .def_property_readonly("points", [](const Diagram& d) { return to_array(d.points, 2); })

@@ -1018,21 +1018,59 @@ TEST_CASE(
   CHECK(r2.output_vertices == r.output_vertices);
 }
 
+TEST_CASE("the resampled points are spacing_ratio cell sizes apart, two by default", "[resample]") {
+  // A 10 x 1 rectangle whose bottom edge has 1 000 vertices: at h = 0.1, 10 / (s h) chords.
+  CVT_2::IO::Poly_data<Point> poly;
+  std::vector<Point> outer;
+  for (int i = 0; i <= 1000; ++i) outer.emplace_back(i / 100.0, 0);
+  outer.insert(outer.end(), {Point(10, 1), Point(0, 1)});
+  add_ring(poly, outer);
+  const Cdt_ids before = triangulate(poly);
+  const double h = 0.1;
+  const auto bottom = [](const Cdt_ids& t) {
+    std::vector<double> x;
+    for (auto v = t.finite_vertices_begin(); v != t.finite_vertices_end(); ++v)
+      if (v->point().y() == 0) x.push_back(v->point().x());
+    std::sort(x.begin(), x.end());
+    return x;
+  };
+  for (const double s : {0.0, 1.0, 2.0, 3.0}) {  // 0: the default
+    INFO("spacing ratio " << s);
+    Cdt_ids after = before;
+    if (s > 0)
+      CVT_2::resample_constraints_2(after, h, CVT_2::parameters::spacing_ratio(s));
+    else
+      CVT_2::resample_constraints_2(after, h);
+    const std::vector<double> x = bottom(after);
+    const double spacing = (s > 0 ? s : 2) * h;
+    CHECK(double(x.size() - 1) == Approx(10 / spacing).margin(1));
+    for (std::size_t i = 0; i + 1 < x.size(); ++i)
+      CHECK(x[i + 1] - x[i] == Approx(spacing).epsilon(0.1));
+  }
+}
+
 TEST_CASE("a size from a number of cells, and back", "[resample]") {
   Cdt_ids cdt;
   CVT_2::IO::read_domain(data_path("france_mainland.poly"), cdt);
-  for (const std::size_t n : {100, 2000, 50000}) {
-    const double h = CVT_2::cell_size_for_cells_2(cdt, n);
-    CHECK(CVT_2::cells_for_cell_size_2(cdt, h) == Approx(double(n)).epsilon(1e-12));
-  }
-  // The unit square: A / (sqrt(3)/2 h^2) + 4 / (2 h) cells.
+  for (const std::size_t n : {100, 2000, 50000})
+    for (const double s : {1.0, 2.0, 3.0}) {
+      const double h = CVT_2::cell_size_for_cells_2(cdt, n, s);
+      CHECK(CVT_2::cells_for_cell_size_2(cdt, h, s) == Approx(double(n)).epsilon(1e-12));
+    }
+  // The unit square: A / (sqrt(3)/2 h^2) + 4 (2 - s) / (2 s h) cells; at the default s = 2 the
+  // boundary's half cells have an inner cell's area.
   CVT_2::IO::Poly_data<Point> unit;
   add_ring(unit, {{0, 0}, {1, 0}, {1, 1}, {0, 1}});
   Cdt_ids square = triangulate(unit);
   const double h = 0.05;
-  CHECK(CVT_2::cells_for_cell_size_2(square, h) ==
+  CHECK(CVT_2::cells_for_cell_size_2(square, h, 1) ==
         Approx(1 / (std::sqrt(3.0) / 2 * h * h) + 2 / h));
+  CHECK(CVT_2::cells_for_cell_size_2(square, h) == Approx(1 / (std::sqrt(3.0) / 2 * h * h)));
   CHECK_THROWS_AS(CVT_2::cell_size_for_cells_2(square, 0), CVT_2::Domain_error);
+  CHECK_THROWS_AS(CVT_2::cell_size_for_cells_2(square, 10, 0.0), CVT_2::Domain_error);
+  CHECK_THROWS_AS(
+      CVT_2::resample_constraints_2(square, 0.1, CVT_2::parameters::spacing_ratio(-1.0)),
+      CVT_2::Domain_error);
   CHECK_THROWS_AS(CVT_2::resample_constraints_2(square, -1.0), CVT_2::Domain_error);
   CHECK_THROWS_AS(CVT_2::cells_for_cell_size_2(square, 0.0), CVT_2::Domain_error);
   CHECK_THROWS_AS(CVT_2::resample_constraints_2(square, 0.1, CVT_2::parameters::corner_angle(-1.0)),

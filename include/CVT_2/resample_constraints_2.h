@@ -29,6 +29,12 @@
 namespace CVT_2 {
 
 /// \ingroup PkgCvt2Ref
+/// The default spacing of the points that `resample_constraints_2()` puts on the constraints, in
+/// cell sizes: a generator on the domain's boundary has half a cell, which at two cell sizes
+/// from the next has the area of an inner cell.
+inline constexpr double default_spacing_ratio = 2;
+
+/// \ingroup PkgCvt2Ref
 /// What `resample_constraints_2()` did.
 struct Resampling_report {
   std::size_t input_vertices = 0;   ///< vertices on constraints before
@@ -67,10 +73,11 @@ struct Resampled_chord {
 /// corners, where the polyline turns by more than `corner_angle` between the chords to the
 /// points at distance `h` before and after (so that a coastline jagged far below a cell has
 /// none, and a square has four). Between two features, the *run* is replaced by points on it
-/// spaced by about `h` (the chords of a divider walk, evened out so that the last one ends at the
-/// feature; at least three points on a ring). An input vertex is kept too where a chord would
-/// leave the input by more than `deviation_bound`, or cross another constraint, or sweep over a
-/// vertex or generator (topology is kept: no ring disappears, nothing changes side).
+/// spaced by about `spacing_ratio` times `h` (the chords of a divider walk, evened out so that the
+/// last one ends at the feature; at least three points on a ring). An input vertex is kept too
+/// where a chord would leave the input by more than `deviation_bound`, or cross another constraint,
+/// or sweep over a vertex or generator (topology is kept: no ring disappears, nothing changes
+/// side).
 ///
 /// Rebuilds `cdt` with the new points, the chords as constraints, its generators (vertices on
 /// no constraint) and the domain marked as before: each chord's sides inherit the marks of its
@@ -83,6 +90,10 @@ struct Resampled_chord {
 /// \param cdt the triangulation.
 /// \param h the cell size, the spacing of neighbouring generators in a hexagonal tiling.
 /// \param np named parameters:
+///   - `spacing_ratio(s)`: the spacing of the new points along a run, in cell sizes (default 2:
+///     a generator on the domain's boundary has half a cell, which at `2 h` apart has the area of
+///     an inner cell; generators on a line cost more energy than free ones whose cells it clips,
+///     so that 2 also lowers the energy along inner constraints, see the manual);
 ///   - `deviation_bound(d)`: how far a chord may leave the input (default `h / 4`);
 ///   - `corner_angle(a)`: the turn, in degrees, above which a vertex is a corner (default 30);
 ///   - `fixed_points(r)`: a range of points: constrained vertices there are features;
@@ -108,6 +119,11 @@ Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()
   if (!(h > 0) || !std::isfinite(h))
     throw Domain_error("the cell size must be a positive number, not " +
                        internal::number_to_string(h));
+  const double ratio =
+      choose_parameter(get_parameter(np, internal_np::spacing_ratio_t()), default_spacing_ratio);
+  if (!(ratio > 0) || !std::isfinite(ratio))
+    throw Domain_error("the spacing ratio must be a positive number, not " +
+                       internal::number_to_string(ratio));
   const double bound = choose_parameter(get_parameter(np, internal_np::deviation_bound_t()), h / 4);
   if (!(bound >= 0) || !std::isfinite(bound))
     throw Domain_error("the deviation bound must be a non-negative number, not " +
@@ -127,7 +143,8 @@ Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()
   if (!(minimum_ring_area >= 0) || !std::isfinite(minimum_ring_area))
     throw Domain_error("the minimum ring area must be a non-negative number, not " +
                        internal::number_to_string(minimum_ring_area));
-  internal::Run_resampler<CDT> resampler(cdt, h, bound, corner, fixed, minimum_ring_area);
+  internal::Run_resampler<CDT> resampler(cdt, h, ratio * h, bound, corner, fixed,
+                                         minimum_ring_area);
   resampler.resample();
   Resampling_report report;
   report.input_vertices = resampler.input_vertices;
@@ -201,36 +218,45 @@ Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()
 
 /// \ingroup PkgCvt2Ref
 /// The cell size (the spacing `H` of a hexagonal tiling, a cell of area `sqrt(3)/2 H^2`) at which
-/// `cells` cells fill the domain of `cdt` when the constraints are resampled to it: the domain's
-/// area `A` holds `A / (sqrt(3)/2 H^2)` cells, and a generator on the domain's boundary has a
-/// half cell, so that the boundary of length `L` adds `L / (2 H)`; `H` solves
-/// `A / (sqrt(3)/2 H^2) + L / (2 H) = cells`. Inner constraints, with the domain on both sides,
-/// add nothing.
-/// \throws Domain_error if the domain is empty or `cells` is 0.
+/// `cells` cells fill the domain of `cdt` when its constraints are resampled to it with the
+/// spacing ratio `s` (`resample_constraints_2()`, default 2): the domain's area `A` holds
+/// `A / (sqrt(3)/2 H^2)` cells, and a generator on the domain's boundary, `s H` from the next,
+/// has half a cell `s H` long (half a hexagon's depth), so that the boundary of length `L`
+/// adds `L (2 - s) / (2 s H)`: nothing at `s = 2`, `L / (2 H)` at `s = 1`. `H` solves
+/// `A / (sqrt(3)/2 H^2) + L (2 - s) / (2 s H) = cells`. Inner constraints, with the domain on both
+/// sides, add nothing.
+/// \throws Domain_error if the domain is empty, `cells` is 0 or `s` is not a positive number.
 template <class CDT>
-double cell_size_for_cells_2(const CDT& cdt, std::size_t cells) {
+double cell_size_for_cells_2(const CDT& cdt, std::size_t cells, double s = default_spacing_ratio) {
   const double area = internal::Run_resampler<CDT>::domain_area(cdt);
   const double length = internal::Run_resampler<CDT>::boundary_length(cdt);
   if (!(area > 0)) throw Domain_error("the domain is empty: no cell size gives cells in it");
   if (cells == 0) throw Domain_error("a cell size for 0 cells does not exist");
-  // In u = 1/H: (2A/sqrt3) u^2 + (L/2) u - cells = 0, the positive root.
-  const double a = 2 * area / std::sqrt(3.0), b = length / 2, c = -double(cells);
+  if (!(s > 0) || !std::isfinite(s))
+    throw Domain_error("the spacing ratio must be a positive number, not " +
+                       internal::number_to_string(s));
+  // In u = 1/H: (2A/sqrt3) u^2 + L (2 - s) / (2 s) u - cells = 0, the positive root.
+  const double a = 2 * area / std::sqrt(3.0), b = length * (2 - s) / (2 * s), c = -double(cells);
   const double u = 2 * -c / (b + std::sqrt(b * b - 4 * a * c));  // no cancellation
   return 1 / u;
 }
 
 /// \ingroup PkgCvt2Ref
-/// The number of cells that the cell size `h` gives the domain of `cdt`, the inverse of
-/// `cell_size_for_cells_2()`: `A / (sqrt(3)/2 h^2) + L / (2 h)`, not rounded.
-/// \throws Domain_error if `h` is not a positive number.
+/// The number of cells that the cell size `h` gives the domain of `cdt` with the spacing ratio
+/// `s`, the inverse of `cell_size_for_cells_2()`: `A / (sqrt(3)/2 h^2) + L (2 - s) / (2 s h)`,
+/// not rounded.
+/// \throws Domain_error if `h` or `s` is not a positive number.
 template <class CDT>
-double cells_for_cell_size_2(const CDT& cdt, double h) {
+double cells_for_cell_size_2(const CDT& cdt, double h, double s = default_spacing_ratio) {
   if (!(h > 0) || !std::isfinite(h))
     throw Domain_error("the cell size must be a positive number, not " +
                        internal::number_to_string(h));
+  if (!(s > 0) || !std::isfinite(s))
+    throw Domain_error("the spacing ratio must be a positive number, not " +
+                       internal::number_to_string(s));
   const double area = internal::Run_resampler<CDT>::domain_area(cdt);
   const double length = internal::Run_resampler<CDT>::boundary_length(cdt);
-  return area / (std::sqrt(3.0) / 2 * h * h) + length / (2 * h);
+  return area / (std::sqrt(3.0) / 2 * h * h) + length * (2 - s) / (2 * s * h);
 }
 
 }  // namespace CVT_2

@@ -264,14 +264,16 @@ class Domain:
         corner_angle=30.0,
         fixed_points=None,
         minimum_ring_area=0.0,
+        spacing_ratio=2.0,
     ) -> "Domain":
         """A new domain, its polylines resampled to a cell size, so that a finely digitised
         boundary does not give a speck of a cell at each of its vertices (``cvt2 --boundary
         resample``). Each polyline (rings, holes, inner constraints) is cut at its features,
         which stay: junctions, ends of open lines, ``fixed_points``, and corners (a turn of more
         than ``corner_angle`` degrees seen a cell size away on either side); between them its
-        vertices are replaced by points on it about a cell size apart, never more points than
-        it had. An input vertex is kept where a chord would leave the input by more than
+        vertices are replaced by points on it about ``spacing_ratio`` cell sizes apart (default
+        2: a generator on the domain's boundary has half a cell, which then has an inner cell's
+        area; ``cvt2 --boundary-spacing``), never more points than it had. An input vertex is kept where a chord would leave the input by more than
         ``deviation_bound`` (default a quarter of the size) or change the topology (cross a
         line, cut off a point or a generator). Generators and the domain's marks stay. A ring
         (a closed line meeting no other, with no fixed point) enclosing less than
@@ -281,7 +283,8 @@ class Domain:
         - ``size``: the cell size ``H``, the spacing of a hexagonal tiling (a cell of area
           ``sqrt(3)/2 H**2``); or
         - ``cells``: how many cells in all: the size ``H`` that solves
-          ``area / (sqrt(3)/2 H**2) + boundary_length / (2 H) = cells``; then
+          ``area / (sqrt(3)/2 H**2) + boundary_length (2 - s) / (2 s H) = cells`` for the
+          spacing ratio ``s`` (at the default 2, ``area / (sqrt(3)/2 H**2) = cells``); then
           ``random_points(d, cells=cells)`` fills the domain up to that count.
 
         The new domain is described by arrays (:attr:`vertices`, :attr:`segments`,
@@ -300,15 +303,17 @@ class Domain:
             float(corner_angle),
             fixed_points,
             float(minimum_ring_area),
+            float(spacing_ratio),
         )
         d = Domain._wrap(impl)
         d.resampling = report
         return d
 
-    def cells_for_size(self, size) -> float:
-        """How many cells the cell size ``size`` gives this domain once resampled to it:
-        ``area / (sqrt(3)/2 size**2) + boundary_length / (2 size)``, not rounded."""
-        return self._impl.cells_for_size(float(size))
+    def cells_for_size(self, size, spacing_ratio=2.0) -> float:
+        """How many cells the cell size ``size`` gives this domain once resampled to it with
+        ``spacing_ratio`` ``s``: ``area / (sqrt(3)/2 size**2) + boundary_length (2 - s) / (2 s
+        size)``, not rounded."""
+        return self._impl.cells_for_size(float(size), float(spacing_ratio))
 
     def __repr__(self):
         return (

@@ -89,8 +89,18 @@ def test_resample_report_and_arguments(data):
     pinned = d.vertices[100:110]
     fixed = d.resample(size=h, fixed_points=pinned)
     assert all((fixed.vertices == p).all(axis=1).any() for p in pinned)
-    # The count and the size are inverses.
+    # The points are spacing_ratio sizes apart, two by default: a wider spacing, fewer points.
+    one = d.resample(size=h, spacing_ratio=1)
+    assert rep["spacing_ratio"] == 2 and one.resampling["spacing_ratio"] == 1
+    assert one.resampling["output_vertices"] > 1.3 * rep["output_vertices"]
+    with pytest.raises(ValueError, match="spacing ratio must be a positive number"):
+        d.resample(size=h, spacing_ratio=0)
+    # The count and the size are inverses, at any spacing ratio.
     assert d.cells_for_size(d.resample(cells=3000).resampling["size"]) == pytest.approx(3000)
+    assert d.cells_for_size(one.resampling["size"], spacing_ratio=1) == pytest.approx(
+        d.cells_for_size(h, 1))
+    big = d.resample(cells=3000, spacing_ratio=1).resampling["size"]
+    assert d.cells_for_size(big, spacing_ratio=1) == pytest.approx(3000)
     with pytest.raises(TypeError, match="one of cells and size"):
         d.resample()
     with pytest.raises(TypeError, match="one of cells and size"):
@@ -120,6 +130,9 @@ def test_program_size_and_errors(program, data, tmp_path):
     assert "expects 'keep', 'resample' or 'slide'" in fails("--boundary", "glide")
     assert "give one of -n, --cells and --size" in fails("--cells", 100, "-n", 5)
     assert "--deviation-bound needs --boundary resample" in fails("--deviation-bound", 1)
+    assert "--boundary-spacing needs --boundary resample" in fails("--boundary-spacing", 1)
+    assert "--boundary-spacing must be positive" in fails("--boundary", "resample",
+                                                            "--boundary-spacing", 0)
     assert "fewer than the 533 vertices" in fails("--cells", 100)
     # keep says when the domain's vertices add many cells, and names the option.
     p = subprocess.run([program, str(name), "-n", "1000", "--iterations", "1"],

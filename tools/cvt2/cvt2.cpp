@@ -81,6 +81,7 @@ struct Options {
   bool resample = false;              // --boundary resample or slide
   bool slide = false;                 // --boundary slide
   std::optional<double> deviation_bound;
+  std::optional<double> spacing_ratio;  // --boundary-spacing
   double corner_angle = 30;
   double minimum_ring_area = 0;
   std::string points_in;
@@ -138,6 +139,9 @@ void print_help(std::ostream& os) {
         "                         cell size (from --size, --cells or -n), on the input to\n"
         "                         rounding. slide: resample, then the new vertices slide along\n"
         "                         the input during the optimization, features fixed\n"
+        "      --boundary-spacing R  resample: the new points R cell sizes apart (default 2:\n"
+        "                         a generator on the boundary has half a cell, which then has\n"
+        "                         an inner cell's area; fewer generators on lines, less energy)\n"
         "      --deviation-bound D  resample: a chord leaves the input by at most D (default a\n"
         "                         quarter of the cell size)\n"
         "      --corner-angle A   resample: a vertex where the polyline turns by more than A\n"
@@ -289,6 +293,8 @@ const std::map<std::string, Setter>& valued_options() {
        [](Options& o, auto& n, auto& v) { o.corner_angle = parse_non_negative(n, v); }},
       {"--deviation-bound",
        [](Options& o, auto& n, auto& v) { o.deviation_bound = parse_non_negative(n, v); }},
+      {"--boundary-spacing",
+       [](Options& o, auto& n, auto& v) { o.spacing_ratio = parse_positive(n, v); }},
       {"--boundary-tolerance",
        [](Options& o, auto& n, auto& v) { o.boundary_tolerance = parse_non_negative(n, v); }},
       {"--seed", [](Options& o, auto& n, auto& v) { o.seed = parse_count(n, v); }},
@@ -402,6 +408,8 @@ Options parse_command_line(int argc, char* argv[]) {
     throw Usage_error("--bottom must be below --top, not " + o.bottom + " >= " + o.top);
   if (o.deviation_bound && !o.resample)
     throw Usage_error("--deviation-bound needs --boundary resample");
+  if (o.spacing_ratio && !o.resample)
+    throw Usage_error("--boundary-spacing needs --boundary resample");
   if (o.minimum_ring_area > 0 && !o.resample)
     throw Usage_error("--minimum-ring-area needs --boundary resample");
   if (o.boundary_tolerance && o.points_in.empty())
@@ -705,6 +713,12 @@ std::size_t vertices_in_domain(const CDT& cdt) {
   return n;
 }
 
+// --boundary-spacing, or resample_constraints_2()'s default; with keep, 1 (the input's vertices
+// stay; the number of cells that --size asks for as before).
+double spacing_ratio(const Options& o) {
+  return o.resample ? o.spacing_ratio.value_or(CVT_2::default_spacing_ratio) : 1.0;
+}
+
 // --boundary resample (and slide): the constraints resampled to the cell size that --size, --cells
 // or the number of free generators asks for; a note of what changed on standard error.
 void resample(const Options& o, std::size_t free_generators, CDT& cdt,
@@ -712,13 +726,14 @@ void resample(const Options& o, std::size_t free_generators, CDT& cdt,
   const double area = domain_area(cdt);
   const double h =
       o.size    ? *o.size
-      : o.cells ? CVT_2::cell_size_for_cells_2(cdt, *o.cells)
+      : o.cells ? CVT_2::cell_size_for_cells_2(cdt, *o.cells, spacing_ratio(o))
                 : std::sqrt(2 * area /
                             (std::sqrt(3.0) * double(std::max<std::size_t>(free_generators, 1))));
   // The input line of each constrained edge, for the chords that replace them.
   const auto edge_items = CVT_2::IO::constrained_edge_items(cdt, segments ? *segments : Segments());
   std::vector<CVT_2::Resampled_chord<Point_2>> chords;
   const auto np = CVT_2::parameters::corner_angle(o.corner_angle)
+                      .spacing_ratio(spacing_ratio(o))
                       .minimum_ring_area(o.minimum_ring_area)
                       .sliding_runs(&runs)
                       .resampled_chords(&chords);
@@ -734,6 +749,7 @@ void resample(const Options& o, std::size_t free_generators, CDT& cdt,
   if (segments) *segments = CVT_2::IO::resampled_segments<K>(chords, edge_items);
   using CVT_2::internal::number_text;
   metadata.emplace_back("cell_size", number_text(h));
+  metadata.emplace_back("spacing_ratio", number_text(spacing_ratio(o)));
   metadata.emplace_back("deviation_bound",
                         number_text(o.deviation_bound ? *o.deviation_bound : h / 4));
   metadata.emplace_back("max_deviation", number_text(r.max_deviation));
@@ -913,7 +929,8 @@ int run(const Options& o) {
   std::size_t n = default_n;
   if (counted) {
     const double wanted =
-        o.cells ? double(*o.cells) : std::round(CVT_2::cells_for_cell_size_2(cdt, *o.size));
+        o.cells ? double(*o.cells)
+                : std::round(CVT_2::cells_for_cell_size_2(cdt, *o.size, spacing_ratio(o)));
     if (wanted < double(present))
       throw Usage_error(std::string(o.cells ? "--cells" : "--size") + " asks for " +
                         std::to_string(static_cast<long long>(wanted)) + " cells, fewer than the " +

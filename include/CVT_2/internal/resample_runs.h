@@ -55,10 +55,11 @@ class Run_resampler {
   std::size_t rings_dropped = 0, generators_dropped = 0;
   double max_deviation = 0;
 
-  Run_resampler(const CDT& cdt, double h, double bound, double corner_angle,
+  Run_resampler(const CDT& cdt, double h, double spacing, double bound, double corner_angle,
                 const std::vector<Point_2>& fixed, double minimum_ring_area)
       : m_cdt(cdt),
         m_h(h),
+        m_spacing(spacing),
         m_bound(bound),
         m_corner(corner_angle),
         m_minimum_ring_area(minimum_ring_area) {
@@ -280,8 +281,11 @@ class Run_resampler {
       std::sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) {
         return a.first > b.first || (a.first == b.first && a.second < b.second);
       });
+      // A turn is measured between the points h away, so the vertices within h of a corner (or
+      // of a feature at the chain's end) see its turn too: of corners closer than h, the
+      // sharpest stays.
       const auto near = [&](const Point_2& a, const Point_2& b) {
-        return CGAL::to_double(CGAL::squared_distance(a, b)) < m_h * m_h / 4;
+        return CGAL::to_double(CGAL::squared_distance(a, b)) < m_h * m_h;
       };
       for (const auto& [t, v] : candidates) {
         if (!ring && (near(p[v], p.front()) || near(p[v], p.back()))) continue;
@@ -400,7 +404,7 @@ class Run_resampler {
       for (std::size_t i = 0; i <= m; ++i) r.nodes.push_back({i, 0, r.p[i]});
     };
     if (r.keep()) return all_vertices();
-    const double raw = divide(r, m_h, nullptr);
+    const double raw = divide(r, m_spacing, nullptr);
     std::size_t k = std::max<std::size_t>(closed ? 3 : 1, std::size_t(std::llround(raw)));
     // No more points than the input has: generators on a long straight edge cost more energy
     // than the free ones its clipped cells have (measured: the square at 2 000 cells, 1.057
@@ -408,9 +412,9 @@ class Run_resampler {
     if (k >= m) return all_vertices();
     r.nodes = {{0, 0, r.p[0]}};
     if (k > 1) {
-      double lo = m_h / 2, hi = m_h * 2;
-      while (divide(r, lo, nullptr) < double(k) && lo > m_h * 1e-6) lo /= 2;
-      while (divide(r, hi, nullptr) > double(k) && hi < m_h * 1e6) hi *= 2;
+      double lo = m_spacing / 2, hi = m_spacing * 2;
+      while (divide(r, lo, nullptr) < double(k) && lo > m_spacing * 1e-6) lo /= 2;
+      while (divide(r, hi, nullptr) > double(k) && hi < m_spacing * 1e6) hi *= 2;
       if (divide(r, lo, nullptr) < double(k)) return all_vertices();
       for (int i = 0; i < 50; ++i) {
         const double mid = (lo + hi) / 2;
@@ -640,7 +644,8 @@ class Run_resampler {
   }
 
   const CDT& m_cdt;
-  double m_h, m_bound, m_corner, m_minimum_ring_area;
+  // the cell size (corners are measured at its scale), the nodes' spacing along a run
+  double m_h, m_spacing, m_bound, m_corner, m_minimum_ring_area;
   std::vector<Run> m_runs;
   std::vector<std::vector<Point_2>> m_dropped;  // the rings below the minimum area
   std::vector<Point_2> m_points;
