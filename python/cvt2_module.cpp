@@ -483,7 +483,8 @@ void name_segments(Domain& out, const CDT& cdt, const std::vector<Point_2>& ends
 py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
                           std::optional<double> size, std::optional<double> deviation_bound,
                           double corner_angle, py::handle fixed, double minimum_ring_area,
-                          double spacing_ratio) {
+                          std::optional<double> spacing) {
+  const double spacing_ratio = spacing.value_or(CVT_2::default_spacing_ratio);
   // The numbers are checked by resample_constraints_2() and cell_size_for_cells_2().
   if (cells.has_value() == size.has_value()) throw py::value_error("give one of cells and size");
   if (d.has_kinds())
@@ -613,9 +614,10 @@ std::shared_ptr<Domain> without_conforming_lines(const Domain& d, const std::str
 }
 
 // The number of cells that the size h gives the domain (cells_for_cell_size_2()).
-double domain_cells_for_size(const Domain& d, double h, double spacing_ratio) {
+double domain_cells_for_size(const Domain& d, double h, std::optional<double> spacing_ratio) {
   py::gil_scoped_release release;
-  return CVT_2::cells_for_cell_size_2(*d.triangulation(), h, spacing_ratio);
+  return CVT_2::cells_for_cell_size_2(*d.triangulation(), h,
+                                      spacing_ratio.value_or(CVT_2::default_spacing_ratio));
 }
 
 // The description's own points, numbered in Python after the points a call is given:

@@ -1049,6 +1049,20 @@ TEST_CASE("the resampled points are spacing_ratio cell sizes apart, two by defau
   }
 }
 
+TEST_CASE("resampling ends where a chord is its input segment and still meets another line",
+          "[resample]") {
+  // The world's 5 004 vertices at 14 degrees apart with a bound of 0.88: a chord that the
+  // topology pass had reduced to its input segment kept conflicting, and the passes never ended.
+  Cdt_ids before;
+  CVT_2::IO::read_domain(data_path("world_land_110m.wkt"), before);
+  const double h = 14.081024241025908, bound = 0.8800640150641192;
+  Cdt_ids after = before;
+  const auto r = CVT_2::resample_constraints_2(
+      after, h, CVT_2::parameters::spacing_ratio(1.0).deviation_bound(bound));
+  check_resampling(before, after, h, bound, r);
+  CHECK(r.kept_for_topology > 0);
+}
+
 TEST_CASE("a size from a number of cells, and back", "[resample]") {
   Cdt_ids cdt;
   CVT_2::IO::read_domain(data_path("france_mainland.poly"), cdt);

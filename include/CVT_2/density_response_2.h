@@ -6,6 +6,7 @@
 
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/Concepts/DensityFunction_2.h>
+#include <CVT_2/insert_generators_2.h>
 #include <CVT_2/internal/density_evaluation.h>
 
 #include <CGAL/Kernel/global_functions_2.h>
@@ -103,13 +104,16 @@ bool follows_density_2(const Diagram& bvd, const Density& rho) {
 /// \ingroup PkgCvt2Ref
 /// The generators that points drawn from the density `rho` should replace before an optimization
 /// under it: the free generators of `cdt` (in the domain, on no constraint) but those at the
-/// points `fixed`, the ones an optimizer with `fixed_points(fixed)` moves. With `always`, all of
-/// them; otherwise all of them if they do not `follows_density_2()`, none if they do.
+/// points `fixed`, the ones an optimizer with `fixed_points(fixed)` moves: all of them with
+/// `always`, else all of them unless they follow rho (`follows_density_2()`), and then none.
 /// `remove_generators_2()` removes them and `random_points_in_domain_2()` draws as many from rho:
 /// `cvt2 --redistribute` and the Python module's `optimize(redistribute=)` do so.
-/// \tparam CDT a constrained Delaunay triangulation whose faces model `BvdFaceBase_2`, its domain
-/// marked and its generators inserted.
+/// \tparam CDT a constrained Delaunay triangulation whose faces model `BvdFaceBase_2`.
 /// \tparam Density a model of `DensityFunction_2`.
+/// \param cdt the triangulation, its domain marked and its generators inserted.
+/// \param rho the density (not evaluated with `always`).
+/// \param fixed a range of points, each a generator of `cdt`, that stay.
+/// \param always whether to replace them whether they follow rho or not.
 /// \throws std::invalid_argument naming a point of `fixed` that is not a generator.
 template <class CDT, class Density, class PointRange>
 std::vector<typename CDT::Vertex_handle> generators_to_redistribute_2(const CDT& cdt,

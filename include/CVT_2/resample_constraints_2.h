@@ -237,7 +237,8 @@ double cell_size_for_cells_2(const CDT& cdt, std::size_t cells, double s = defau
                        internal::number_to_string(s));
   // In u = 1/H: (2A/sqrt3) u^2 + L (2 - s) / (2 s) u - cells = 0, the positive root.
   const double a = 2 * area / std::sqrt(3.0), b = length * (2 - s) / (2 * s), c = -double(cells);
-  const double u = 2 * -c / (b + std::sqrt(b * b - 4 * a * c));  // no cancellation
+  const double root = std::sqrt(b * b - 4 * a * c);                      // > |b|: c < 0 < a
+  const double u = b >= 0 ? 2 * -c / (b + root) : (root - b) / (2 * a);  // no cancellation
   return 1 / u;
 }
 

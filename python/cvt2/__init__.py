@@ -264,7 +264,7 @@ class Domain:
         corner_angle=30.0,
         fixed_points=None,
         minimum_ring_area=0.0,
-        spacing_ratio=2.0,
+        spacing_ratio=None,
     ) -> "Domain":
         """A new domain, its polylines resampled to a cell size, so that a finely digitised
         boundary does not give a speck of a cell at each of its vertices (``cvt2 --boundary
@@ -273,8 +273,9 @@ class Domain:
         than ``corner_angle`` degrees seen a cell size away on either side); between them its
         vertices are replaced by points on it about ``spacing_ratio`` cell sizes apart (default
         2: a generator on the domain's boundary has half a cell, which then has an inner cell's
-        area; ``cvt2 --boundary-spacing``), never more points than it had. An input vertex is kept where a chord would leave the input by more than
-        ``deviation_bound`` (default a quarter of the size) or change the topology (cross a
+        area; ``cvt2 --boundary-spacing``), never more points than it had. An input vertex is
+        kept where a chord would leave the input by more than ``deviation_bound`` (default a
+        quarter of the size) or change the topology (cross a
         line, cut off a point or a generator). Generators and the domain's marks stay. A ring
         (a closed line meeting no other, with no fixed point) enclosing less than
         ``minimum_ring_area`` goes, with the lines and generators inside it: an island is
@@ -288,7 +289,8 @@ class Domain:
           ``random_points(d, cells=cells)`` fills the domain up to that count.
 
         The new domain is described by arrays (:attr:`vertices`, :attr:`segments`,
-        :attr:`holes`); its ``resampling`` is a dict: ``size``, ``input_vertices``,
+        :attr:`holes`); its ``resampling`` is a dict: ``size``, ``spacing_ratio``,
+        ``deviation_bound``, ``input_vertices``,
         ``output_vertices``, ``features``, ``corners``, ``runs``, ``kept_for_deviation``,
         ``kept_for_topology``, ``rings_dropped``, ``generators_dropped``, ``max_deviation``
         (the largest distance from an input vertex to
@@ -303,17 +305,18 @@ class Domain:
             float(corner_angle),
             fixed_points,
             float(minimum_ring_area),
-            float(spacing_ratio),
+            None if spacing_ratio is None else float(spacing_ratio),
         )
         d = Domain._wrap(impl)
         d.resampling = report
         return d
 
-    def cells_for_size(self, size, spacing_ratio=2.0) -> float:
+    def cells_for_size(self, size, spacing_ratio=None) -> float:
         """How many cells the cell size ``size`` gives this domain once resampled to it with
-        ``spacing_ratio`` ``s``: ``area / (sqrt(3)/2 size**2) + boundary_length (2 - s) / (2 s
-        size)``, not rounded."""
-        return self._impl.cells_for_size(float(size), float(spacing_ratio))
+        ``spacing_ratio`` ``s`` (default 2): ``area / (sqrt(3)/2 size**2) + boundary_length (2 -
+        s) / (2 s size)``, not rounded."""
+        return self._impl.cells_for_size(
+            float(size), None if spacing_ratio is None else float(spacing_ratio))
 
     def __repr__(self):
         return (

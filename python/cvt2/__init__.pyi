@@ -61,9 +61,9 @@ class Domain:
         corner_angle: float = ...,
         fixed_points: Optional[_Points] = ...,
         minimum_ring_area: float = ...,
-        spacing_ratio: float = ...,
+        spacing_ratio: Optional[float] = ...,
     ) -> Domain: ...
-    def cells_for_size(self, size: float, spacing_ratio: float = ...) -> float: ...
+    def cells_for_size(self, size: float, spacing_ratio: Optional[float] = ...) -> float: ...
 
 def random_points(
     domain: Domain,

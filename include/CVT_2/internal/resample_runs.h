@@ -1,7 +1,8 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // Run_resampler: the constraint graph of a marked triangulation cut into runs between features,
-// each run replaced by points on it about a cell size apart, and more input vertices kept where
-// a chord would leave the input too far or change the topology; resample_constraints_2()'s work.
+// each run replaced by points on it about spacing_ratio cell sizes apart, and more input vertices
+// kept where a chord would leave the input too far or change the topology;
+// resample_constraints_2()'s work.
 #ifndef CVT_2_INTERNAL_RESAMPLE_RUNS_H
 #define CVT_2_INTERNAL_RESAMPLE_RUNS_H
 
@@ -508,7 +509,8 @@ class Run_resampler {
 
   // Finds the chords that cross an input segment or another chord, or sweep over a vertex or a
   // generator, and keeps an input vertex in each (or the input segment it lies on, if it has
-  // none). Returns whether there was one.
+  // none). Returns whether that changed a run: a chord that is its input segment already and
+  // still conflicts (input lines that touch) stays as the input has it, and the passes end.
   bool keep_topology() {
     struct Ref {
       std::size_t run, j;
@@ -575,13 +577,14 @@ class Run_resampler {
     // From the last chord of each run to the first, so that the earlier indices stay valid; a
     // run whose nodes a fallback rebuilt waits for the next pass, which finds its chords again.
     std::size_t rebuilt = m_runs.size();
+    bool changed = false;
     for (auto it = bad.rbegin(); it != bad.rend(); ++it) {
       if (it->first == rebuilt) continue;
       Run& r = m_runs[it->first];
       const std::size_t j = it->second;
       std::size_t v = 0;
       if (farthest(r, j, &v) >= 0) {
-        keep_vertex(r, j, v), ++kept_for_topology;
+        keep_vertex(r, j, v), ++kept_for_topology, changed = true;
         continue;
       }
       // No input vertex between: the chord lies on one input segment; take that segment.
@@ -595,11 +598,14 @@ class Run_resampler {
         if (at_or_after == nodes.end() || at_or_after->pos() != double(v))
           nodes.insert(at_or_after, Node{v, 0, r.p[v]});
       }
+      const auto same_node = [](const Node& x, const Node& y) { return x.pos() == y.pos(); };
+      if (std::equal(nodes.begin(), nodes.end(), r.nodes.begin(), r.nodes.end(), same_node))
+        continue;  // the chord is the input segment: nothing to keep
       r.nodes = std::move(nodes);
       rebuilt = it->first;
-      ++kept_for_topology;
+      ++kept_for_topology, changed = true;
     }
-    return !bad.empty();
+    return changed;
   }
 
   // --- the result -------------------------------------------------------------------------------

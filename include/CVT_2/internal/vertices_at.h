@@ -1,6 +1,5 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// vertices_at: the vertices of a triangulation at given points, or an error naming the first
-// point that is not one (the optimizers' fixed_points and region, the redistribution's).
+// vertices_at: the vertices of a triangulation at given points, or an error naming the first.
 #ifndef CVT_2_INTERNAL_VERTICES_AT_H
 #define CVT_2_INTERNAL_VERTICES_AT_H
 
