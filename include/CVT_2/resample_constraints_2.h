@@ -34,6 +34,16 @@ namespace CVT_2 {
 /// from the next has the area of an inner cell.
 inline constexpr double default_spacing_ratio = 2;
 
+namespace internal {
+
+// The check of a spacing ratio, for resample_constraints_2() and the cell size's functions.
+inline void check_spacing_ratio(double s) {
+  if (!(s > 0) || !std::isfinite(s))
+    throw Domain_error("the spacing ratio must be a positive number, not " + number_to_string(s));
+}
+
+}  // namespace internal
+
 /// \ingroup PkgCvt2Ref
 /// What `resample_constraints_2()` did.
 struct Resampling_report {
@@ -121,9 +131,7 @@ Resampling_report resample_constraints_2(CDT& cdt, double h, const NP& np = NP()
                        internal::number_to_string(h));
   const double ratio =
       choose_parameter(get_parameter(np, internal_np::spacing_ratio_t()), default_spacing_ratio);
-  if (!(ratio > 0) || !std::isfinite(ratio))
-    throw Domain_error("the spacing ratio must be a positive number, not " +
-                       internal::number_to_string(ratio));
+  internal::check_spacing_ratio(ratio);
   const double bound = choose_parameter(get_parameter(np, internal_np::deviation_bound_t()), h / 4);
   if (!(bound >= 0) || !std::isfinite(bound))
     throw Domain_error("the deviation bound must be a non-negative number, not " +
@@ -232,9 +240,7 @@ double cell_size_for_cells_2(const CDT& cdt, std::size_t cells, double s = defau
   const double length = internal::Run_resampler<CDT>::boundary_length(cdt);
   if (!(area > 0)) throw Domain_error("the domain is empty: no cell size gives cells in it");
   if (cells == 0) throw Domain_error("a cell size for 0 cells does not exist");
-  if (!(s > 0) || !std::isfinite(s))
-    throw Domain_error("the spacing ratio must be a positive number, not " +
-                       internal::number_to_string(s));
+  internal::check_spacing_ratio(s);
   // In u = 1/H: (2A/sqrt3) u^2 + L (2 - s) / (2 s) u - cells = 0, the positive root.
   const double a = 2 * area / std::sqrt(3.0), b = length * (2 - s) / (2 * s), c = -double(cells);
   const double root = std::sqrt(b * b - 4 * a * c);                      // > |b|: c < 0 < a
@@ -252,9 +258,7 @@ double cells_for_cell_size_2(const CDT& cdt, double h, double s = default_spacin
   if (!(h > 0) || !std::isfinite(h))
     throw Domain_error("the cell size must be a positive number, not " +
                        internal::number_to_string(h));
-  if (!(s > 0) || !std::isfinite(s))
-    throw Domain_error("the spacing ratio must be a positive number, not " +
-                       internal::number_to_string(s));
+  internal::check_spacing_ratio(s);
   const double area = internal::Run_resampler<CDT>::domain_area(cdt);
   const double length = internal::Run_resampler<CDT>::boundary_length(cdt);
   return area / (std::sqrt(3.0) / 2 * h * h) + length * (2 - s) / (2 * s * h);
