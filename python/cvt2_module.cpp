@@ -738,8 +738,8 @@ std::size_t checked_count(std::int64_t n, const char* name) {
 }
 
 Array random_points(const Domain& domain, std::int64_t n, std::uint64_t seed,
-                    const py::object& density, double lipschitz_k,
-                    const py::object& boundary_size) {
+                    const py::object& density, double lipschitz_k, const py::object& boundary_size,
+                    bool by_region) {
   const std::size_t count = checked_count(n, "n");
   const Density_choice choice(density, lipschitz_k, boundary_size);
   std::vector<Point_2> points;
@@ -748,7 +748,7 @@ Array random_points(const Domain& domain, std::int64_t n, std::uint64_t seed,
     const CVT_2::internal::Interrupt_scope interruptible{Signal_check()};
     const auto cdt = domain.triangulation();
     const std::optional<Sizing> sizing = choice.sizing(*cdt);
-    const auto np = CVT_2::parameters::random_seed(seed);
+    const auto np = CVT_2::parameters::random_seed(seed).by_region(by_region);
     if (count == 0) {
     } else if (choice.kind == Density_choice::LIPSCHITZ) {
       points = CVT_2::random_points_in_domain_2(*cdt, count, np.sizing_field(std::cref(*sizing)));
@@ -1585,7 +1585,8 @@ PYBIND11_MODULE(_cvt2, m) {
       },
       py::arg("line"), py::arg("spacing"));
   m.def("random_points", &random_points, py::arg("domain"), py::arg("n"), py::arg("seed"),
-        py::arg("density"), py::arg("lipschitz_k"), py::arg("boundary_size"));
+        py::arg("density"), py::arg("lipschitz_k"), py::arg("boundary_size"),
+        py::arg("by_region") = false);
   m.def("optimize", &optimize, py::arg("domain"), py::arg("points"), py::arg("algorithm"),
         py::arg("density"), py::arg("move_ratio"), py::arg("max_iterations"), py::arg("time_limit"),
         py::arg("threads"), py::arg("callback"), py::arg("lipschitz_k"), py::arg("boundary_size"),

@@ -16,8 +16,10 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <limits>
 #include <map>
@@ -309,6 +311,71 @@ TEST_CASE("bad densities and parameters give errors that say what and where", "[
                                    .maximum_quadrature_resolution(std::size_t(10))),
                     Catch::Contains("quadrature resolutions"));
   check_invariants(d.cdt, marks);  // the errors left a valid triangulation
+}
+
+// Three unit squares apart (islands): one with 40 vertices on its boundary (0.1 apart), one
+// with its 4 corners, one with 400 (0.01 apart, under half a cell size: a finely digitised
+// line, whose vertices' cells are slivers).
+TEST_CASE("random points by region: each region's count is its mass less its generators' cells",
+          "[lloyd]") {
+  CVT_2::IO::Poly_data<Point> poly;
+  const auto square = [](double x0, int per_side) {
+    std::vector<Point> ring;
+    const Point corner[4] = {{x0, 0}, {x0 + 1, 0}, {x0 + 1, 1}, {x0, 1}};
+    for (int c = 0; c < 4; ++c)
+      for (int i = 0; i < per_side; ++i) {
+        const double t = double(i) / per_side;
+        const Point &a = corner[c], &b = corner[(c + 1) % 4];
+        ring.emplace_back(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()));
+      }
+    return ring;
+  };
+  add_ring(poly, square(0, 10));
+  add_ring(poly, square(2, 1));
+  add_ring(poly, square(4, 100));
+  const Cdt cdt = triangulate(poly);
+  const std::size_t n = 100;
+  // The documented rule: a cell's mass m = area / cells, 0.35 m a boundary vertex, less in
+  // proportion where its edges are under half a cell size.
+  const double m = 3.0 / double(n + 444), size = std::sqrt(m / (std::sqrt(3.0) / 2));
+  const double weight[3] = {1 - 40 * 0.35 * m, 1 - 4 * 0.35 * m,
+                            1 - 400 * 0.35 * m * (0.01 / (size / 2))};
+  const double sum = weight[0] + weight[1] + weight[2];
+  std::set<std::array<int, 3>> independent;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const auto draw = [&](bool by_region) {
+      const auto points = CVT_2::random_points_in_domain_2(
+          cdt, n, CVT_2::parameters::random_seed(seed).by_region(by_region));
+      REQUIRE(points.size() == n);
+      std::array<int, 3> count{0, 0, 0};
+      for (const Point& p : points) {
+        REQUIRE(CVT_2::is_in_domain_2(cdt, p));
+        ++count[std::size_t(p.x() / 2)];
+      }
+      return count;
+    };
+    const std::array<int, 3> count = draw(true);
+    for (int r = 0; r < 3; ++r) CHECK(std::abs(count[r] - double(n) * weight[r] / sum) < 1);
+    independent.insert(draw(false));
+    CHECK(CVT_2::random_points_in_domain_2(cdt, n, CVT_2::parameters::random_seed(seed)) ==
+          CVT_2::random_points_in_domain_2(cdt, n,
+                                           CVT_2::parameters::random_seed(seed).by_region(false)));
+  }
+  CHECK(independent.size() > 1);  // independent draws: counts that vary with the seed
+  // A generator inside a region holds a whole cell there: 30 in the corners' square.
+  Cdt with = cdt;
+  std::vector<Point> inside;
+  for (int i = 0; i < 30; ++i) inside.emplace_back(2.1 + 0.16 * (i / 5), 0.1 + 0.2 * (i % 5));
+  CVT_2::insert_generators_2(with, inside);
+  const double m2 = 3.0 / double(n + 474), size2 = std::sqrt(m2 / (std::sqrt(3.0) / 2));
+  const double weight2[3] = {1 - 40 * 0.35 * m2, 1 - 4 * 0.35 * m2 - 30 * m2,
+                             1 - 400 * 0.35 * m2 * (0.01 / (size2 / 2))};
+  std::array<int, 3> count{0, 0, 0};
+  for (const Point& p :
+       CVT_2::random_points_in_domain_2(with, n, CVT_2::parameters::random_seed(1).by_region(true)))
+    ++count[std::size_t(p.x() / 2)];
+  for (int r = 0; r < 3; ++r)
+    CHECK(std::abs(count[r] - double(n) * weight2[r] / (weight2[0] + weight2[1] + weight2[2])) < 1);
 }
 
 TEST_CASE("random initial generators are reproducible, inside, and follow the density", "[lloyd]") {

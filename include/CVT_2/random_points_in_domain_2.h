@@ -15,9 +15,11 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <random>
 #include <string>
 #include <type_traits>
+#include <unordered_map>
 #include <vector>
 
 namespace CVT_2 {
@@ -132,6 +134,153 @@ const Point_2& nearest_vertex(const std::array<Point_2, 3>& t, const Point_2& p)
   return CGAL::compare_distance_to_point(p, ab, t[2]) == CGAL::LARGER ? t[2] : ab;
 }
 
+// The domain's faces, in the order of domain_triangles(), and the region of each: the faces
+// joined across edges that are not constraints. Returns the number of regions.
+template <class CDT>
+std::size_t domain_regions(const CDT& cdt, std::vector<typename CDT::Face_handle>& faces,
+                           std::vector<std::size_t>& face_region) {
+  using Face_handle = typename CDT::Face_handle;
+  std::unordered_map<Face_handle, std::size_t> index;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (f->is_inside_domain()) index.emplace(f, faces.size()), faces.push_back(f);
+  const std::size_t none = faces.size();
+  face_region.assign(faces.size(), none);
+  std::size_t regions = 0;
+  std::vector<std::size_t> stack;
+  for (std::size_t seed = 0; seed < faces.size(); ++seed) {
+    if (face_region[seed] != none) continue;
+    face_region[seed] = regions;
+    stack.assign(1, seed);
+    while (!stack.empty()) {
+      const Face_handle f = faces[stack.back()];
+      stack.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        if (cdt.is_constrained(typename CDT::Edge(f, i))) continue;
+        const auto it = index.find(f->neighbor(i));
+        if (it == index.end() || face_region[it->second] != none) continue;
+        face_region[it->second] = regions;
+        stack.push_back(it->second);
+      }
+    }
+    ++regions;
+  }
+  return regions;
+}
+
+// The free points' shares of the regions that the constraints separate (by_region): region r
+// gets `n` times its mass less its generators' share, over the sum, rounded to whole points
+// by largest remainder. A generator inside a region holds one cell's mass m there (the
+// domain's mass over its cells, these n included). A generator on a constraint holds, in each
+// wedge of a region that meets it, `constrained_vertex_share` of m; less where its two
+// constrained edges there are on average shorter than half a cell size (a finely digitised
+// line, whose vertices' cells are slivers): that times their mean length over half the size.
+// `face_region[f]` is the region of face f of `faces` (the domain's), `mass[f]` its mass.
+//
+// The share was measured: cvt2 --cells 2000 --boundary slide on Kentucky's 120 counties,
+// normalized energy at the stop, mean of seeds 1 to 6: 1.1328 with 0.3, 1.1318 with 0.35,
+// 1.1322 with 0.4, 1.1335 with 0.45; seeds 1 to 3: 1.143 by the regions' masses alone (0),
+// 1.146 with 0.55; seed 1 with independent draws, 1.220. The world's islands gain up to 0.55.
+inline constexpr double constrained_vertex_share = 0.35;
+
+template <class CDT>
+std::vector<std::size_t> region_quotas(const CDT& cdt, std::size_t n,
+                                       const std::vector<typename CDT::Face_handle>& faces,
+                                       const std::vector<std::size_t>& face_region,
+                                       std::size_t regions, const std::vector<double>& mass,
+                                       const Domain_triangles<typename CDT::Point_2>& domain) {
+  using Face_handle = typename CDT::Face_handle;
+  std::unordered_map<Face_handle, std::size_t> index;
+  index.reserve(faces.size());
+  for (std::size_t f = 0; f < faces.size(); ++f) index.emplace(faces[f], f);
+  std::vector<double> weight(regions, 0.0);
+  double total = 0;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    weight[face_region[f]] += mass[f], total += mass[f];
+  // the domain's face at v, if any: v is a generator of the domain
+  const auto face_at = [&](const auto v) {
+    auto fc = cdt.incident_faces(v), done = fc;
+    do
+      if (const auto it = index.find(fc); it != index.end()) return it->second;
+    while (++fc != done);
+    return faces.size();
+  };
+  std::size_t cells = n;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    if (face_at(v) < faces.size()) ++cells;
+  const double m = total / double(cells);
+  std::vector<Face_handle> around;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    poll_interrupt_sometimes();
+    around.clear();
+    auto fc = cdt.incident_faces(v), done = fc;
+    do around.push_back(fc);
+    while (++fc != done);
+    const std::size_t k = around.size();
+    // The edge between around[t] and around[t + 1]: whether a constraint, and its length.
+    std::vector<char> cut(k);
+    std::vector<double> length(k);
+    for (std::size_t t = 0; t < k; ++t) {
+      const Face_handle f = around[t], g = around[(t + 1) % k];
+      const int j = f->index(g);
+      cut[t] = cdt.is_constrained(typename CDT::Edge(f, j));
+      const auto& a = f->vertex(CDT::ccw(j))->point();
+      const auto& b = f->vertex(CDT::cw(j))->point();
+      length[t] = std::hypot(domain.dx(a, b), domain.dy(a, b));
+    }
+    const auto first_cut = std::find(cut.begin(), cut.end(), char(1));
+    if (first_cut == cut.end()) {  // a generator inside a region: a whole cell
+      if (const std::size_t f = face_at(v); f < faces.size()) weight[face_region[f]] -= m;
+      continue;
+    }
+    // The wedges between consecutive constraints around v.
+    const std::size_t t0 = std::size_t(first_cut - cut.begin());
+    std::size_t last_cut = t0, region = regions;
+    double wedge_mass = 0, wedge_area = 0;
+    for (std::size_t s = 1; s <= k; ++s) {
+      const std::size_t t = (t0 + s) % k;
+      if (const auto it = index.find(around[t]); it != index.end()) {
+        region = face_region[it->second];
+        wedge_mass += mass[it->second];
+        wedge_area += domain.area(domain.triangles[it->second]);
+      }
+      if (!cut[t]) continue;
+      if (region < regions && wedge_mass > 0) {
+        // the cell size at which the wedge's mass per area makes cells of mass m
+        const double size = std::sqrt(m * wedge_area / wedge_mass / (std::sqrt(3.0) / 2));
+        const double edges = (length[last_cut] + length[t]) / 2;
+        weight[region] -= constrained_vertex_share * m * std::min(1.0, edges / (size / 2));
+      }
+      last_cut = t;
+      region = regions;
+      wedge_mass = wedge_area = 0;
+    }
+  }
+  double sum = 0;
+  for (double& w : weight) sum += (w = std::max(w, 0.0));
+  if (!(sum > 0)) {  // generators fill every region already: by mass alone
+    std::fill(weight.begin(), weight.end(), 0.0);
+    for (std::size_t f = 0; f < faces.size(); ++f) weight[face_region[f]] += mass[f];
+    sum = total;
+  }
+  std::vector<std::size_t> quota(regions, 0);
+  std::vector<double> remainder(regions);
+  std::size_t dealt = 0;
+  for (std::size_t r = 0; r < regions; ++r) {
+    const double q = double(n) * (weight[r] / sum);
+    quota[r] = std::size_t(q);
+    remainder[r] = q - double(quota[r]);
+    dealt += quota[r];
+  }
+  std::vector<std::size_t> order(regions);
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return remainder[a] > remainder[b]; });
+  for (std::size_t i = 0; dealt < n; i = (i + 1) % regions) ++quota[order[i]], ++dealt;
+  for (std::size_t i = 0; dealt > n; i = (i + 1) % regions)
+    if (quota[order[regions - 1 - i]] > 0) --quota[order[regions - 1 - i]], --dealt;
+  return quota;
+}
+
 }  // namespace internal
 
 /// \ingroup PkgCvt2Ref
@@ -147,7 +296,13 @@ const Point_2& nearest_vertex(const std::array<Point_2, 3>& t, const Point_2& p)
 /// \param np optional: `density(rho)` (default uniform; a density with the batch member of
 ///        `DensityFunction_2` is called once, for all sub-triangles), or `sizing_field(mu)`
 ///        for the density \f$1/\mu^2\f$ that starts Lloyd iteration under `sizing_field(mu)`
-///        (\f$\rho = 1/\mu^4\f$) close to its result; `random_seed(s)` (default 0).
+///        (\f$\rho = 1/\mu^4\f$) close to its result; `random_seed(s)` (default 0);
+///        `by_region(true)`: the points dealt to the regions that constraints separate (a
+///        county network's counties, islands), each its share of the mass less the cells of
+///        the generators already on its boundary or inside it, then drawn in each; the regions
+///        then have the number of cells their area asks for, which the optimization cannot
+///        change (no generator crosses a constraint): independent draws leave a region of k
+///        cells about sqrt(k) cells off (default false: independent draws, as before).
 /// \throws Domain_error if the domain is empty; the density's own errors.
 template <class CDT, class NP = No_named_parameters>
 std::vector<typename CDT::Point_2> random_points_in_domain_2(
@@ -212,6 +367,33 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   } else {
     for (const Triangle& t : domain.triangles) cumulative.push_back(total += domain.area(t));
   }
+  // The pieces in the order they are drawn from, and the ranges of that order with their
+  // quotas of points: all at once, or region by region.
+  std::vector<std::size_t> piece(pieces->size());
+  std::iota(piece.begin(), piece.end(), std::size_t(0));
+  std::vector<std::size_t> range_end{pieces->size()}, quota{n};
+  if (choose_parameter(get_parameter(np, by_region_t()), false)) {
+    std::vector<typename CDT::Face_handle> faces;
+    std::vector<std::size_t> region;
+    const std::size_t regions = internal::domain_regions(cdt, faces, region);
+    const auto face = [&](std::size_t k) { return face_of.empty() ? k : face_of[k]; };
+    std::vector<double> piece_mass(piece.size()), face_mass(faces.size(), 0.0);
+    for (std::size_t k = 0; k < piece.size(); ++k) {
+      piece_mass[k] = cumulative[k] - (k > 0 ? cumulative[k - 1] : 0.0);
+      face_mass[face(k)] += piece_mass[k];
+    }
+    quota = internal::region_quotas(cdt, n, faces, region, regions, face_mass, domain);
+    std::stable_sort(piece.begin(), piece.end(), [&](std::size_t a, std::size_t b) {
+      return region[face(a)] < region[face(b)];
+    });
+    range_end.assign(regions, 0);
+    total = 0;
+    for (std::size_t i = 0; i < piece.size(); ++i) {
+      cumulative[i] = total += piece_mass[piece[i]];
+      ++range_end[region[face(piece[i])]];
+    }
+    std::partial_sum(range_end.begin(), range_end.end(), range_end.begin());
+  }
   // Rounding may put a point drawn by a boundary edge just outside the domain face its piece
   // was cut from (a piece's cut points are rounded too): it is drawn again. A needle thinner
   // than double precision can resolve (a vertex at 1e124 among vertices at 10) holds almost no
@@ -219,19 +401,27 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   // face nearest to the draw is taken instead.
   std::vector<Point_2> points;
   points.reserve(n);
-  std::size_t misses = 0;
-  while (points.size() < n) {
-    internal::poll_interrupt_sometimes();
-    const double u = internal::uniform01(rng) * total;
-    const std::size_t k = std::min<std::size_t>(
-        std::upper_bound(cumulative.begin(), cumulative.end(), u) - cumulative.begin(),
-        pieces->size() - 1);
-    const Triangle& face = face_of.empty() ? (*pieces)[k] : domain.triangles[face_of[k]];
-    const Point_2 p = internal::random_point_in_triangle((*pieces)[k], rng);
-    const bool inside = internal::in_closed_triangle(face, p);
-    if (!inside && ++misses < 64) continue;
-    points.push_back(inside ? p : internal::nearest_vertex(face, p));
-    misses = 0;
+  for (std::size_t r = 0; r < quota.size(); ++r) {
+    const std::size_t begin = r > 0 ? range_end[r - 1] : 0, end = range_end[r];
+    const double low = begin > 0 ? cumulative[begin - 1] : 0.0, mass = cumulative[end - 1] - low;
+    std::size_t misses = 0;
+    for (std::size_t drawn = 0; drawn < quota[r];) {
+      internal::poll_interrupt_sometimes();
+      const double u = low + internal::uniform01(rng) * mass;
+      const std::size_t i =
+          std::min<std::size_t>(std::upper_bound(cumulative.begin() + std::ptrdiff_t(begin),
+                                                 cumulative.begin() + std::ptrdiff_t(end), u) -
+                                    cumulative.begin(),
+                                end - 1);
+      const std::size_t k = piece[i];
+      const Triangle& face = face_of.empty() ? (*pieces)[k] : domain.triangles[face_of[k]];
+      const Point_2 p = internal::random_point_in_triangle((*pieces)[k], rng);
+      const bool inside = internal::in_closed_triangle(face, p);
+      if (!inside && ++misses < 64) continue;
+      points.push_back(inside ? p : internal::nearest_vertex(face, p));
+      misses = 0;
+      ++drawn;
+    }
   }
   return points;
 }

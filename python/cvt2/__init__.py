@@ -346,13 +346,17 @@ def random_points(
     domain, n=None, seed=1, density=None, *, lipschitz_k=0.1, boundary_size=None, cells=None
 ):
     """``n`` random points in ``domain``: the same bits as ``cvt2 DOMAIN -n N --seed S`` draws
-    them (with ``--density lipschitz`` for ``density="lipschitz"``).
+    them (``cvt2 --cells`` for ``cells=``; with ``--density lipschitz`` for
+    ``density="lipschitz"``).
 
     - ``domain``: a :class:`Domain`;
     - ``n``: how many points (an integer >= 0); or
     - ``cells``: how many cells in all, the domain's own vertices' included: ``n`` is
       ``cells - domain.own_cells`` (``cvt2 --cells``; with :meth:`Domain.resample`, cells of
-      the size asked for);
+      the size asked for). The points are then dealt to the regions that constraints
+      separate (counties, islands) by their area less the cells of the generators on their
+      boundary, and drawn in each, so that each region has the cells its area asks for: no
+      generator crosses a constraint, so the optimization cannot move cells between regions;
     - ``seed``: the seed (an integer, 0 to 2**64 - 1): the same seed gives the same points on
       every platform;
     - ``density``: the density the points will be optimized under (:func:`optimize`'s
@@ -376,7 +380,13 @@ def random_points(
         n = cells - domain.own_cells
     n = _count(n, "n")
     return _cvt2.random_points(
-        _impl(domain), n, _seed(seed), density, float(lipschitz_k), boundary_size
+        _impl(domain),
+        n,
+        _seed(seed),
+        density,
+        float(lipschitz_k),
+        boundary_size,
+        by_region=cells is not None,
     )
 
 

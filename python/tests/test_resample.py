@@ -72,6 +72,44 @@ def test_module_matches_the_program_bit_for_bit(program, data, tmp_path, mode):
         cvt2.optimize(d, points, boundary="slid")
 
 
+def test_cells_deal_the_points_to_the_regions_by_area(data):
+    # Kentucky's counties are regions no generator leaves: with cells=, each gets the points its
+    # area asks for, whatever the seed; with n=, independent draws leave a county of k cells
+    # about sqrt(k) off, which the optimization cannot mend.
+    from shapely.geometry import LineString
+    from shapely.ops import polygonize
+    from shapely.vectorized import contains
+    d = cvt2.Domain.from_file(data / "us_kentucky_counties.geojson").resample(cells=2000)
+    n = 2000 - d.own_cells
+    v = np.asarray(d.vertices)
+    regions = list(polygonize([LineString(v[list(s)]) for s in np.asarray(d.segments)]))
+    assert sum(r.area for r in regions) == pytest.approx(d.area, rel=1e-9)  # 121: an exclave
+
+    def counts(points):
+        inside = np.array([contains(r, points[:, 0], points[:, 1]) for r in regions])
+        assert (inside.sum(axis=0) == 1).all()  # each point in one county
+        return inside.sum(axis=1)
+
+    dealt = [counts(cvt2.random_points(d, cells=2000, seed=s)) for s in (1, 2)]
+    drawn = [counts(cvt2.random_points(d, n, seed=s)) for s in (1, 2)]
+    assert dealt[0].sum() == n
+    assert np.array_equal(dealt[0], dealt[1])
+    assert not np.array_equal(drawn[0], drawn[1])
+    # A county's count: its area less a share for each vertex on its boundary, to rounding.
+    vertices = [len(r.exterior.coords) - 1 + sum(len(i.coords) - 1 for i in r.interiors)
+                for r in regions]
+    x = np.c_[[r.area for r in regions], vertices]
+
+    def residual(c):
+        coefficients = np.linalg.lstsq(x, c, rcond=None)[0]
+        return c - x @ coefficients, coefficients
+
+    r, (per_area, per_vertex) = residual(dealt[0])
+    assert np.abs(r).max() < 1 and per_area > 0 and per_vertex < 0
+    for c in drawn:
+        assert residual(c)[0].std() > 2  # about sqrt(k) off
+
+
 def test_resample_report_and_arguments(data):
     d = cvt2.Domain.from_file(data / "france_mainland.poly")
     h = 0.2

@@ -131,7 +131,10 @@ void print_help(std::ostream& os) {
         "      --seed S           seed of the random generators (default 1)\n"
         "      --cells N          N cells in all, the domain's vertices included (instead of -n)\n"
         "      --size H           cells of spacing H: H apart in a hexagonal tiling, a cell of\n"
-        "                         area sqrt(3)/2 H^2 (instead of -n)\n"
+        "                         area sqrt(3)/2 H^2 (instead of -n). With --cells and --size\n"
+        "                         each region between constraints (a county, an island) gets\n"
+        "                         the points its area asks for, less its boundary's cells:\n"
+        "                         no generator crosses a constraint, so these counts stay\n"
         "Boundary:\n"
         "      --boundary B       keep | resample | slide (default keep). keep: every vertex of\n"
         "                         DOMAIN is a generator. resample: the polylines are cut at\n"
@@ -472,9 +475,11 @@ void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& 
                       " GB; this machine has " +
                       std::to_string(static_cast<long long>(memory / 1e9)) + " GB");
   const auto draw = [&](std::size_t count, std::uint64_t seed) {
-    return sizing.apply(CVT_2::parameters::random_seed(seed), [&](const auto& np) {
-      return CVT_2::random_points_in_domain_2(cdt, count, np);
-    });
+    // --cells and --size: cells of one size, region by region; -n: n points, as before
+    const bool by_region = o.cells.has_value() || o.size.has_value();
+    return sizing.apply(
+        CVT_2::parameters::random_seed(seed).by_region(by_region),
+        [&](const auto& np) { return CVT_2::random_points_in_domain_2(cdt, count, np); });
   };
   // (points in the circles of conforming lines drawn again, with the next seeds)
   CVT_2::insert_generators_2(cdt, CVT_2::draw_outside_disks_2(keep_out, n, o.seed, draw));
