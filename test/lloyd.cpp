@@ -356,6 +356,15 @@ TEST_CASE("random points by region: each region's count is its mass less its gen
     };
     const std::array<int, 3> count = draw(true);
     for (int r = 0; r < 3; ++r) CHECK(std::abs(count[r] - double(n) * weight[r] / sum) < 1);
+    // A constant density: the triangles cut into pieces, weighed and sorted by region, the same
+    // quotas.
+    std::array<int, 3> weighed{0, 0, 0};
+    for (const Point& p : CVT_2::random_points_in_domain_2(
+             cdt, n, CVT_2::parameters::random_seed(seed).by_region(true).density([](const Point&) {
+               return 5.0;
+             })))
+      ++weighed[std::size_t(p.x() / 2)];
+    CHECK(weighed == count);
     independent.insert(draw(false));
     CHECK(CVT_2::random_points_in_domain_2(cdt, n, CVT_2::parameters::random_seed(seed)) ==
           CVT_2::random_points_in_domain_2(cdt, n,
@@ -376,6 +385,20 @@ TEST_CASE("random points by region: each region's count is its mass less its gen
     ++count[std::size_t(p.x() / 2)];
   for (int r = 0; r < 3; ++r)
     CHECK(std::abs(count[r] - double(n) * weight2[r] / (weight2[0] + weight2[1] + weight2[2])) < 1);
+  // In each region the points follow the density (in the triangulation with generators,
+  // whose faces are not in the regions' order): 1 to 9 across the first square, 9 to 1
+  // across the second, 1 on the third
+  const auto rho = [](const Point& p) {
+    const double t = p.x() - 2 * std::floor(p.x() / 2);
+    return p.x() < 2 ? 1 + 8 * t : p.x() < 4 ? 9 - 8 * t : 1.0;
+  };
+  double half[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+  for (const Point& p : CVT_2::random_points_in_domain_2(
+           with, 30000, CVT_2::parameters::random_seed(1).by_region(true).density(rho)))
+    half[std::size_t(p.x() / 2)][p.x() - 2 * std::floor(p.x() / 2) > 0.5] += 1;
+  CHECK(half[0][1] / half[0][0] == Approx(3.5 / 1.5).epsilon(0.05));  // the halves' masses
+  CHECK(half[1][1] / half[1][0] == Approx(1.5 / 3.5).epsilon(0.05));
+  CHECK(half[2][1] / half[2][0] == Approx(1.0).epsilon(0.05));
 }
 
 TEST_CASE("random initial generators are reproducible, inside, and follow the density", "[lloyd]") {

@@ -134,13 +134,14 @@ const Point_2& nearest_vertex(const std::array<Point_2, 3>& t, const Point_2& p)
   return CGAL::compare_distance_to_point(p, ab, t[2]) == CGAL::LARGER ? t[2] : ab;
 }
 
-// The domain's faces, in the order of domain_triangles(), and the region of each: the faces
-// joined across edges that are not constraints. Returns the number of regions.
+// The domain's faces, in the order of domain_triangles(), their positions there, and the region
+// of each: the faces joined across edges that are not constraints. Returns the number of
+// regions.
 template <class CDT>
 std::size_t domain_regions(const CDT& cdt, std::vector<typename CDT::Face_handle>& faces,
+                           std::unordered_map<typename CDT::Face_handle, std::size_t>& index,
                            std::vector<std::size_t>& face_region) {
   using Face_handle = typename CDT::Face_handle;
-  std::unordered_map<Face_handle, std::size_t> index;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
     if (f->is_inside_domain()) index.emplace(f, faces.size()), faces.push_back(f);
   const std::size_t none = faces.size();
@@ -171,9 +172,10 @@ std::size_t domain_regions(const CDT& cdt, std::vector<typename CDT::Face_handle
 // gets `n` times its mass less its generators' share, over the sum, rounded to whole points
 // by largest remainder. A generator inside a region holds one cell's mass m there (the
 // domain's mass over its cells, these n included). A generator on a constraint holds, in each
-// wedge of a region that meets it, `constrained_vertex_share` of m; less where its two
-// constrained edges there are on average shorter than half a cell size (a finely digitised
-// line, whose vertices' cells are slivers): that times their mean length over half the size.
+// wedge of a region that meets it, `constrained_vertex_share` of m, whatever the wedge's angle
+// (a crack's tip, one wedge all round, too); less where its two constrained edges there are on
+// average shorter than half a cell size (a finely digitised line, whose vertices' cells are
+// slivers): that times their mean length over half the size.
 // `face_region[f]` is the region of face f of `faces` (the domain's), `mass[f]` its mass.
 //
 // The share was measured: cvt2 --cells 2000 --boundary slide on Kentucky's 120 counties,
@@ -183,19 +185,19 @@ std::size_t domain_regions(const CDT& cdt, std::vector<typename CDT::Face_handle
 inline constexpr double constrained_vertex_share = 0.35;
 
 template <class CDT>
-std::vector<std::size_t> region_quotas(const CDT& cdt, std::size_t n,
-                                       const std::vector<typename CDT::Face_handle>& faces,
-                                       const std::vector<std::size_t>& face_region,
-                                       std::size_t regions, const std::vector<double>& mass,
-                                       const Domain_triangles<typename CDT::Point_2>& domain) {
+std::vector<std::size_t> region_quotas(
+    const CDT& cdt, std::size_t n, const std::vector<typename CDT::Face_handle>& faces,
+    const std::unordered_map<typename CDT::Face_handle, std::size_t>& index,
+    const std::vector<std::size_t>& face_region, std::size_t regions, std::vector<double> mass,
+    const Domain_triangles<typename CDT::Point_2>& domain) {
   using Face_handle = typename CDT::Face_handle;
-  std::unordered_map<Face_handle, std::size_t> index;
-  index.reserve(faces.size());
-  for (std::size_t f = 0; f < faces.size(); ++f) index.emplace(faces[f], f);
+  double total = std::accumulate(mass.begin(), mass.end(), 0.0);
+  if (!(total > 0 && total < HUGE_VAL)) {  // a density of no mass or an infinite one: by area
+    for (std::size_t f = 0; f < faces.size(); ++f) mass[f] = domain.area(domain.triangles[f]);
+    total = std::accumulate(mass.begin(), mass.end(), 0.0);
+  }
   std::vector<double> weight(regions, 0.0);
-  double total = 0;
-  for (std::size_t f = 0; f < faces.size(); ++f)
-    weight[face_region[f]] += mass[f], total += mass[f];
+  for (std::size_t f = 0; f < faces.size(); ++f) weight[face_region[f]] += mass[f];
   // the domain's face at v, if any: v is a generator of the domain
   const auto face_at = [&](const auto v) {
     auto fc = cdt.incident_faces(v), done = fc;
@@ -209,6 +211,8 @@ std::vector<std::size_t> region_quotas(const CDT& cdt, std::size_t n,
     if (face_at(v) < faces.size()) ++cells;
   const double m = total / double(cells);
   std::vector<Face_handle> around;
+  std::vector<char> cut;
+  std::vector<double> length;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
     poll_interrupt_sometimes();
     around.clear();
@@ -217,12 +221,13 @@ std::vector<std::size_t> region_quotas(const CDT& cdt, std::size_t n,
     while (++fc != done);
     const std::size_t k = around.size();
     // The edge between around[t] and around[t + 1]: whether a constraint, and its length.
-    std::vector<char> cut(k);
-    std::vector<double> length(k);
+    cut.assign(k, 0);
+    length.assign(k, 0.0);
     for (std::size_t t = 0; t < k; ++t) {
       const Face_handle f = around[t], g = around[(t + 1) % k];
       const int j = f->index(g);
       cut[t] = cdt.is_constrained(typename CDT::Edge(f, j));
+      if (!cut[t]) continue;  // (an edge to the infinite vertex is never a constraint)
       const auto& a = f->vertex(CDT::ccw(j))->point();
       const auto& b = f->vertex(CDT::cw(j))->point();
       length[t] = std::hypot(domain.dx(a, b), domain.dy(a, b));
@@ -285,7 +290,8 @@ std::vector<std::size_t> region_quotas(const CDT& cdt, std::size_t n,
 
 /// \ingroup PkgCvt2Ref
 /// `n` random points in the domain of `cdt`, reproducible from a seed: a triangle is drawn
-/// with probability proportional to its mass, then a point uniformly in it. Uniform: the
+/// with probability proportional to its mass (among its region's, with `by_region`), then a
+/// point uniformly in it. Uniform: the
 /// domain faces, by area, exactly. With a density: the domain faces cut by longest-edge
 /// bisection into about `max(n, 10000)` triangles of equal area, each weighted by
 /// \f$\int\rho\f$ (midpoint rule), so the sample follows \f$\rho\f$ at a resolution finer
@@ -299,7 +305,8 @@ std::vector<std::size_t> region_quotas(const CDT& cdt, std::size_t n,
 ///        (\f$\rho = 1/\mu^4\f$) close to its result; `random_seed(s)` (default 0);
 ///        `by_region(true)`: the points dealt to the regions that constraints separate (a
 ///        county network's counties, islands), each its share of the mass less the cells of
-///        the generators already on its boundary or inside it, then drawn in each; the regions
+///        the generators already on its boundary or inside it (by area where the mass is 0
+///        or infinite), then drawn in each; the regions
 ///        then have the number of cells their area asks for, which the optimization cannot
 ///        change (no generator crosses a constraint): independent draws leave a region of k
 ///        cells about sqrt(k) cells off (default false: independent draws, as before).
@@ -374,15 +381,16 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   std::vector<std::size_t> range_end{pieces->size()}, quota{n};
   if (choose_parameter(get_parameter(np, by_region_t()), false)) {
     std::vector<typename CDT::Face_handle> faces;
+    std::unordered_map<typename CDT::Face_handle, std::size_t> index;
     std::vector<std::size_t> region;
-    const std::size_t regions = internal::domain_regions(cdt, faces, region);
+    const std::size_t regions = internal::domain_regions(cdt, faces, index, region);
     const auto face = [&](std::size_t k) { return face_of.empty() ? k : face_of[k]; };
     std::vector<double> piece_mass(piece.size()), face_mass(faces.size(), 0.0);
     for (std::size_t k = 0; k < piece.size(); ++k) {
       piece_mass[k] = cumulative[k] - (k > 0 ? cumulative[k - 1] : 0.0);
       face_mass[face(k)] += piece_mass[k];
     }
-    quota = internal::region_quotas(cdt, n, faces, region, regions, face_mass, domain);
+    quota = internal::region_quotas(cdt, n, faces, index, region, regions, face_mass, domain);
     std::stable_sort(piece.begin(), piece.end(), [&](std::size_t a, std::size_t b) {
       return region[face(a)] < region[face(b)];
     });

@@ -354,9 +354,11 @@ def random_points(
     - ``cells``: how many cells in all, the domain's own vertices' included: ``n`` is
       ``cells - domain.own_cells`` (``cvt2 --cells``; with :meth:`Domain.resample`, cells of
       the size asked for). The points are then dealt to the regions that constraints
-      separate (counties, islands) by their area less the cells of the generators on their
-      boundary, and drawn in each, so that each region has the cells its area asks for: no
-      generator crosses a constraint, so the optimization cannot move cells between regions;
+      separate (counties, islands) by their area (their mass, with a density) less the cells
+      of the generators on their boundary and in them, and drawn in each, so that each region
+      has the cells its area asks for: no generator crosses a constraint, so the optimization
+      cannot move cells between regions (before December 2026, ``cells=`` drew them
+      independently, as ``n=`` does);
     - ``seed``: the seed (an integer, 0 to 2**64 - 1): the same seed gives the same points on
       every platform;
     - ``density``: the density the points will be optimized under (:func:`optimize`'s

@@ -133,8 +133,10 @@ void print_help(std::ostream& os) {
         "      --size H           cells of spacing H: H apart in a hexagonal tiling, a cell of\n"
         "                         area sqrt(3)/2 H^2 (instead of -n). With --cells and --size\n"
         "                         each region between constraints (a county, an island) gets\n"
-        "                         the points its area asks for, less its boundary's cells:\n"
+        "                         the points its area (its mass, with a density) asks for,\n"
+        "                         less the cells of the generators on its boundary and in it:\n"
         "                         no generator crosses a constraint, so these counts stay\n"
+        "                         as drawn\n"
         "Boundary:\n"
         "      --boundary B       keep | resample | slide (default keep). keep: every vertex of\n"
         "                         DOMAIN is a generator. resample: the polylines are cut at\n"
@@ -475,8 +477,10 @@ void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& 
                       " GB; this machine has " +
                       std::to_string(static_cast<long long>(memory / 1e9)) + " GB");
   const auto draw = [&](std::size_t count, std::uint64_t seed) {
-    // --cells and --size: cells of one size, region by region; -n: n points, as before
-    const bool by_region = o.cells.has_value() || o.size.has_value();
+    // --cells and --size: cells of one size, region by region; -n: n points, as before. The
+    // points drawn again for those that fell in the circles of conforming lines, a few, are
+    // drawn independently: dealt, they would all go to the regions of largest remainder.
+    const bool by_region = (o.cells.has_value() || o.size.has_value()) && seed == o.seed;
     return sizing.apply(
         CVT_2::parameters::random_seed(seed).by_region(by_region),
         [&](const auto& np) { return CVT_2::random_points_in_domain_2(cdt, count, np); });
