@@ -411,6 +411,8 @@ def optimize(
     constraints=None,
     redistribute="auto",
     seed=1,
+    cells=None,
+    size=None,
 ) -> "OptimizeResult":
     """Moves ``points`` to a centroidal Voronoi tessellation of ``domain``: each free generator
     to the centroid of its bounded Voronoi cell (under the density), again and again. The same
@@ -422,7 +424,8 @@ def optimize(
     - ``points``: float array (n, 2), the initial free generators (:func:`random_points`, say),
       in the domain (its boundary included: a point on a constraint becomes constrained; one
       outside by no more than ``boundary_tolerance`` goes onto the boundary, see
-      :func:`bounded_voronoi`);
+      :func:`bounded_voronoi`); or None with ``cells`` or ``size``: drawn as
+      ``random_points(domain, cells=..., seed=seed)`` draws them;
     - ``algorithm``: ``"lbfgs"`` (L-BFGS on the CVT energy; fewer evaluations) or ``"lloyd"``;
     - ``density``: None (uniform, integrated exactly), ``"lipschitz"`` (the automatic sizing
       of the paper's Section 4: cell size ``lipschitz_k`` * distance to the boundary +
@@ -473,12 +476,32 @@ def optimize(
       from which the iteration would stop with every move ratio small, far from the optimum),
       ``True`` always, ``False`` never (``cvt2 --redistribute auto|always|never``). The result's
       ``redistributed`` says whether it did, and its ``input_index`` is then -1 for them;
-    - ``seed``: the seed of those points (an integer, 0 to 2**64 - 1).
+    - ``seed``: the seed of those points (an integer, 0 to 2**64 - 1);
+    - ``cells`` or ``size``: how many cells in all (``cvt2 --cells``), or their size ``H`` (a
+      hexagon of area ``sqrt(3)/2 H**2``, ``cvt2 --size``): with ``boundary`` ``"resample"`` or
+      ``"slide"``, a domain not made by :meth:`Domain.resample` is first resampled to that size
+      (``domain.resample(cells=cells, size=size)``); with ``points`` None, the free generators
+      are drawn (``random_points`` with ``cells`` and ``seed``; ``size`` gives
+      ``round(domain.cells_for_size(size))`` cells). ``optimize(d, None, boundary="slide",
+      cells=N, seed=S)`` gives the bits of ``cvt2 D --boundary slide --cells N --seed S``.
 
     Ctrl-C raises KeyboardInterrupt. Returns an :class:`OptimizeResult`.
     """
     if threads is None:
         threads = 0
+    if cells is not None or size is not None:
+        if cells is not None and size is not None:
+            raise TypeError("give one of cells and size")
+        if boundary in ("resample", "slide") and domain.resampling is None:
+            domain = domain.resample(cells=cells, size=size)
+        if size is not None:  # as cvt2: a domain not resampled keeps its vertices (ratio 1)
+            ratio = domain.resampling["spacing_ratio"] if domain.resampling else 1.0
+            cells = round(domain.cells_for_size(float(size), spacing_ratio=ratio))
+        if points is None:
+            points = random_points(domain, cells=cells, seed=seed, density=density,
+                                   lipschitz_k=lipschitz_k, boundary_size=boundary_size)
+    elif points is None:
+        raise TypeError("points is None: give points, or cells or size to draw them")
     result = _cvt2.optimize(
         _impl(domain),
         points,

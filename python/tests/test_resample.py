@@ -110,6 +110,25 @@ def test_cells_deal_the_points_to_the_regions_by_area(data):
         assert residual(c)[0].std() > 2  # about sqrt(k) off
 
 
+@pytest.mark.parametrize("mode", ["resample", "slide"])
+@pytest.mark.parametrize("ask", [("cells", 800), ("size", 0.05)])
+def test_optimize_resamples_and_draws_as_the_program(program, data, tmp_path, mode, ask):
+    # optimize(d, None, boundary=..., cells= or size=): the domain resampled, the points drawn,
+    # the program's bits; the result's domain is the resampled (or slid) one.
+    name = "us_massachusetts_counties.wkt"
+    option, value = ask
+    _, expected, _ = run_program(program, data / name, tmp_path, "--boundary", mode,
+                                 f"--{option}", value, "--seed", 5)
+    r = cvt2.optimize(cvt2.Domain.from_file(data / name), None, boundary=mode, seed=5,
+                      **{option: value})
+    assert np.array_equal(r.points, expected[:, :2])
+    assert r.domain.resampling is not None or mode == "slide"
+    with pytest.raises(TypeError, match="one of cells and size"):
+        cvt2.optimize(r.domain, None, cells=800, size=0.05)
+    with pytest.raises(TypeError, match="points is None"):
+        cvt2.optimize(r.domain, None)
+
+
 def test_resample_report_and_arguments(data):
     d = cvt2.Domain.from_file(data / "france_mainland.poly")
     h = 0.2
