@@ -500,8 +500,6 @@ def optimize(
         if points is None:
             points = random_points(domain, cells=cells, seed=seed, density=density,
                                    lipschitz_k=lipschitz_k, boundary_size=boundary_size)
-    elif points is None:
-        raise TypeError("points is None: give points, or cells or size to draw them")
     result = _cvt2.optimize(
         _impl(domain),
         points,
