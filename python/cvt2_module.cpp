@@ -16,6 +16,7 @@
 #include <CVT_2/IO/write_vtu.h>
 #include <CVT_2/IO/write_wkb.h>
 #include <CVT_2/Simulation_grid_2.h>
+#include <CVT_2/Sliding_runs_2.h>
 #include <CVT_2/conforming_sites_2.h>
 #include <CVT_2/density_response_2.h>
 #include <CVT_2/exceptions.h>
@@ -559,9 +560,9 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
 // lines where they are now, as Triangle's arrays, so that the diagram's ridges and the writers
 // name them, the runs as they are (to slide again), the largest deviation in the metadata; its
 // generators are the optimization's.
-std::shared_ptr<Domain> slid_domain(
-    const Domain& d, const CDT& cdt, const CVT_2::Sliding_runs_2<CDT>& runs,
-    const std::vector<std::pair<CDT::Vertex_handle, Point_2>>& constrained) {
+std::shared_ptr<Domain> slid_domain(const Domain& d, const CDT& cdt,
+                                    const CVT_2::Sliding_runs_2<CDT>& runs,
+                                    const CVT_2::Slid_vertices_2<CDT>& slid) {
   auto out = std::make_shared<Domain>();
   out->data.description = CVT_2::IO::domain_poly_data(cdt, "<arrays>", false);
   out->data.file.source = d.data.file.source;
@@ -574,13 +575,10 @@ std::shared_ptr<Domain> slid_domain(
   }
   out->runs = std::make_shared<const CVT_2::Sliding_runs_2<CDT>>(runs);
   out->finish();
-  // Each line named as before the slide: d's segments, their ends where their vertices slid
-  // (`constrained`: each constrained vertex and where it was), walked in the slid triangulation.
-  std::map<Point_2, Point_2> now;
-  for (const auto& [v, p] : constrained) now.emplace(p, v->point());
+  // Each line named as before the slide: d's segments, their ends where their vertices slid,
+  // walked in the slid triangulation.
   std::vector<Point_2> ends = d.segment_ends;
-  for (Point_2& p : ends)
-    if (const auto it = now.find(p); it != now.end()) p = it->second;
+  slid.follow(ends);
   name_segments(*out, cdt, ends, d.segment_items);
   return out;
 }
@@ -1360,10 +1358,8 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
       return algorithm == "lbfgs" ? CVT_2::lbfgs_optimize_2(*cdt, parameters)
                                   : CVT_2::lloyd_optimize_2(*cdt, parameters);
     };
-    std::vector<std::pair<CDT::Vertex_handle, Point_2>> constrained;  // where they were
-    if (slide)
-      for (auto v = cdt->finite_vertices_begin(); v != cdt->finite_vertices_end(); ++v)
-        if (cdt->are_there_incident_constraints(v)) constrained.emplace_back(v, v->point());
+    std::optional<CVT_2::Slid_vertices_2<CDT>> slid;  // where they were
+    if (slide) slid.emplace(*cdt);
     if (choice.kind == Density_choice::LIPSCHITZ)
       out->result = run(np.sizing_field(*sizing));
     else if (choice.kind == Density_choice::CALLABLE)
@@ -1386,7 +1382,7 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
           CVT_2::density_response_2(bvd, Python_density{choice.function, false});
     const std::string note = CVT_2::internal::density_response_note(out->density_response);
     if (!note.empty()) out->notes.push_back(note);
-    if (slide) out->domain = slid_domain(*domain, *cdt, *runs, constrained);
+    if (slide) out->domain = slid_domain(*domain, *cdt, *runs, *slid);
     out->cdt = std::move(cdt);
   }
   // The final state, which the callback has not seen unless it stopped the run there.

@@ -1,6 +1,7 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // Sliding_runs_2: the runs of resampled constraints, along whose input polylines their vertices
-// slide while an optimizer moves the free generators (`--boundary slide`).
+// slide while an optimizer moves the free generators (`--boundary slide`); Slid_vertices_2:
+// where they were, for lines named by their ends.
 #ifndef CVT_2_SLIDING_RUNS_2_H
 #define CVT_2_SLIDING_RUNS_2_H
 
@@ -16,6 +17,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -320,6 +322,34 @@ class Sliding_runs_2 {
   std::unordered_map<Vertex_handle, std::size_t> m_slider_of;
   double m_bound = std::numeric_limits<double>::infinity();
   std::vector<internal::Flip_candidate<CDT>> m_stack;
+};
+
+/// \ingroup PkgCvt2Ref
+/// Where the vertices on constraints of a triangulation were, taken before an optimization with
+/// `sliding_runs()`: after it, `follow()` moves each point where such a vertex was to where the
+/// vertex is now. Lines known by their ends (the input's segments, which name the chords:
+/// `IO::constrained_edge_items()`) then meet the slid triangulation's vertices.
+template <class CDT>
+class Slid_vertices_2 {
+ public:
+  using Point_2 = typename CDT::Point_2;  ///< point type
+
+  /// every vertex of `cdt` on a constraint, and where it is
+  explicit Slid_vertices_2(const CDT& cdt) {
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      if (cdt.are_there_incident_constraints(v)) m_was.emplace_back(v, v->point());
+  }
+  /// Replaces each point of `points` where a vertex was by where it is (the vertices must still
+  /// be in the triangulation); the others stay.
+  void follow(std::vector<Point_2>& points) const {
+    std::map<Point_2, Point_2> now;
+    for (const auto& [v, p] : m_was) now.emplace(p, v->point());
+    for (Point_2& p : points)
+      if (const auto it = now.find(p); it != now.end()) p = it->second;
+  }
+
+ private:
+  std::vector<std::pair<typename CDT::Vertex_handle, Point_2>> m_was;
 };
 
 }  // namespace CVT_2

@@ -778,13 +778,10 @@ void resample(const Options& o, std::size_t free_generators, CDT& cdt,
 // those still strictly inside), the largest deviation from the input in the metadata, and a
 // note of it.
 void slid_domain(const Options& o, const CDT& cdt, const CVT_2::Sliding_runs_2<CDT>& runs,
-                 const std::vector<std::pair<CDT::Vertex_handle, Point_2>>& constrained,
-                 Segments& segments, CDT& domain_alone, CVT_2::IO::Metadata& metadata) {
+                 const CVT_2::Slid_vertices_2<CDT>& slid, Segments& segments, CDT& domain_alone,
+                 CVT_2::IO::Metadata& metadata) {
   const auto lines = CVT_2::IO::domain_poly_data(cdt, "<triangulation>", false);
-  std::map<Point_2, Point_2> slid;  // where each constrained vertex was -> where it is
-  for (const auto& [v, p] : constrained) slid.emplace(p, v->point());
-  for (Point_2& p : segments.ends)
-    if (const auto it = slid.find(p); it != slid.end()) p = it->second;
+  slid.follow(segments.ends);
   for (auto& [key, value] : metadata)  // the resampling's bound the chords that did not slide
     if (key == "max_deviation")
       value = CVT_2::internal::number_text(std::max(std::stod(value), runs.max_deviation()));
@@ -959,13 +956,11 @@ int run(const Options& o) {
   n += redistribute(o, sizing, fixed, cdt);
   insert_random_points(n, o, sizing, cdt, disks);
   // --boundary slide: where each constrained vertex was, to follow the named lines' ends
-  std::vector<std::pair<CDT::Vertex_handle, Point_2>> constrained;
-  if (o.slide)
-    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-      if (cdt.are_there_incident_constraints(v)) constrained.emplace_back(v, v->point());
+  std::optional<CVT_2::Slid_vertices_2<CDT>> slid;
+  if (o.slide) slid.emplace(cdt);
   const CVT_2::Optimization_result r =
       optimize(cdt, o, sizing, fixed, disks, o.slide ? &runs : nullptr);
-  if (o.slide) slid_domain(o, cdt, runs, constrained, segments, domain_alone, metadata);
+  if (o.slide) slid_domain(o, cdt, runs, *slid, segments, domain_alone, metadata);
   if (!conforming.lines.empty() && !o.quiet) {  // what breaks the faces on the lines, if any
     std::size_t inside = 0;
     for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
