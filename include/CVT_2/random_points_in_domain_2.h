@@ -196,8 +196,9 @@ std::vector<std::size_t> region_quotas(
     for (std::size_t f = 0; f < faces.size(); ++f) mass[f] = domain.area(domain.triangles[f]);
     total = std::accumulate(mass.begin(), mass.end(), 0.0);
   }
-  std::vector<double> weight(regions, 0.0);
-  for (std::size_t f = 0; f < faces.size(); ++f) weight[face_region[f]] += mass[f];
+  std::vector<double> region_mass(regions, 0.0);
+  for (std::size_t f = 0; f < faces.size(); ++f) region_mass[face_region[f]] += mass[f];
+  std::vector<double> weight = region_mass;  // less the generators' shares, below
   // the domain's face at v, if any: v is a generator of the domain
   const auto face_at = [&](const auto v) {
     auto fc = cdt.incident_faces(v), done = fc;
@@ -263,8 +264,7 @@ std::vector<std::size_t> region_quotas(
   double sum = 0;
   for (double& w : weight) sum += (w = std::max(w, 0.0));
   if (!(sum > 0)) {  // generators fill every region already: by mass alone
-    std::fill(weight.begin(), weight.end(), 0.0);
-    for (std::size_t f = 0; f < faces.size(); ++f) weight[face_region[f]] += mass[f];
+    weight = region_mass;
     sum = total;
   }
   std::vector<std::size_t> quota(regions, 0);
@@ -322,12 +322,11 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   double domain_area = 0;
   for (const Triangle& t : domain.triangles) domain_area += domain.area(t);
   if (!(domain_area > 0)) throw Domain_error("random points: the domain is empty");
-  // The triangles to draw from, with their cumulative masses, and the face each lies in.
+  // The triangles to draw from, with their masses, and the face each lies in.
   const std::vector<Triangle>* pieces = &domain.triangles;
   std::vector<Triangle> cut;
   std::vector<std::size_t> face_of;
-  std::vector<double> cumulative;
-  double total = 0;
+  std::vector<double> mass;
   const auto weigh_pieces = [&](const auto& rho) {
     cut = internal::bisect_triangles(domain, domain_area / double(std::max<std::size_t>(n, 10000)),
                                      face_of);
@@ -349,15 +348,13 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
       for (std::size_t j = 0; j < cut.size(); ++j) {
         double s = 0;
         for (int i = 0; i < 3; ++i) s += CGAL::to_double(values[3 * j + std::size_t(i)]);
-        total += domain.area(cut[j]) * s / 3;
-        cumulative.push_back(total);
+        mass.push_back(domain.area(cut[j]) * s / 3);
       }
     } else {
       for (const Triangle& t : cut) {
         double s = 0;
         for (int i = 0; i < 3; ++i) s += CGAL::to_double(rho(CGAL::midpoint(t[i], t[(i + 1) % 3])));
-        total += domain.area(t) * s / 3;
-        cumulative.push_back(total);
+        mass.push_back(domain.area(t) * s / 3);
       }
     }
   };
@@ -372,7 +369,7 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
       return 1 / (m * m);
     });
   } else {
-    for (const Triangle& t : domain.triangles) cumulative.push_back(total += domain.area(t));
+    for (const Triangle& t : domain.triangles) mass.push_back(domain.area(t));
   }
   // The pieces in the order they are drawn from, and the ranges of that order with their
   // quotas of points: all at once, or region by region.
@@ -385,23 +382,19 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
     std::vector<std::size_t> region;
     const std::size_t regions = internal::domain_regions(cdt, faces, index, region);
     const auto face = [&](std::size_t k) { return face_of.empty() ? k : face_of[k]; };
-    std::vector<double> piece_mass(piece.size()), face_mass(faces.size(), 0.0);
-    for (std::size_t k = 0; k < piece.size(); ++k) {
-      piece_mass[k] = cumulative[k] - (k > 0 ? cumulative[k - 1] : 0.0);
-      face_mass[face(k)] += piece_mass[k];
-    }
+    std::vector<double> face_mass(faces.size(), 0.0);
+    for (std::size_t k = 0; k < piece.size(); ++k) face_mass[face(k)] += mass[k];
     quota = internal::region_quotas(cdt, n, faces, index, region, regions, face_mass, domain);
     std::stable_sort(piece.begin(), piece.end(), [&](std::size_t a, std::size_t b) {
       return region[face(a)] < region[face(b)];
     });
     range_end.assign(regions, 0);
-    total = 0;
-    for (std::size_t i = 0; i < piece.size(); ++i) {
-      cumulative[i] = total += piece_mass[piece[i]];
-      ++range_end[region[face(piece[i])]];
-    }
+    for (const std::size_t k : piece) ++range_end[region[face(k)]];
     std::partial_sum(range_end.begin(), range_end.end(), range_end.begin());
   }
+  std::vector<double> cumulative(piece.size());  // the masses in the order drawn from, summed
+  double total = 0;
+  for (std::size_t i = 0; i < piece.size(); ++i) cumulative[i] = total += mass[piece[i]];
   // Rounding may put a point drawn by a boundary edge just outside the domain face its piece
   // was cut from (a piece's cut points are rounded too): it is drawn again. A needle thinner
   // than double precision can resolve (a vertex at 1e124 among vertices at 10) holds almost no
@@ -411,11 +404,12 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   points.reserve(n);
   for (std::size_t r = 0; r < quota.size(); ++r) {
     const std::size_t begin = r > 0 ? range_end[r - 1] : 0, end = range_end[r];
-    const double low = begin > 0 ? cumulative[begin - 1] : 0.0, mass = cumulative[end - 1] - low;
+    const double low = begin > 0 ? cumulative[begin - 1] : 0.0;
+    const double range_mass = cumulative[end - 1] - low;
     std::size_t misses = 0;
     for (std::size_t drawn = 0; drawn < quota[r];) {
       internal::poll_interrupt_sometimes();
-      const double u = low + internal::uniform01(rng) * mass;
+      const double u = low + internal::uniform01(rng) * range_mass;
       const std::size_t i =
           std::min<std::size_t>(std::upper_bound(cumulative.begin() + std::ptrdiff_t(begin),
                                                  cumulative.begin() + std::ptrdiff_t(end), u) -

@@ -38,6 +38,7 @@ from __future__ import annotations
 
 import errno
 import functools
+import math
 import os
 
 import numpy as np
@@ -482,8 +483,9 @@ def optimize(
       ``"slide"``, a domain not made by :meth:`Domain.resample` is first resampled to that size
       (``domain.resample(cells=cells, size=size)``); with ``points`` None, the free generators
       are drawn (``random_points`` with ``cells`` and ``seed``; ``size`` gives
-      ``round(domain.cells_for_size(size))`` cells). ``optimize(d, None, boundary="slide",
-      cells=N, seed=S)`` gives the bits of ``cvt2 D --boundary slide --cells N --seed S``.
+      ``domain.cells_for_size(size)`` cells, rounded as cvt2 rounds them).
+      ``optimize(d, None, boundary="slide", cells=N, seed=S)`` gives the bits of
+      ``cvt2 D --boundary slide --cells N --seed S``.
 
     Ctrl-C raises KeyboardInterrupt. Returns an :class:`OptimizeResult`.
     """
@@ -496,7 +498,7 @@ def optimize(
             domain = domain.resample(cells=cells, size=size)
         if size is not None:  # as cvt2: a domain not resampled keeps its vertices (ratio 1)
             ratio = domain.resampling["spacing_ratio"] if domain.resampling else 1.0
-            cells = round(domain.cells_for_size(float(size), spacing_ratio=ratio))
+            cells = _round_half_away(domain.cells_for_size(float(size), spacing_ratio=ratio))
         if points is None:
             points = random_points(domain, cells=cells, seed=seed, density=density,
                                    lipschitz_k=lipschitz_k, boundary_size=boundary_size)
@@ -522,6 +524,13 @@ def optimize(
     if _slide(boundary) or _conforming(constraints):  # the domain the cells are of
         domain = Domain._wrap(result.domain)
     return OptimizeResult(result, domain)
+
+
+def _round_half_away(x):
+    """x >= 0 to the nearest integer, halves away from 0: C++'s std::round, which cvt2 uses
+    (Python's round() takes halves to even)."""
+    whole = math.floor(x)
+    return whole + 1 if x - whole >= 0.5 else whole
 
 
 def _redistribute(redistribute):
