@@ -568,11 +568,10 @@ std::shared_ptr<Domain> slid_domain(const Domain& d, const CDT& cdt,
   out->data.file.source = d.data.file.source;
   out->data.file.format = out->format = "arrays";
   out->metadata = d.metadata;
-  for (auto& [key, value] : out->metadata) {
+  for (auto& [key, value] : out->metadata)
     if (key == "boundary") value = "slide";
-    if (key == "max_deviation")  // the resampling's bound the chords that did not slide
-      value = CVT_2::internal::number_text(std::max(std::stod(value), runs.max_deviation()));
-  }
+  // the resampling's bound the chords that did not slide
+  CVT_2::IO::raise_metadata_number(out->metadata, "max_deviation", runs.max_deviation());
   out->runs = std::make_shared<const CVT_2::Sliding_runs_2<CDT>>(runs);
   out->finish();
   // Each line named as before the slide: d's segments, their ends where their vertices slid,

@@ -49,8 +49,8 @@ def test_resampling_removes_the_specks_of_a_fine_boundary(program, data, tmp_pat
 @pytest.mark.parametrize("mode", ["resample", "slide"])
 def test_module_matches_the_program_bit_for_bit(program, data, tmp_path, mode):
     name = "us_massachusetts_counties.wkt"
-    _, expected, _ = run_program(program, data / name, tmp_path, "--boundary", mode,
-                                 "--cells", 800, "--seed", 5)
+    _, expected, files = run_program(program, data / name, tmp_path, "--boundary", mode,
+                                     "--cells", 800, "--seed", 5, outputs=("points", "geojson"))
     d = cvt2.Domain.from_file(data / name).resample(cells=800)
     points = cvt2.random_points(d, cells=800, seed=5)
     assert len(points) + d.own_cells == 800
@@ -61,7 +61,12 @@ def test_module_matches_the_program_bit_for_bit(program, data, tmp_path, mode):
     kept = cvt2.optimize(d, points)
     assert not np.array_equal(r.points, kept.points)
     # The result's domain is the slid one: its ridges along the lines name its segments.
-    assert dict(r.domain._impl.metadata)["boundary"] == "slide"
+    metadata = dict(r.domain._impl.metadata)
+    assert metadata["boundary"] == "slide"
+    # with the slid lines' largest deviation, as the program's files say (above the resampling's)
+    written = json.loads(files["geojson"].read_text())["metadata"]
+    assert metadata["max_deviation"] == written["max_deviation"]
+    assert float(metadata["max_deviation"]) > float(dict(d._impl.metadata)["max_deviation"])
     b = r.bounded_voronoi()
     assert r.domain.area == pytest.approx(b.areas.sum(), rel=1e-9)
     assert (np.asarray(b.ridge_constraint) >= 0).sum() > 0
@@ -297,6 +302,12 @@ def test_program_slides_the_boundary_on_the_input_valid_and_tiling(program, data
     on_lines = np.unique(back.segments)
     assert set(map(tuple, back.vertices[on_lines])) == set(map(tuple, constrained))
     assert back.area == pytest.approx(union.area, rel=1e-9)
+    # The metadata's max_deviation is the slid lines' (no longer the resampling's): no input
+    # vertex lies farther than it from the lines where the vertices slid, and it keeps the bound.
+    deviation = float(metadata["max_deviation"])
+    on_input = domain.vertices[np.unique(domain.segments)]
+    assert np.max(_on_lines(on_input, back)) <= deviation * (1 + 1e-9)
+    assert deviation <= float(metadata["deviation_bound"]) * (1 + 1e-9)
 
 
 def item_lines(domain):

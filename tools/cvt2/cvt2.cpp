@@ -782,9 +782,8 @@ void slid_domain(const Options& o, const CDT& cdt, const CVT_2::Sliding_runs_2<C
                  CVT_2::IO::Metadata& metadata) {
   const auto lines = CVT_2::IO::domain_poly_data(cdt, "<triangulation>", false);
   slid.follow(segments.ends);
-  for (auto& [key, value] : metadata)  // the resampling's bound the chords that did not slide
-    if (key == "max_deviation")
-      value = CVT_2::internal::number_text(std::max(std::stod(value), runs.max_deviation()));
+  // the resampling's bound the chords that did not slide
+  CVT_2::IO::raise_metadata_number(metadata, "max_deviation", runs.max_deviation());
   if (!o.domain_out.empty()) {
     CDT out;
     CVT_2::IO::insert_poly(out, lines);

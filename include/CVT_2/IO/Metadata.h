@@ -3,6 +3,9 @@
 #ifndef CVT_2_IO_METADATA_H
 #define CVT_2_IO_METADATA_H
 
+#include <CVT_2/IO/internal/write_number.h>
+
+#include <algorithm>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -18,6 +21,13 @@ namespace IO {
 /// XML comment `<!-- key: value -->` a pair (readers skip comments); DISV: a comment line
 /// `# key: value` a pair.
 using Metadata = std::vector<std::pair<std::string, std::string>>;
+
+/// Raises the number under `key` to `value` where it is smaller: a bound that only grows, as
+/// `max_deviation` once the boundary slid. A missing key is left missing.
+inline void raise_metadata_number(Metadata& metadata, const std::string& key, double value) {
+  for (auto& [k, v] : metadata)
+    if (k == key) v = internal::number_text(std::max(std::stod(v), value));
+}
 
 }  // namespace IO
 
