@@ -79,6 +79,32 @@ def test_a_grid_of_generators_gives_valid_cells():
     assert unary_union(cells).area == pytest.approx(domain.area, rel=1e-9)
 
 
+def test_cells_small_against_their_coordinates_are_valid(tmp_path):
+    # A right triangle's circumcenter is its hypotenuse's midpoint: computed, the two are a unit
+    # in the last place apart, which at coordinates about 40 and cells of 0.01 is more than
+    # 2^-40 of the cells. One vertex still, or the cells cross themselves, and a DISV repeats
+    # the point (the cells around it share no vertex: MODFLOW sees no connection).
+    rng = np.random.default_rng(1)
+    triangles = [[(39.258461862487614, 21.445305310597536), (39.248461862487616, 21.445305310597536),
+                  (39.248461862487616, 21.455305310597538)]]
+    for _ in range(300):
+        x, y = rng.uniform(-100, 100, 2)
+        h = 10 ** rng.uniform(-3, 2)
+        triangles.append([(x, y), (x + h, y), (x, y + h)])
+    for corners in triangles:
+        d = cvt2.Domain.from_shapely(Polygon(corners))
+        vd = cvt2.bounded_voronoi(d, np.zeros((0, 2)))
+        cells = vd.to_shapely()
+        invalid = [c for c in cells if not c.is_valid]
+        assert not invalid, (corners, shapely.validation.explain_validity(invalid[0]))
+    d = cvt2.Domain.from_shapely(Polygon(triangles[0]))
+    cvt2.bounded_voronoi(d, np.zeros((0, 2))).to_disv(tmp_path / "t.disv")
+    text = (tmp_path / "t.disv").read_text()
+    rows = text[text.index("BEGIN VERTICES"):text.index("END VERTICES")].splitlines()[1:]
+    xy = [tuple(map(float, r.split()[1:3])) for r in rows]
+    assert len(set(xy)) == len(xy) == 6  # the corners, the legs' midpoints, the circumcenter
+
+
 def test_scipy_style_arrays_are_consistent(data):
     for domain, _, vd in diagrams(data):
         n, nv = len(vd.points), len(vd.vertices)

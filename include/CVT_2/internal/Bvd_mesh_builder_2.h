@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
@@ -332,13 +333,20 @@ bool Bvd_mesh_builder_2<Diagram>::add_free_cell(const Triangulation& cdt, Vertex
 
 // Whether p and q, consecutive in the cell of `generator`, are one vertex: the same point, or
 // within 2^-40 of their distance to the generator (the rounding of a circumcenter is some
-// 2^-52 of it: two such points are one, in true numbers or nearly).
+// 2^-52 of it: two such points are one, in true numbers or nearly), or within 8 units in the
+// last place of their coordinates (a cell small against its coordinates: a point computed
+// from others is rounded to those units, a circumcenter on an edge and the edge's midpoint of
+// a right triangle 1 apart).
 template <class Diagram>
 bool Bvd_mesh_builder_2<Diagram>::is_one_point(const Point_2& p, const Point_2& q,
                                                const Point_2& generator) {
   if (p == q) return true;
   const double far = CGAL::to_double(CGAL::squared_distance(p, generator));
-  return CGAL::to_double(CGAL::squared_distance(p, q)) <= 0x1.0p-80 * far;
+  const double size =
+      std::max({std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y())),
+                std::abs(CGAL::to_double(q.x())), std::abs(CGAL::to_double(q.y()))});
+  const double ulps = 0x1.0p-49 * size;  // 8 units in the last place of the largest
+  return CGAL::to_double(CGAL::squared_distance(p, q)) <= std::max(0x1.0p-80 * far, ulps * ulps);
 }
 
 // The circumcenters of the cycle [first, first + n) that are one point with the next, as merges.
