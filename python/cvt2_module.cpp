@@ -1197,15 +1197,14 @@ struct Optimization {
   }
 };
 
-std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& domain,
-                                       py::handle points_object, const std::string& algorithm,
-                                       const py::object& density, double move_ratio,
-                                       std::int64_t max_iterations, double time_limit,
-                                       std::int64_t threads, const py::object& callback,
-                                       double lipschitz_k, const py::object& boundary_size,
-                                       std::optional<double> boundary_tolerance,
-                                       const py::object& fixed_object, bool slide, bool conforming,
-                                       const std::string& redistribute, std::uint64_t seed) {
+std::shared_ptr<Optimization> optimize(
+    const std::shared_ptr<const Domain>& domain, py::handle points_object,
+    const std::string& algorithm, const py::object& density, double move_ratio,
+    std::int64_t max_iterations, double time_limit, std::int64_t threads,
+    const py::object& callback, double lipschitz_k, const py::object& boundary_size,
+    std::optional<double> boundary_tolerance, const py::object& fixed_object, bool slide,
+    bool conforming, const std::string& redistribute, std::uint64_t seed,
+    std::optional<std::int64_t> cells_asked, std::optional<double> size, double spacing_ratio) {
   if (slide && !domain->runs)
     throw py::value_error(
         "boundary='slide' needs a domain made by Domain.resample(): its vertices slide along the "
@@ -1288,12 +1287,20 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
     }
     // As cvt2 --constraints conforming: the lines' pairs, fixed, at the cells' spacing.
     CVT_2::Conforming_disks<Point_2> disks;
-    if (lineless) {
-      std::size_t cells = 0, left_out = 0;
+    const auto vertices_in_domain = [&cdt] {
+      std::size_t n = 0;
       for (auto v = cdt->finite_vertices_begin(); v != cdt->finite_vertices_end(); ++v)
-        cells += CVT_2::internal::has_domain_face(*cdt, v) ? 1 : 0;
-      const double spacing = std::sqrt(2 * lineless->area /
-                                       (std::sqrt(3.0) * double(std::max<std::size_t>(cells, 1))));
+        n += CVT_2::internal::has_domain_face(*cdt, v) ? 1 : 0;
+      return n;
+    };
+    if (lineless) {
+      // at the spacing of the cells asked for (cvt2 --cells, --size), else of those there are
+      const std::size_t cells = cells_asked ? std::size_t(*cells_asked) : vertices_in_domain();
+      std::size_t left_out = 0;
+      const double spacing =
+          size ? *size
+               : std::sqrt(2 * lineless->area /
+                           (std::sqrt(3.0) * double(std::max<std::size_t>(cells, 1))));
       lineless->conforming_pairs =
           CVT_2::insert_conforming_sites_2(*cdt, lines, spacing, disks, &left_out);
       lineless->conforming_items = line_items;
@@ -1305,6 +1312,25 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
                              " steps of the conforming lines have a generator outside the "
                              "domain: left out");
       out->domain = lineless;
+    }
+    // cells= or size= (cvt2 --cells, --size): as many more drawn as make that many cells, the
+    // points, the fixed ones and the conforming lines' counted.
+    const bool counted = cells_asked || size;
+    std::size_t to_draw = 0;
+    if (counted) {
+      const std::size_t present = vertices_in_domain();
+      const double wanted =
+          cells_asked ? double(*cells_asked)
+                      : std::round(CVT_2::cells_for_cell_size_2(*cdt, *size, spacing_ratio));
+      const std::string asked = cells_asked ? "cells=" + std::to_string(*cells_asked)
+                                            : "size=" + CVT_2::internal::number_text(*size) + " (" +
+                                                  CVT_2::internal::number_text(wanted) + " cells)";
+      if (wanted < double(present))
+        throw py::value_error(asked + " asks for fewer cells than the " + std::to_string(present) +
+                              " generators of the domain and the points");
+      if (!(wanted <= double(std::int64_t(1) << 53)))
+        throw py::value_error(asked + " asks for too many cells");
+      to_draw = std::size_t(wanted) - present;
     }
     // As cvt2 --redistribute: with a density, the free generators given replaced by as many
     // drawn from it, always or if they do not follow it.
@@ -1328,8 +1354,11 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
                      : CVT_2::random_points_in_domain_2(
                            *cdt, count, np.density(Python_density{choice.function, true}));
         };
-        CVT_2::insert_generators_2(*cdt,
-                                   CVT_2::draw_outside_disks_2(disks, given.size(), seed, draw));
+        if (counted)  // drawn with the others, below
+          to_draw += given.size();
+        else
+          CVT_2::insert_generators_2(*cdt,
+                                     CVT_2::draw_outside_disks_2(disks, given.size(), seed, draw));
         out->redistributed = true;
         out->notes.push_back("the " + std::to_string(given.size()) + " generators given " +
                              (redistribute == "auto"
@@ -1338,6 +1367,21 @@ std::shared_ptr<Optimization> optimize(const std::shared_ptr<const Domain>& doma
                                   : "are redistributed (redistribute=True)") +
                              ": replaced by as many drawn from it (redistribute=False keeps them)");
       }
+    }
+    if (to_draw > 0) {
+      // As cvt2 draws them: dealt to the regions, none in the circles of conforming lines (those
+      // drawn again for the circles, independently).
+      const auto draw = [&](std::size_t count, std::uint64_t s) {
+        const auto np = CVT_2::parameters::random_seed(s).by_region(s == seed);
+        return choice.kind == Density_choice::LIPSCHITZ
+                   ? CVT_2::random_points_in_domain_2(*cdt, count,
+                                                      np.sizing_field(std::cref(*sizing)))
+               : choice.kind == Density_choice::CALLABLE
+                   ? CVT_2::random_points_in_domain_2(
+                         *cdt, count, np.density(Python_density{choice.function, true}))
+                   : CVT_2::random_points_in_domain_2(*cdt, count, np);
+      };
+      CVT_2::insert_generators_2(*cdt, CVT_2::draw_outside_disks_2(disks, to_draw, seed, draw));
     }
     std::optional<CVT_2::Sliding_runs_2<CDT>> runs;
     if (slide) {
@@ -1586,7 +1630,9 @@ PYBIND11_MODULE(_cvt2, m) {
         py::arg("density"), py::arg("move_ratio"), py::arg("max_iterations"), py::arg("time_limit"),
         py::arg("threads"), py::arg("callback"), py::arg("lipschitz_k"), py::arg("boundary_size"),
         py::arg("boundary_tolerance"), py::arg("fixed_points"), py::arg("slide") = false,
-        py::arg("conforming") = false, py::arg("redistribute") = "auto", py::arg("seed") = 1);
+        py::arg("conforming") = false, py::arg("redistribute") = "auto", py::arg("seed") = 1,
+        py::arg("cells") = py::none(), py::arg("size") = py::none(),
+        py::arg("spacing_ratio") = 1.0);
   m.def("bounded_voronoi", &bounded_voronoi, py::arg("domain"), py::arg("points"),
         py::arg("threads"), py::arg("boundary_tolerance"));
   m.def("natural_neighbours", &natural_neighbours, py::arg("domain"), py::arg("nodes"),

@@ -399,6 +399,27 @@ TEST_CASE("random points by region: each region's count is its mass less its gen
   CHECK(half[0][1] / half[0][0] == Approx(3.5 / 1.5).epsilon(0.05));  // the halves' masses
   CHECK(half[1][1] / half[1][0] == Approx(1.5 / 3.5).epsilon(0.05));
   CHECK(half[2][1] / half[2][0] == Approx(1.0).epsilon(0.05));
+  // Eight equal squares, 3 points each and 3 more: the regions that get one more are drawn with
+  // the seed (in the faces' order, the same three would, whatever the seed).
+  CVT_2::IO::Poly_data<Point> equal;
+  for (int k = 0; k < 8; ++k) add_ring(equal, square(2 * k, 1));
+  const Cdt squares = triangulate(equal);
+  std::array<int, 8> extra{};
+  std::set<std::array<int, 8>> counts;
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    std::array<int, 8> c{};
+    for (const Point& p : CVT_2::random_points_in_domain_2(
+             squares, 27, CVT_2::parameters::random_seed(seed).by_region(true)))
+      ++c[std::size_t(p.x() / 2)];
+    for (int k = 0; k < 8; ++k) {
+      CHECK((c[k] == 3 || c[k] == 4));
+      extra[k] += c[k] == 4;
+    }
+    counts.insert(c);
+  }
+  CAPTURE(extra);
+  CHECK(*std::min_element(extra.begin(), extra.end()) > 0);  // each square, some seeds
+  CHECK(counts.size() > 10);
 }
 
 TEST_CASE("random initial generators are reproducible, inside, and follow the density", "[lloyd]") {

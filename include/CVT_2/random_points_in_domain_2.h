@@ -189,7 +189,7 @@ std::vector<std::size_t> region_quotas(
     const CDT& cdt, std::size_t n, const std::vector<typename CDT::Face_handle>& faces,
     const std::unordered_map<typename CDT::Face_handle, std::size_t>& index,
     const std::vector<std::size_t>& face_region, std::size_t regions, std::vector<double> mass,
-    const Domain_triangles<typename CDT::Point_2>& domain) {
+    const Domain_triangles<typename CDT::Point_2>& domain, std::uint64_t seed) {
   using Face_handle = typename CDT::Face_handle;
   double total = std::accumulate(mass.begin(), mass.end(), 0.0);
   if (!(total > 0 && total < HUGE_VAL)) {  // a density of no mass or an infinite one: by area
@@ -276,10 +276,18 @@ std::vector<std::size_t> region_quotas(
     remainder[r] = q - double(quota[r]);
     dealt += quota[r];
   }
+  // The largest remainders first. Equal ones (a grid of equal squares; to 2^-30, rounding) in
+  // an order drawn from the seed, apart from the points' draws: in the faces' order, the same
+  // regions would get the extra points whatever the seed, and no optimization moves them out.
+  std::vector<std::uint64_t> tie(regions);
+  std::mt19937_64 tie_rng(seed ^ 0x9e3779b97f4a7c15u);
+  for (std::uint64_t& t : tie) t = tie_rng();
+  const auto rank = [&](std::size_t r) { return std::floor(std::ldexp(remainder[r], 30)); };
   std::vector<std::size_t> order(regions);
   std::iota(order.begin(), order.end(), std::size_t(0));
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return remainder[a] > remainder[b]; });
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return rank(a) != rank(b) ? rank(a) > rank(b) : tie[a] < tie[b];
+  });
   for (std::size_t i = 0; dealt < n; i = (i + 1) % regions) ++quota[order[i]], ++dealt;
   for (std::size_t i = 0; dealt > n; i = (i + 1) % regions)
     if (quota[order[regions - 1 - i]] > 0) --quota[order[regions - 1 - i]], --dealt;
@@ -317,7 +325,8 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   using namespace internal_np;
   using Point_2 = typename CDT::Point_2;
   using Triangle = std::array<Point_2, 3>;
-  std::mt19937_64 rng(choose_parameter(get_parameter(np, random_seed_t()), std::uint64_t(0)));
+  const std::uint64_t seed = choose_parameter(get_parameter(np, random_seed_t()), std::uint64_t(0));
+  std::mt19937_64 rng(seed);
   const internal::Domain_triangles<Point_2> domain = internal::domain_triangles(cdt);
   double domain_area = 0;
   for (const Triangle& t : domain.triangles) domain_area += domain.area(t);
@@ -384,7 +393,7 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
     const auto face = [&](std::size_t k) { return face_of.empty() ? k : face_of[k]; };
     std::vector<double> face_mass(faces.size(), 0.0);
     for (std::size_t k = 0; k < piece.size(); ++k) face_mass[face(k)] += mass[k];
-    quota = internal::region_quotas(cdt, n, faces, index, region, regions, face_mass, domain);
+    quota = internal::region_quotas(cdt, n, faces, index, region, regions, face_mass, domain, seed);
     std::stable_sort(piece.begin(), piece.end(), [&](std::size_t a, std::size_t b) {
       return region[face(a)] < region[face(b)];
     });

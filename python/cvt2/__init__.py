@@ -425,8 +425,7 @@ def optimize(
     - ``points``: float array (n, 2), the initial free generators (:func:`random_points`, say),
       in the domain (its boundary included: a point on a constraint becomes constrained; one
       outside by no more than ``boundary_tolerance`` goes onto the boundary, see
-      :func:`bounded_voronoi`); or None with ``cells`` or ``size``: drawn as
-      ``random_points(domain, cells=..., seed=seed)`` draws them;
+      :func:`bounded_voronoi`); or None with ``cells`` or ``size`` (below);
     - ``algorithm``: ``"lbfgs"`` (L-BFGS on the CVT energy; fewer evaluations) or ``"lloyd"``;
     - ``density``: None (uniform, integrated exactly), ``"lipschitz"`` (the automatic sizing
       of the paper's Section 4: cell size ``lipschitz_k`` * distance to the boundary +
@@ -481,27 +480,38 @@ def optimize(
     - ``cells`` or ``size``: how many cells in all (``cvt2 --cells``), or their size ``H`` (a
       hexagon of area ``sqrt(3)/2 H**2``, ``cvt2 --size``): with ``boundary`` ``"resample"`` or
       ``"slide"``, a domain not made by :meth:`Domain.resample` is first resampled to that size
-      (``domain.resample(cells=cells, size=size)``); with ``points`` None, the free generators
-      are drawn (``random_points`` with ``cells`` and ``seed``; ``size`` gives
-      ``domain.cells_for_size(size)`` cells, rounded as cvt2 rounds them).
-      ``optimize(d, None, boundary="slide", cells=N, seed=S)`` gives the bits of
-      ``cvt2 D --boundary slide --cells N --seed S``.
+      (``domain.resample(cells=cells, size=size)``). Free generators are then drawn, as many as
+      make that many cells with the domain's own, ``points``, ``fixed_points`` and the
+      conforming lines' generators (None for ``points``: none given), dealt to the regions that
+      constraints separate as :func:`random_points` deals them (``seed``), none in the
+      conforming lines' circles; ``size`` gives ``domain.cells_for_size(size)`` cells, rounded
+      half away from 0. Their ``input_index`` is -1. ``optimize(d, None, boundary="slide",
+      cells=N, seed=S)`` gives the bits of ``cvt2 D --boundary slide --cells N --seed S``, and
+      so with ``fixed_points``, ``constraints`` and a density as with their options.
 
     Ctrl-C raises KeyboardInterrupt. Returns an :class:`OptimizeResult`.
     """
     if threads is None:
         threads = 0
-    if cells is not None or size is not None:
-        if cells is not None and size is not None:
-            raise TypeError("give one of cells and size")
-        if boundary in ("resample", "slide") and domain.resampling is None:
-            domain = domain.resample(cells=cells, size=size)
-        if size is not None:  # as cvt2: a domain not resampled keeps its vertices (ratio 1)
-            ratio = domain.resampling["spacing_ratio"] if domain.resampling else 1.0
-            cells = _round_half_away(domain.cells_for_size(float(size), spacing_ratio=ratio))
-        if points is None:
-            points = random_points(domain, cells=cells, seed=seed, density=density,
-                                   lipschitz_k=lipschitz_k, boundary_size=boundary_size)
+    if cells is not None and size is not None:
+        raise TypeError("give one of cells and size")
+    if cells is not None:
+        cells = _count(cells, "cells")
+    if size is not None:
+        size = _size(size)
+    if boundary == "resample" and domain.resampling is None:
+        if cells is None and size is None:
+            raise ValueError(
+                "boundary='resample' resamples the domain to the size of the cells: give cells= "
+                "or size=, or a domain made by Domain.resample()"
+            )
+    counted = cells is not None or size is not None
+    if boundary in ("resample", "slide") and domain.resampling is None and counted:
+        domain = domain.resample(cells=cells, size=size)
+    if points is None and counted:
+        points = np.empty((0, 2))
+    # as cvt2: a domain not resampled keeps its vertices (ratio 1)
+    ratio = domain.resampling["spacing_ratio"] if domain.resampling else 1.0
     result = _cvt2.optimize(
         _impl(domain),
         points,
@@ -520,17 +530,22 @@ def optimize(
         _conforming(constraints),
         _redistribute(redistribute),
         _seed(seed),
+        cells=cells,
+        size=size,
+        spacing_ratio=float(ratio),
     )
     if _slide(boundary) or _conforming(constraints):  # the domain the cells are of
         domain = Domain._wrap(result.domain)
     return OptimizeResult(result, domain)
 
 
-def _round_half_away(x):
-    """x >= 0 to the nearest integer, halves away from 0: C++'s std::round, which cvt2 uses
-    (Python's round() takes halves to even)."""
-    whole = math.floor(x)
-    return whole + 1 if x - whole >= 0.5 else whole
+def _size(size):
+    """A cell size: a positive finite number."""
+    if isinstance(size, (bool, np.bool_)) or not isinstance(size, (int, float, np.integer, np.floating)):
+        raise TypeError(f"size must be a number, not {type(size).__name__}")
+    if not (size > 0 and math.isfinite(size)):
+        raise ValueError(f"size must be a positive number, not {size}")
+    return float(size)
 
 
 def _redistribute(redistribute):

@@ -77,6 +77,51 @@ def test_module_matches_the_program_bit_for_bit(program, data, tmp_path, mode):
         cvt2.optimize(d, points, boundary="slid")
 
 
+def test_cells_count_what_the_program_counts(program, data, tmp_path):
+    """optimize(cells=) draws as cvt2 --cells: after the points, the fixed points and the
+    conforming lines' generators, which count among the cells; the same bits."""
+    name = data / "square_inner_constraints.wkt"
+    d = cvt2.Domain.from_file(name)
+    fixed = np.array([[1.0, 1.0], [9.0, 2.0], [5.0, 8.0], [2.5, 4.0]])
+    np.savetxt(tmp_path / "fixed.txt", fixed)
+    given = cvt2.random_points(d, 20, seed=3)
+    np.savetxt(tmp_path / "given.txt", given)
+    cases = [
+        (dict(fixed_points=fixed), ["--fixed-points", tmp_path / "fixed.txt"]),
+        (dict(constraints="conforming"), ["--constraints", "conforming"]),
+        (dict(points=given), ["--points-in", tmp_path / "given.txt"]),
+        (dict(density="lipschitz", redistribute=True),
+         ["--density", "lipschitz", "--redistribute", "always"]),
+        (dict(size=0.5), ["--size", 0.5]),
+    ]
+    for kwargs, options in cases:
+        points = kwargs.pop("points", None)
+        count = {} if "size" in kwargs else dict(cells=300)
+        r = cvt2.optimize(d, points, seed=4, max_iterations=3, **count, **kwargs)
+        counted = [] if count == {} else ["--cells", 300]
+        _, expected, _ = run_program(program, name, tmp_path, *counted, "--seed", 4,
+                                     "--iterations", 3, *options)
+        assert len(r.points) == len(expected), options
+        assert count == {} or len(r.points) == 300, options
+        assert np.array_equal(r.points, expected[:, :2]), options
+    # The points given keep their rows; those drawn are -1.
+    r = cvt2.optimize(d, given, cells=300, max_iterations=0)
+    assert sorted(r.input_index[r.input_index >= 0]) == list(range(20))
+    # What cells= and size= take.
+    with pytest.raises(TypeError, match="size must be a number, not str"):
+        cvt2.optimize(d, None, size="1")
+    with pytest.raises(TypeError, match="size must be a number, not bool"):
+        cvt2.optimize(d, None, size=True)
+    with pytest.raises(TypeError, match="cells must be an integer"):
+        cvt2.optimize(d, None, cells=1.5)
+    with pytest.raises(ValueError, match=r"size=1e-300 \(inf cells\) asks for too many cells"):
+        cvt2.optimize(d, None, size=1e-300)
+    with pytest.raises(ValueError, match=r"size=1e\+300 \(0 cells\) asks for fewer cells than"):
+        cvt2.optimize(d, None, size=1e300)
+    with pytest.raises(ValueError, match="boundary='resample' resamples the domain"):
+        cvt2.optimize(d, given, boundary="resample")
+
+
 def test_cells_deal_the_points_to_the_regions_by_area(data):
     # Kentucky's counties are regions no generator leaves: with cells=, each gets the points its
     # area asks for, whatever the seed; with n=, independent draws leave a county of k cells
@@ -188,6 +233,8 @@ def test_program_size_and_errors(program, data, tmp_path):
         return p.stderr
 
     assert "expects 'keep', 'resample' or 'slide'" in fails("--boundary", "glide")
+    assert "--size asks for inf cells: too many" in fails("--size", "1e-300")
+    assert "--cells: 99999999" in fails("--cells", 10**11)  # the option named, not --points
     assert "give one of -n, --cells and --size" in fails("--cells", 100, "-n", 5)
     assert "--deviation-bound needs --boundary resample" in fails("--deviation-bound", 1)
     assert "--boundary-spacing needs --boundary resample" in fails("--boundary-spacing", 1)

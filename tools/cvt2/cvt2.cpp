@@ -129,7 +129,9 @@ void print_help(std::ostream& os) {
         "                         background size (that of -n, --cells or --size uniform cells)\n"
         "                         at distance RADIUS; repeatable (a well: with --fixed-points)\n"
         "      --seed S           seed of the random generators (default 1)\n"
-        "      --cells N          N cells in all, the domain's vertices included (instead of -n)\n"
+        "      --cells N          N cells in all, the domain's vertices and the points given\n"
+        "                         included (instead of -n); with --constraints barrier the\n"
+        "                         grid files split each cell on a barrier in two\n"
         "      --size H           cells of spacing H: H apart in a hexagonal tiling, a cell of\n"
         "                         area sqrt(3)/2 H^2 (instead of -n). With --cells and --size\n"
         "                         each region between constraints (a county, an island) gets\n"
@@ -472,7 +474,10 @@ void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& 
   if (n == 0) return;
   const double needed = bytes_per_generator(o) * double(n), memory = physical_memory();
   if (memory > 0 && needed > memory)
-    throw Usage_error("--points " + std::to_string(n) + " needs about " +
+    throw Usage_error(std::string(o.cells  ? "--cells"
+                                  : o.size ? "--size"
+                                           : "--points") +
+                      ": " + std::to_string(n) + " points need about " +
                       std::to_string(static_cast<long long>(needed / 1e9)) +
                       " GB; this machine has " +
                       std::to_string(static_cast<long long>(memory / 1e9)) + " GB");
@@ -936,6 +941,9 @@ int run(const Options& o) {
     const double wanted =
         o.cells ? double(*o.cells)
                 : std::round(CVT_2::cells_for_cell_size_2(cdt, *o.size, spacing_ratio(o)));
+    if (!(wanted <= double(std::int64_t(1) << 53)))
+      throw Usage_error(std::string(o.cells ? "--cells" : "--size") + " asks for " +
+                        CVT_2::internal::number_text(wanted) + " cells: too many");
     if (wanted < double(present))
       throw Usage_error(std::string(o.cells ? "--cells" : "--size") + " asks for " +
                         std::to_string(static_cast<long long>(wanted)) + " cells, fewer than the " +
