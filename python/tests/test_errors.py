@@ -55,6 +55,8 @@ def test_bad_densities(square):
     negative = lambda xy: np.where(xy[:, 0] < 0.5, 1.0, -2.0)  # noqa: E731
     with pytest.raises(cvt2.DomainError, match=r"the density is -2(.0*)? at \(0\.[5-9]"):
         cvt2.optimize(square, points, density=negative)
+    with pytest.raises(cvt2.DomainError, match=r"the density is -1e-10 at"):  # not -0.000000
+        cvt2.optimize(square, points, density=lambda xy: np.full(len(xy), -1e-10))
     with pytest.raises(cvt2.DomainError, match=r"the density is nan at"):
         cvt2.optimize(square, points, density=lambda xy: np.full(len(xy), np.nan))
     with pytest.raises(cvt2.DomainError, match=r"the density is -2(.0*)? at"):

@@ -337,6 +337,12 @@ def test_module_top_and_bottom_by_cell(data, tmp_path):
     with pytest.raises(ValueError, match=f"{len(diagram.points)} top values for {cells} cells"):
         diagram.to_disv(tmp_path / "i.disv", top=np.ones(len(diagram.points)), constraints="barrier")
     assert not (tmp_path / "i.disv").exists()
+    # MODFLOW reads no infinite elevation (cvt2 --top inf is refused too)
+    with pytest.raises(ValueError, match="cell 1's top inf is not a finite number"):
+        diagram.to_disv(tmp_path / "i.disv", top=np.inf)
+    with pytest.raises(ValueError, match="cell 1's bottom -inf is not a finite number"):
+        diagram.to_disv(tmp_path / "i.disv", bottom=-np.inf)
+    assert not (tmp_path / "i.disv").exists()
 
 
 def two_point_flux_heads(vertices, centers, cells, fixed, values):

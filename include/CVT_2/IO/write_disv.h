@@ -7,6 +7,7 @@
 #include <CVT_2/IO/internal/write_number.h>
 #include <CVT_2/Simulation_grid_2.h>
 
+#include <cmath>
 #include <cstddef>
 #include <fstream>
 #include <ostream>
@@ -38,7 +39,7 @@ namespace IO {
 /// `metadata`, if any, goes in comment lines after the first (`Metadata`).
 /// \tparam Mesh a `Bvd_mesh_2`.
 /// \throws std::invalid_argument if `top` or `bottom` has neither one value nor one a cell, or
-///         a bottom is not below its top, naming the cell (from 1).
+///         a top or bottom is not finite or a bottom not below its top, naming the cell (from 1).
 template <class Mesh>
 void write_disv(std::ostream& os, const Simulation_grid_2<Mesh>& grid,
                 const std::vector<double>& top, const std::vector<double>& bottom,
@@ -53,6 +54,11 @@ void write_disv(std::ostream& os, const Simulation_grid_2<Mesh>& grid,
                                   " cells (one, or one a cell)");
   for (std::size_t k = 0; k < cells; ++k) {
     const double t = top[top.size() == 1 ? 0 : k], b = bottom[bottom.size() == 1 ? 0 : k];
+    if (!std::isfinite(t) || !std::isfinite(b))
+      throw std::invalid_argument("write_disv: cell " + std::to_string(k + 1) + "'s " +
+                                  (std::isfinite(t) ? "bottom " : "top ") +
+                                  internal::number_text(std::isfinite(t) ? b : t) +
+                                  " is not a finite number");
     if (!(b < t))
       throw std::invalid_argument("write_disv: cell " + std::to_string(k + 1) + "'s bottom " +
                                   internal::number_text(b) + " is not below its top " +

@@ -22,8 +22,8 @@ namespace internal {
 // A density value that is not positive and finite, at p.
 template <class FT, class Point_2>
 Domain_error bad_density_error(const FT& r, const Point_2& p) {
-  return Domain_error("the density is " + std::to_string(CGAL::to_double(r)) + " at " +
-                      to_string(p) + ": it must be positive and finite");
+  return Domain_error("the density is " + number_to_string(r) + " at " + to_string(p) +
+                      ": it must be positive and finite");
 }
 
 // What a density's restrict_to_disk() returns; std::nullptr_t if it has none.
