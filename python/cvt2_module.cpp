@@ -1273,6 +1273,19 @@ std::shared_ptr<Optimization> optimize(
     const CVT_2::internal::Interrupt_scope interruptible{Signal_check()};
     std::shared_ptr<CDT> cdt = (lineless ? lineless : domain)->triangulation();
     const std::optional<Sizing> sizing = choice.sizing(*cdt);
+    // cells= or size=: the count asked for, checked before any conforming site is placed
+    const auto cells_wanted = [&] {
+      const double wanted =
+          cells_asked ? double(*cells_asked)
+                      : std::round(CVT_2::cells_for_cell_size_2(*cdt, *size, spacing_ratio));
+      const std::string asked = cells_asked ? "cells=" + std::to_string(*cells_asked)
+                                            : "size=" + CVT_2::internal::number_text(*size) + " (" +
+                                                  CVT_2::internal::number_text(wanted) + " cells)";
+      if (!(wanted <= double(std::int64_t(1) << 53)))
+        throw py::value_error(asked + " asks for too many cells");
+      return std::pair(wanted, asked);
+    };
+    if (cells_asked || size) cells_wanted();
     out->notes = insert_points(*cdt, points, "points", boundary_tolerance);
     if (!fixed.empty()) {  // as cvt2 --fixed-points: inserted after the points
       const std::vector<std::string> notes = insert_points(*cdt, fixed, "fixed_points", {}, &fixed);
@@ -1319,17 +1332,10 @@ std::shared_ptr<Optimization> optimize(
     std::size_t to_draw = 0;
     if (counted) {
       const std::size_t present = vertices_in_domain();
-      const double wanted =
-          cells_asked ? double(*cells_asked)
-                      : std::round(CVT_2::cells_for_cell_size_2(*cdt, *size, spacing_ratio));
-      const std::string asked = cells_asked ? "cells=" + std::to_string(*cells_asked)
-                                            : "size=" + CVT_2::internal::number_text(*size) + " (" +
-                                                  CVT_2::internal::number_text(wanted) + " cells)";
+      const auto [wanted, asked] = cells_wanted();
       if (wanted < double(present))
         throw py::value_error(asked + " asks for fewer cells than the " + std::to_string(present) +
-                              " generators of the domain and the points");
-      if (!(wanted <= double(std::int64_t(1) << 53)))
-        throw py::value_error(asked + " asks for too many cells");
+                              " vertices of the domain and the points");
       to_draw = std::size_t(wanted) - present;
     }
     // As cvt2 --redistribute: with a density, the free generators given replaced by as many

@@ -276,17 +276,19 @@ std::vector<std::size_t> region_quotas(
     remainder[r] = q - double(quota[r]);
     dealt += quota[r];
   }
-  // The largest remainders first. Equal ones (a grid of equal squares; to 2^-30, rounding) in
-  // an order drawn from the seed, apart from the points' draws: in the faces' order, the same
-  // regions would get the extra points whatever the seed, and no optimization moves them out.
+  // The largest remainders first. Equal ones (a grid of equal squares: the same to 2^-30, to
+  // the nearest, as rounding leaves them) in an order drawn from the seed, apart from the
+  // points' draws: in the faces' order, the same regions would get the extra points whatever
+  // the seed, and no optimization moves them out.
+  std::vector<double> rank(regions);
   std::vector<std::uint64_t> tie(regions);
   std::mt19937_64 tie_rng(seed ^ 0x9e3779b97f4a7c15u);
-  for (std::uint64_t& t : tie) t = tie_rng();
-  const auto rank = [&](std::size_t r) { return std::floor(std::ldexp(remainder[r], 30)); };
+  for (std::size_t r = 0; r < regions; ++r)
+    rank[r] = std::nearbyint(std::ldexp(remainder[r], 30)), tie[r] = tie_rng();
   std::vector<std::size_t> order(regions);
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return rank(a) != rank(b) ? rank(a) > rank(b) : tie[a] < tie[b];
+    return rank[a] != rank[b] ? rank[a] > rank[b] : tie[a] < tie[b];
   });
   for (std::size_t i = 0; dealt < n; i = (i + 1) % regions) ++quota[order[i]], ++dealt;
   for (std::size_t i = 0; dealt > n; i = (i + 1) % regions)

@@ -90,8 +90,9 @@ def test_cells_count_what_the_program_counts(program, data, tmp_path):
         (dict(fixed_points=fixed), ["--fixed-points", tmp_path / "fixed.txt"]),
         (dict(constraints="conforming"), ["--constraints", "conforming"]),
         (dict(points=given), ["--points-in", tmp_path / "given.txt"]),
-        (dict(density="lipschitz", redistribute=True),
-         ["--density", "lipschitz", "--redistribute", "always"]),
+        (dict(points=given, density="lipschitz", redistribute=True),
+         ["--points-in", tmp_path / "given.txt", "--density", "lipschitz", "--redistribute",
+          "always"]),
         (dict(size=0.5), ["--size", 0.5]),
     ]
     for kwargs, options in cases:
@@ -116,6 +117,8 @@ def test_cells_count_what_the_program_counts(program, data, tmp_path):
         cvt2.optimize(d, None, cells=1.5)
     with pytest.raises(ValueError, match=r"size=1e-300 \(inf cells\) asks for too many cells"):
         cvt2.optimize(d, None, size=1e-300)
+    with pytest.raises(ValueError, match=r"cells=1000000000000000000 asks for too many cells"):
+        cvt2.optimize(d, None, cells=10**18, constraints="conforming")
     with pytest.raises(ValueError, match=r"size=1e\+300 \(0 cells\) asks for fewer cells than"):
         cvt2.optimize(d, None, size=1e300)
     with pytest.raises(ValueError, match="boundary='resample' resamples the domain"):
@@ -234,6 +237,11 @@ def test_program_size_and_errors(program, data, tmp_path):
 
     assert "expects 'keep', 'resample' or 'slide'" in fails("--boundary", "glide")
     assert "--size asks for inf cells: too many" in fails("--size", "1e-300")
+    # checked before the conforming lines' sites are placed (at the spacing it asks for)
+    p = subprocess.run([program, str(data / "square_inner_constraints.wkt"), "--quiet",
+                        "--constraints", "conforming", "--cells", str(10**18)],
+                       capture_output=True, text=True, timeout=60)
+    assert p.returncode != 0 and "--cells asks for 1e+18 cells: too many" in p.stderr
     assert "--cells: 99999999" in fails("--cells", 10**11)  # the option named, not --points
     assert "give one of -n, --cells and --size" in fails("--cells", 100, "-n", 5)
     assert "--deviation-bound needs --boundary resample" in fails("--deviation-bound", 1)

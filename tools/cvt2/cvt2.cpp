@@ -932,18 +932,24 @@ int run(const Options& o) {
     const std::string note = CVT_2::IO::moved_points_note(points, moved);
     if (!note.empty()) std::cerr << "cvt2: note: " << note << '\n';
   }
-  CVT_2::Conforming_disks<Point_2> disks;
-  if (!conforming.lines.empty())
-    insert_conforming_sites(o, default_n, cdt, fixed, conforming, disks);
-  const std::size_t present = vertices_in_domain(cdt);
-  std::size_t n = default_n;
-  if (counted) {
+  // --cells, --size: the count asked for, checked before any conforming site is placed
+  const auto cells_wanted = [&] {
     const double wanted =
         o.cells ? double(*o.cells)
                 : std::round(CVT_2::cells_for_cell_size_2(cdt, *o.size, spacing_ratio(o)));
     if (!(wanted <= double(std::int64_t(1) << 53)))
       throw Usage_error(std::string(o.cells ? "--cells" : "--size") + " asks for " +
                         CVT_2::internal::number_text(wanted) + " cells: too many");
+    return wanted;
+  };
+  if (counted) cells_wanted();
+  CVT_2::Conforming_disks<Point_2> disks;
+  if (!conforming.lines.empty())
+    insert_conforming_sites(o, default_n, cdt, fixed, conforming, disks);
+  const std::size_t present = vertices_in_domain(cdt);
+  std::size_t n = default_n;
+  if (counted) {
+    const double wanted = cells_wanted();
     if (wanted < double(present))
       throw Usage_error(std::string(o.cells ? "--cells" : "--size") + " asks for " +
                         std::to_string(static_cast<long long>(wanted)) + " cells, fewer than the " +

@@ -6,8 +6,10 @@
 #include <CVT_2/IO/internal/write_number.h>
 
 #include <algorithm>
+#include <charconv>
 #include <ostream>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -25,8 +27,12 @@ using Metadata = std::vector<std::pair<std::string, std::string>>;
 /// Raises the number under `key` to `value` where it is smaller: a bound that only grows, as
 /// `max_deviation` once the boundary slid. A missing key is left missing.
 inline void raise_metadata_number(Metadata& metadata, const std::string& key, double value) {
-  for (auto& [k, v] : metadata)
-    if (k == key) v = internal::number_text(std::max(std::stod(v), value));
+  for (auto& [k, v] : metadata) {
+    if (k != key) continue;
+    double was = 0;  // read in any locale; a value that is no number is replaced
+    const auto r = std::from_chars(v.data(), v.data() + v.size(), was);
+    v = internal::number_text(r.ec == std::errc() ? std::max(was, value) : value);
+  }
 }
 
 }  // namespace IO

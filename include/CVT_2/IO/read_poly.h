@@ -3,6 +3,7 @@
 #ifndef CVT_2_IO_READ_POLY_H
 #define CVT_2_IO_READ_POLY_H
 
+#include <CVT_2/IO/internal/crossing_segments.h>
 #include <CVT_2/IO/internal/line_reader.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/internal/valid_point.h>
@@ -181,8 +182,7 @@ void insert_poly(CDT& cdt, const Poly_data<typename CDT::Point_2>& data) {
       for (std::size_t k = 0; k < j; ++k) {
         const auto& c = data.vertices[data.segments[k][0]];
         const auto& d = data.vertices[data.segments[k][1]];
-        if (CGAL::orientation(a, b, c) * CGAL::orientation(a, b, d) < 0 &&
-            CGAL::orientation(c, d, a) * CGAL::orientation(c, d, b) < 0) {
+        if (internal::cross_properly(a, b, c, d)) {
           which = "segment " + internal::to_string(c) + " - " + internal::to_string(d) +
                   " of line " + std::to_string(data.segment_lines[k]);
           break;

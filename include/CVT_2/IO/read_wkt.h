@@ -3,6 +3,7 @@
 #ifndef CVT_2_IO_READ_WKT_H
 #define CVT_2_IO_READ_WKT_H
 
+#include <CVT_2/IO/internal/crossing_segments.h>
 #include <CVT_2/IO/internal/line_reader.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/insert_generators_2.h>
@@ -271,10 +272,10 @@ Wkt_data<K> read_wkt(const std::string& filename) {
 /// boundary) constrains the cells with its part in the closed domain; the rest has no effect.
 /// \throws Domain_error naming the file and line, and a polygon's ring as `polygon k, ring r`
 ///         (from 0 within the line or feature, ring 0 the exterior): a geometry that crosses
-///         itself or an earlier one (with a triangulation that does not compute
-///         intersections), a hole not inside its polygon's exterior or inside another hole (as
-///         GEOS finds the polygon invalid), an empty domain, a linestring wholly outside the
-///         domain (in another coordinate system, or with x and y swapped?), or a point outside
+///         itself or an earlier one, with the two segments (with a triangulation that does
+///         not compute intersections), a hole not inside its polygon's exterior or inside another
+///         hole (as GEOS finds the polygon invalid), an empty domain, a linestring wholly outside
+///         the domain (in another coordinate system, or with x and y swapped?), or a point outside
 ///         the domain (the first few named, with how many).
 template <class CDT>
 void insert_wkt(CDT& cdt, const Wkt_data<typename CDT::Geom_traits>& w) {
@@ -292,25 +293,35 @@ void insert_wkt(CDT& cdt, const Wkt_data<typename CDT::Geom_traits>& w) {
       return w.source + ": " + ring;
     return w.where(n) + ring;
   };
-  const auto constrain = [&](const auto& points, bool closed, std::size_t line) {
-    std::vector<Point_2> p;
-    for (const Point_2& q : points)
-      if (p.empty() || q != p.back()) p.push_back(q);
-    if (closed && p.size() > 1 && p.front() == p.back()) p.pop_back();
+  // Each ring and line, in the order they are inserted: visit(points, closed, line).
+  const auto for_each_geometry = [&w](const auto& visit) {
+    for (std::size_t i = 0; i < w.polygons.size(); ++i) {
+      const auto& pwh = w.polygons[i];
+      visit(pwh.outer_boundary(), true, w.polygon_lines[i]);
+      for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h)
+        visit(*h, true, w.polygon_lines[i]);
+    }
+    for (std::size_t i = 0; i < w.polylines.size(); ++i)
+      visit(w.polylines[i], false, w.polyline_lines[i]);
+  };
+  std::size_t inserted = 0;
+  for_each_geometry([&](const auto& points, bool closed, std::size_t line) {
+    const std::vector<Point_2> p = internal::polyline_points(points, closed);
     try {
       cdt.insert_constraint(p.begin(), p.end(), closed);
     } catch (const typename CDT::Intersection_of_constraints_exception&) {
-      throw Domain_error(where(line) + "this geometry crosses itself or an earlier one");
+      // Which segments cross, found again from the input (the triangulation refused one).
+      std::vector<std::array<Point_2, 2>> earlier;
+      std::size_t g = 0;
+      for_each_geometry([&](const auto& q, bool q_closed, std::size_t) {
+        if (g++ < inserted)
+          internal::add_segments(internal::polyline_points(q, q_closed), q_closed, earlier);
+      });
+      throw Domain_error(where(line) + "this geometry crosses itself or an earlier one" +
+                         internal::first_crossing(earlier, p, closed));
     }
-  };
-  for (std::size_t i = 0; i < w.polygons.size(); ++i) {
-    const auto& pwh = w.polygons[i];
-    constrain(pwh.outer_boundary(), true, w.polygon_lines[i]);
-    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h)
-      constrain(*h, true, w.polygon_lines[i]);
-  }
-  for (std::size_t i = 0; i < w.polylines.size(); ++i)
-    constrain(w.polylines[i], false, w.polyline_lines[i]);
+    ++inserted;
+  });
   internal::check_holes_inside(cdt, w.polygons, where_ring);
   mark_domain_from_polygons_2(cdt, w.polygons);
   if (!internal::has_domain_face(cdt))

@@ -333,20 +333,20 @@ bool Bvd_mesh_builder_2<Diagram>::add_free_cell(const Triangulation& cdt, Vertex
 
 // Whether p and q, consecutive in the cell of `generator`, are one vertex: the same point, or
 // within 2^-40 of their distance to the generator (the rounding of a circumcenter is some
-// 2^-52 of it: two such points are one, in true numbers or nearly), or within 8 units in the
-// last place of their coordinates (a cell small against its coordinates: a point computed
-// from others is rounded to those units, a circumcenter on an edge and the edge's midpoint of
-// a right triangle 1 apart).
+// 2^-52 of it: two such points are one, in true numbers or nearly), or within 2^-49 of their
+// largest coordinate, 8 to 16 units in its last place (a cell small against its coordinates:
+// a point computed from others is rounded to those units; a right triangle's circumcenter and
+// its hypotenuse's midpoint come 1 apart).
 template <class Diagram>
 bool Bvd_mesh_builder_2<Diagram>::is_one_point(const Point_2& p, const Point_2& q,
                                                const Point_2& generator) {
   if (p == q) return true;
-  const double far = CGAL::to_double(CGAL::squared_distance(p, generator));
+  const double d2 = CGAL::to_double(CGAL::squared_distance(p, q));
+  if (d2 <= 0x1.0p-80 * CGAL::to_double(CGAL::squared_distance(p, generator))) return true;
   const double size =
       std::max({std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y())),
                 std::abs(CGAL::to_double(q.x())), std::abs(CGAL::to_double(q.y()))});
-  const double ulps = 0x1.0p-49 * size;  // 8 units in the last place of the largest
-  return CGAL::to_double(CGAL::squared_distance(p, q)) <= std::max(0x1.0p-80 * far, ulps * ulps);
+  return std::sqrt(d2) <= 0x1.0p-49 * size;
 }
 
 // The circumcenters of the cycle [first, first + n) that are one point with the next, as merges.
