@@ -306,8 +306,7 @@ struct Domain {
     if (data.description.index() == 1)
       for (std::int64_t& item : segment_items) item += offset;
     const auto cdt = triangulation();
-    for (auto v = cdt->finite_vertices_begin(); v != cdt->finite_vertices_end(); ++v)
-      own_cells += CVT_2::internal::has_domain_face(*cdt, v) ? 1 : 0;
+    own_cells = CVT_2::internal::number_of_vertices_in_domain(*cdt);
     bounds = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     for (auto f = cdt->finite_faces_begin(); f != cdt->finite_faces_end(); ++f) {
       if (!f->is_inside_domain()) continue;
@@ -727,6 +726,19 @@ struct Density_choice {
     if (kind == LIPSCHITZ) s.emplace(cdt, k, boundary_size);
     return s;
   }
+
+  // `count` random points in the domain of `cdt` that follow this density, as cvt2 draws them
+  // (`np`: the seed, by_region); `s` is sizing(cdt).
+  template <class NP>
+  std::vector<Point_2> random_points(const CDT& cdt, const std::optional<Sizing>& s,
+                                     std::size_t count, const NP& np) const {
+    if (kind == LIPSCHITZ)
+      return CVT_2::random_points_in_domain_2(cdt, count, np.sizing_field(std::cref(*s)));
+    if (kind == CALLABLE)
+      return CVT_2::random_points_in_domain_2(cdt, count,
+                                              np.density(Python_density{function, true}));
+    return CVT_2::random_points_in_domain_2(cdt, count, np);
+  }
 };
 
 std::size_t checked_count(std::int64_t n, const char* name) {
@@ -745,16 +757,9 @@ Array random_points(const Domain& domain, std::int64_t n, std::uint64_t seed,
     const CVT_2::internal::Interrupt_scope interruptible{Signal_check()};
     const auto cdt = domain.triangulation();
     const std::optional<Sizing> sizing = choice.sizing(*cdt);
-    const auto np = CVT_2::parameters::random_seed(seed).by_region(by_region);
-    if (count == 0) {
-    } else if (choice.kind == Density_choice::LIPSCHITZ) {
-      points = CVT_2::random_points_in_domain_2(*cdt, count, np.sizing_field(std::cref(*sizing)));
-    } else if (choice.kind == Density_choice::CALLABLE) {
-      points = CVT_2::random_points_in_domain_2(*cdt, count,
-                                                np.density(Python_density{choice.function, true}));
-    } else {
-      points = CVT_2::random_points_in_domain_2(*cdt, count, np);
-    }
+    if (count > 0)
+      points = choice.random_points(*cdt, sizing, count,
+                                    CVT_2::parameters::random_seed(seed).by_region(by_region));
   } catch (const std::exception& e) {  // the points' reserve(): length_error or bad_alloc
     if (!dynamic_cast<const std::length_error*>(&e) && !dynamic_cast<const std::bad_alloc*>(&e))
       throw;
@@ -1300,15 +1305,10 @@ std::shared_ptr<Optimization> optimize(
     }
     // As cvt2 --constraints conforming: the lines' pairs, fixed, at the cells' spacing.
     CVT_2::Conforming_disks<Point_2> disks;
-    const auto vertices_in_domain = [&cdt] {
-      std::size_t n = 0;
-      for (auto v = cdt->finite_vertices_begin(); v != cdt->finite_vertices_end(); ++v)
-        n += CVT_2::internal::has_domain_face(*cdt, v) ? 1 : 0;
-      return n;
-    };
     if (lineless) {
       // at the spacing of the cells asked for (cvt2 --cells, --size), else of those there are
-      const std::size_t cells = cells_asked ? std::size_t(*cells_asked) : vertices_in_domain();
+      const std::size_t cells = cells_asked ? std::size_t(*cells_asked)
+                                            : CVT_2::internal::number_of_vertices_in_domain(*cdt);
       std::size_t left_out = 0;
       const double spacing =
           size ? *size
@@ -1331,13 +1331,19 @@ std::shared_ptr<Optimization> optimize(
     const bool counted = cells_asked || size;
     std::size_t to_draw = 0;
     if (counted) {
-      const std::size_t present = vertices_in_domain();
+      const std::size_t present = CVT_2::internal::number_of_vertices_in_domain(*cdt);
       const auto [wanted, asked] = cells_wanted();
       if (wanted < double(present))
         throw py::value_error(asked + " asks for fewer cells than the " + std::to_string(present) +
                               " vertices of the domain and the points");
       to_draw = std::size_t(wanted) - present;
     }
+    // Points drawn as cvt2 draws them: none in the circles of conforming lines; with cells= or
+    // size=, dealt to the regions (those drawn again for the circles, with the next seeds, not).
+    const auto draw = [&](std::size_t count, std::uint64_t s) {
+      return choice.random_points(
+          *cdt, sizing, count, CVT_2::parameters::random_seed(s).by_region(counted && s == seed));
+    };
     // As cvt2 --redistribute: with a density, the free generators given replaced by as many
     // drawn from it, always or if they do not follow it.
     if (redistribute != "never" && choice.kind != Density_choice::UNIFORM) {
@@ -1351,15 +1357,6 @@ std::shared_ptr<Optimization> optimize(
       if (!given.empty()) {
         for (const auto v : given) row.erase(&*v);  // before their addresses may be reused
         CVT_2::remove_generators_2(*cdt, given);
-        // As cvt2 draws them: none in the circles of conforming lines.
-        const auto draw = [&](std::size_t count, std::uint64_t s) {
-          const auto np = CVT_2::parameters::random_seed(s);
-          return choice.kind == Density_choice::LIPSCHITZ
-                     ? CVT_2::random_points_in_domain_2(*cdt, count,
-                                                        np.sizing_field(std::cref(*sizing)))
-                     : CVT_2::random_points_in_domain_2(
-                           *cdt, count, np.density(Python_density{choice.function, true}));
-        };
         if (counted)  // drawn with the others, below
           to_draw += given.size();
         else
@@ -1374,21 +1371,8 @@ std::shared_ptr<Optimization> optimize(
                              ": replaced by as many drawn from it (redistribute=False keeps them)");
       }
     }
-    if (to_draw > 0) {
-      // As cvt2 draws them: dealt to the regions, none in the circles of conforming lines (those
-      // drawn again for the circles, independently).
-      const auto draw = [&](std::size_t count, std::uint64_t s) {
-        const auto np = CVT_2::parameters::random_seed(s).by_region(s == seed);
-        return choice.kind == Density_choice::LIPSCHITZ
-                   ? CVT_2::random_points_in_domain_2(*cdt, count,
-                                                      np.sizing_field(std::cref(*sizing)))
-               : choice.kind == Density_choice::CALLABLE
-                   ? CVT_2::random_points_in_domain_2(
-                         *cdt, count, np.density(Python_density{choice.function, true}))
-                   : CVT_2::random_points_in_domain_2(*cdt, count, np);
-      };
+    if (to_draw > 0)
       CVT_2::insert_generators_2(*cdt, CVT_2::draw_outside_disks_2(disks, to_draw, seed, draw));
-    }
     std::optional<CVT_2::Sliding_runs_2<CDT>> runs;
     if (slide) {
       runs.emplace(*domain->runs);

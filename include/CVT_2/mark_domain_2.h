@@ -37,6 +37,15 @@ bool has_domain_face(const CDT& cdt, typename CDT::Vertex_handle v) {
   return false;
 }
 
+// How many finite vertices lie in the closed domain: each has a cell.
+template <class CDT>
+std::size_t number_of_vertices_in_domain(const CDT& cdt) {
+  std::size_t n = 0;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    n += has_domain_face(cdt, v) ? 1 : 0;
+  return n;
+}
+
 // Before `cdt.remove(v)`: `link` gets v's neighbours, `kept` the faces around them but v's
 // own, which the removal keeps with their domain marks; the faces around the link after it
 // that are not in `kept` fill the hole.

@@ -719,14 +719,6 @@ void print_summary(const Options& o, const CVT_2::Optimization_result& r, const 
             << '\n';
 }
 
-// The vertices with the domain on a side: each has a cell in the outputs.
-std::size_t vertices_in_domain(const CDT& cdt) {
-  std::size_t n = 0;
-  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-    n += CVT_2::internal::has_domain_face(cdt, v) ? 1 : 0;
-  return n;
-}
-
 // --boundary-spacing, or resample_constraints_2()'s default; with keep, 1 (the input's vertices
 // stay; the number of cells that --size asks for as before).
 double spacing_ratio(const Options& o) {
@@ -822,7 +814,8 @@ double background_size(const Options& o, std::size_t cells, const CDT& cdt) {
 void insert_conforming_sites(const Options& o, std::size_t free_generators, CDT& cdt,
                              std::vector<Point_2>& fixed, Conforming& conforming,
                              CVT_2::Conforming_disks<Point_2>& disks) {
-  const std::size_t cells = o.cells ? *o.cells : free_generators + vertices_in_domain(cdt);
+  const std::size_t cells =
+      o.cells ? *o.cells : free_generators + CVT_2::internal::number_of_vertices_in_domain(cdt);
   std::size_t left_out = 0;
   conforming.pairs = CVT_2::insert_conforming_sites_2(
       cdt, conforming.lines, background_size(o, cells, cdt), disks, &left_out);
@@ -901,7 +894,8 @@ int run(const Options& o) {
     sizing.lipschitz.emplace(
         cdt, o.lipschitz_k,
         o.boundary_size ? std::optional<K::FT>(*o.boundary_size) : std::nullopt);
-  const std::size_t own = vertices_in_domain(cdt);  // the domain's vertices and generators
+  // the domain's vertices and generators
+  const std::size_t own = CVT_2::internal::number_of_vertices_in_domain(cdt);
   if (!o.points_in.empty()) {
     if (!std::ifstream(o.points_in))
       throw std::runtime_error("cannot open the points file '" + o.points_in + "'");
@@ -946,7 +940,7 @@ int run(const Options& o) {
   CVT_2::Conforming_disks<Point_2> disks;
   if (!conforming.lines.empty())
     insert_conforming_sites(o, default_n, cdt, fixed, conforming, disks);
-  const std::size_t present = vertices_in_domain(cdt);
+  const std::size_t present = CVT_2::internal::number_of_vertices_in_domain(cdt);
   std::size_t n = default_n;
   if (counted) {
     const double wanted = cells_wanted();
