@@ -1,11 +1,12 @@
 # Installs the CVT_2 build tree into a fresh prefix, then configures, builds and runs the
 # consumer project against it; with -DBUILD_TREE=ON, against the build tree itself, uninstalled
 # (CVT_2_DIR); with -DSUBPROJECT=<source dir>, through add_subdirectory. With no build type in
-# all three (no optimization): the consumer proves the export, it need not run fast.
+# all three (no optimization): the consumer proves the export, it need not run fast. With
+# -DEXPECTED_VERSION=x.y.z the consumer only checks that the headers it finds are that version.
 # Run by the CTest tests consumer_find_package, consumer_build_tree and consumer_subproject:
 #   cmake -DCVT_2_BINARY_DIR=... -DCONSUMER_SOURCE_DIR=... -DCONSUMER_BINARY_DIR=...
 #         -DCONSUMER_PREFIX=... [-DBUILD_TREE=ON | -DSUBPROJECT=...] [-DGENERATOR=...]
-#         [-DCXX_COMPILER=...] [-DCGAL_DIR=...] -P run_consumer.cmake
+#         [-DCXX_COMPILER=...] [-DCGAL_DIR=...] [-DEXPECTED_VERSION=...] -P run_consumer.cmake
 foreach(var CVT_2_BINARY_DIR CONSUMER_SOURCE_DIR CONSUMER_BINARY_DIR CONSUMER_PREFIX)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "run_consumer.cmake: ${var} is not set")
@@ -40,6 +41,9 @@ if(CXX_COMPILER)
 endif()
 if(CGAL_DIR)
   list(APPEND configure_args -DCGAL_DIR=${CGAL_DIR})
+endif()
+if(EXPECTED_VERSION)
+  list(APPEND configure_args -DCVT_2_EXPECTED_VERSION=${EXPECTED_VERSION})
 endif()
 run_step("configure" ${CMAKE_COMMAND} ${configure_args})
 run_step("build" ${CMAKE_COMMAND} --build ${CONSUMER_BINARY_DIR})
