@@ -13,5 +13,5 @@ int main() {
   std::cout << "cvt_2_consumer: CVT_2 " << CVT_2_VERSION_STRING << " (expected "
             << CVT_2_EXPECTED_VERSION << "), CGAL " << CGAL_VERSION_STR << "\n";
   return std::strcmp(CVT_2_VERSION_STRING, CVT_2_EXPECTED_VERSION) == 0 ? EXIT_SUCCESS
-                                                                         : EXIT_FAILURE;
+                                                                        : EXIT_FAILURE;
 }
