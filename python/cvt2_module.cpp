@@ -22,6 +22,7 @@
 #include <CVT_2/exceptions.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/internal/input_segments_of_constraints.h>
+#include <CVT_2/internal/memory_estimate.h>
 #include <CVT_2/internal/parallel/Interrupt_scope.h>
 #include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/valid_point.h>
@@ -166,6 +167,8 @@ py::array_t<T> to_array(const std::vector<T>& v, py::ssize_t columns = 1) {
 // Generators into a triangulation whose domain is marked; a bad one is named by its row (the
 // first few of those outside, with how many). Returns the notes: the points moved onto the
 // boundary, outside it by no more than `boundary_tolerance` (None: the library's default).
+// `where`, if given, receives where each point is now (as given, or moved onto the boundary):
+// the positions vertices_of() finds their vertices at.
 std::vector<std::string> insert_points(CDT& cdt, const std::vector<Point_2>& points,
                                        const std::string& name,
                                        std::optional<double> boundary_tolerance = {},
@@ -205,10 +208,10 @@ struct Signal_check {
   }
 };
 
-// The vertex each of `points` became in `cdt`, into which they were inserted (points merged as
-// duplicates share one). A point insert_generators_2() moved onto the boundary (outside it by a
-// rounding) is at the nearest vertex around where it was: the vertex is within the boundary
-// tolerance of it, and any other that close would have been merged with it.
+// The vertex at each of `points` in `cdt`, where insert_points() put them (its `where`: points
+// moved onto the boundary are where they went; duplicates share one); none (a null handle) for a
+// point that is no vertex. Looking for the vertex nearest to where a point was given instead
+// found another point's along a slanted edge, a rounding away.
 std::vector<CDT::Vertex_handle> vertices_of(const CDT& cdt, const std::vector<Point_2>& points) {
   std::vector<std::size_t> order(points.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
@@ -223,25 +226,11 @@ std::vector<CDT::Vertex_handle> vertices_of(const CDT& cdt, const std::vector<Po
   CDT::Face_handle hint;
   for (const std::size_t i : order) {
     CVT_2::internal::poll_interrupt_sometimes();
-    const Point_2& p = points[i];
     CDT::Locate_type lt;
     int li;
-    const CDT::Face_handle f = cdt.locate(p, lt, li, hint);
+    const CDT::Face_handle f = cdt.locate(points[i], lt, li, hint);
     hint = f;
-    if (lt == CDT::VERTEX) {
-      out[i] = f->vertex(li);
-      continue;
-    }
-    CDT::Vertex_handle nearest;
-    for (const CDT::Face_handle g : {f, f->neighbor(0), f->neighbor(1), f->neighbor(2)})
-      for (int j = 0; j < 3; ++j) {
-        const CDT::Vertex_handle v = g->vertex(j);
-        if (!cdt.is_infinite(v) &&
-            (nearest == CDT::Vertex_handle() ||
-             CGAL::compare_distance_to_point(p, v->point(), nearest->point()) == CGAL::SMALLER))
-          nearest = v;
-      }
-    out[i] = nearest;
+    if (lt == CDT::VERTEX) out[i] = f->vertex(li);
   }
   return out;
 }
@@ -830,7 +819,7 @@ struct Diagram {
       const std::vector<CDT::Vertex_handle> v = vertices_of(*cdt, all);
       std::vector<std::int64_t> first(mesh->number_of_cells(), -1);
       for (std::size_t i = 0; i < all.size(); ++i) {
-        if (!bvd->has_cell(v[i])) {
+        if (v[i] == CDT::Vertex_handle() || !bvd->has_cell(v[i])) {
           region[i] = -1;
           continue;
         }
@@ -954,10 +943,12 @@ std::shared_ptr<Diagram> bounded_voronoi(const std::shared_ptr<const Domain>& do
   py::gil_scoped_release release;
   const CVT_2::internal::Interrupt_scope interruptible{Signal_check()};
   std::shared_ptr<CDT> cdt = domain->triangulation();
-  std::vector<std::string> notes = insert_points(*cdt, points, "points", boundary_tolerance);
+  std::vector<Point_2> where;
+  std::vector<std::string> notes =
+      insert_points(*cdt, points, "points", boundary_tolerance, &where);
   auto diagram = std::make_shared<Diagram>(std::move(cdt), domain, t);
   diagram->notes = std::move(notes);
-  diagram->given = std::move(points);  // for point_region, found when asked for
+  diagram->given = std::move(where);  // for point_region, found when asked for
   return diagram;
 }
 
@@ -970,14 +961,15 @@ struct Editing {
   std::shared_ptr<CDT> cdt;
   std::unique_ptr<BVD> bvd;
   std::unique_ptr<CVT_2::Constraint_editor_2<CDT>> editor;
-  std::vector<Point_2> given;
+  std::vector<Point_2> given;  // where the points given are, as relax() and move() move them
   std::vector<std::string> notes;
 
   Editing(const std::shared_ptr<const Domain>& d, py::handle points_object,
           std::optional<double> boundary_tolerance)
-      : domain(d), given(to_points(points_object, "points")) {
+      : domain(d) {
     cdt = domain->triangulation();
-    notes = insert_points(*cdt, given, "points", boundary_tolerance);
+    notes = insert_points(*cdt, to_points(points_object, "points"), "points", boundary_tolerance,
+                          &given);
     bvd = std::make_unique<BVD>(*cdt);
     editor = std::make_unique<CVT_2::Constraint_editor_2<CDT>>(*cdt, *bvd);
     editor->carry_weights(true);
@@ -1061,9 +1053,22 @@ struct Editing {
     for (std::size_t k = 0; k < seen.size(); ++k)
       if (seen[k]->point() != from[k])
         moved_from.push_back(from[k]), moved_to.push_back(seen[k]->point());
+    follow(moved_from, moved_to);
     out["moved_from"] = to_array(moved_from);
     out["moved_to"] = to_array(moved_to);
     return out;
+  }
+  // The points given that were at `from[k]` are now at `to[k]`: the snapshots' point_region
+  // follows them.
+  void follow(const std::vector<Point_2>& from, const std::vector<Point_2>& to) {
+    if (from.empty()) return;
+    std::map<std::pair<double, double>, Point_2> moved;
+    for (std::size_t k = 0; k < from.size(); ++k)
+      moved.emplace(std::pair(from[k].x(), from[k].y()), to[k]);
+    for (Point_2& p : given) {
+      const auto it = moved.find(std::pair(p.x(), p.y()));
+      if (it != moved.end()) p = it->second;
+    }
   }
   py::dict move(py::handle from, py::handle to) {
     const Point_2 p = point(from, "vertex"), q = point(to, "to");
@@ -1073,7 +1078,9 @@ struct Editing {
     if (lt != CDT::VERTEX)
       throw CVT_2::Domain_error("move_constrained_vertex: no vertex at " +
                                 CVT_2::internal::to_string(p));
-    editor->move_constrained_vertex(f->vertex(li), q);
+    const CDT::Vertex_handle v = f->vertex(li);
+    editor->move_constrained_vertex(v, q);
+    follow({p}, {v->point()});
     return report();
   }
   py::dict remove(std::int64_t c) {
@@ -1125,7 +1132,8 @@ py::dict natural_neighbours(const std::shared_ptr<const Domain>& domain, py::han
     py::gil_scoped_release release;
     const CVT_2::internal::Interrupt_scope interruptible{Signal_check()};
     const std::shared_ptr<CDT> cdt = domain->triangulation();
-    insert_points(*cdt, nodes, "nodes", boundary_tolerance);
+    std::vector<Point_2> where;
+    insert_points(*cdt, nodes, "nodes", boundary_tolerance, &where);
     const BVD bvd(*cdt);
     const auto m =
         CVT_2::natural_neighbor_matrix_2(bvd, queries,
@@ -1133,7 +1141,7 @@ py::dict natural_neighbours(const std::shared_ptr<const Domain>& domain, py::han
                                              method == "laplace" ? CVT_2::LAPLACE : CVT_2::SIBSON)
                                              .number_of_threads(t)
                                              .lips(lips));
-    std::vector<Point_2> all = std::move(nodes);
+    std::vector<Point_2> all = std::move(where);
     const std::vector<Point_2> own = own_points(*domain);
     all.insert(all.end(), own.begin(), own.end());
     columns = all.size();
@@ -1141,7 +1149,8 @@ py::dict natural_neighbours(const std::shared_ptr<const Domain>& domain, py::han
     {
       const std::vector<CDT::Vertex_handle> v = vertices_of(*cdt, all);
       column.reserve(v.size());
-      for (std::size_t i = 0; i < v.size(); ++i) column.emplace(&*v[i], std::int64_t(i));
+      for (std::size_t i = 0; i < v.size(); ++i)
+        if (v[i] != CDT::Vertex_handle()) column.emplace(&*v[i], std::int64_t(i));
     }
     std::vector<std::int64_t> of_node(m.nodes.size());
     for (std::size_t j = 0; j < m.nodes.size(); ++j) {
@@ -1291,7 +1300,8 @@ std::shared_ptr<Optimization> optimize(
       return std::pair(wanted, asked);
     };
     if (cells_asked || size) cells_wanted();
-    out->notes = insert_points(*cdt, points, "points", boundary_tolerance);
+    std::vector<Point_2> where;  // of the points, as vertices_of() finds them below
+    out->notes = insert_points(*cdt, points, "points", boundary_tolerance, &where);
     if (!fixed.empty()) {  // as cvt2 --fixed-points: inserted after the points
       const std::vector<std::string> notes = insert_points(*cdt, fixed, "fixed_points", {}, &fixed);
       out->notes.insert(out->notes.end(), notes.begin(), notes.end());
@@ -1299,9 +1309,10 @@ std::shared_ptr<Optimization> optimize(
     // The input row of each vertex (the first, for merged rows), kept as the vertices move.
     std::unordered_map<const void*, std::int64_t> row;
     {
-      const std::vector<CDT::Vertex_handle> v = vertices_of(*cdt, points);
+      const std::vector<CDT::Vertex_handle> v = vertices_of(*cdt, where);
       row.reserve(v.size());
-      for (std::size_t i = 0; i < v.size(); ++i) row.emplace(&*v[i], std::int64_t(i));
+      for (std::size_t i = 0; i < v.size(); ++i)
+        if (v[i] != CDT::Vertex_handle()) row.emplace(&*v[i], std::int64_t(i));
     }
     // As cvt2 --constraints conforming: the lines' pairs, fixed, at the cells' spacing.
     CVT_2::Conforming_disks<Point_2> disks;
@@ -1337,6 +1348,10 @@ std::shared_ptr<Optimization> optimize(
         throw py::value_error(asked + " asks for fewer cells than the " + std::to_string(present) +
                               " vertices of the domain and the points");
       to_draw = std::size_t(wanted) - present;
+      // as cvt2 --cells: refused rather than killed after minutes of work
+      const std::string shortfall =
+          CVT_2::internal::memory_shortfall(double(to_draw), algorithm == "lbfgs");
+      if (!shortfall.empty()) throw py::value_error(asked + ": " + shortfall);
     }
     // Points drawn as cvt2 draws them: none in the circles of conforming lines; with cells= or
     // size=, dealt to the regions (those drawn again for the circles, with the next seeds, not).

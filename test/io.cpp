@@ -144,6 +144,18 @@ TEST_CASE("points files: one 'x y' a line, errors name the line", "[io]") {
   CHECK_THAT(
       message_of<CVT_2::IO::Parse_error>([&] { CVT_2::IO::read_points<Point>(bad, "p.txt"); }),
       Catch::Contains("p.txt:2: expected 'x y'"));
+  // What cvt2 --points-out writes: 'x y c', the constrained generators (c = 1) skipped.
+  std::istringstream written("0 0 1\n0.5 0.5 0\n1 0 1\n0.25 0.75 0\n");
+  const auto w = CVT_2::IO::read_points<Point>(written, "out.txt");
+  CHECK(w.points == std::vector<Point>{Point(0.5, 0.5), Point(0.25, 0.75)});
+  CHECK(w.lines == std::vector<std::size_t>{2, 4});
+  CHECK(w.constrained_skipped == 2);
+  for (const char* text : {"0.5 0.5 2\n", "0.5 0.5 0 0\n", "0.5 0.5 x\n"}) {
+    std::istringstream third(text);
+    CHECK_THAT(
+        message_of<CVT_2::IO::Parse_error>([&] { CVT_2::IO::read_points<Point>(third, "p.txt"); }),
+        Catch::Contains("p.txt:1: expected 'x y' (or 'x y c', c 0 or 1"));
+  }
 }
 
 TEST_CASE("Triangle's rule keeps every region closed by inner constraints", "[io][domain]") {
@@ -314,6 +326,18 @@ TEST_CASE("WKT: polygons, linestrings and points, each with its line", "[io][wkt
   REQUIRE(lt == Cdt::VERTEX);
   CHECK(cdt.are_there_incident_constraints(
       f->vertex(li)));  // on the linestring: a constrained vertex
+}
+
+TEST_CASE("WKT with Windows line ends or trailing tabs reads as with Unix ones", "[io][wkt]") {
+  const auto w = parse_wkt(  // "malformed POLYGON" when CGAL saw the CR
+      "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))\r\nLINESTRING (1 1, 3 3)\t\r\nPOINT (1 3) \r\n");
+  const auto u =
+      parse_wkt("POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))\nLINESTRING (1 1, 3 3)\nPOINT (1 3)\n");
+  REQUIRE(w.polygons.size() == 1);
+  CHECK(w.polygons[0].outer_boundary() == u.polygons[0].outer_boundary());
+  CHECK(w.polylines == u.polylines);
+  CHECK(w.points == std::vector<Point>{Point(1, 3)});
+  CHECK(w.polyline_lines == std::vector<std::size_t>{2});
 }
 
 TEST_CASE("bad WKT gives an error that names the line and what is wrong", "[io][wkt]") {

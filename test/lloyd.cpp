@@ -420,6 +420,25 @@ TEST_CASE("random points by region: each region's count is its mass less its gen
   CAPTURE(extra);
   CHECK(*std::min_element(extra.begin(), extra.end()) > 0);  // each square, some seeds
   CHECK(counts.size() > 10);
+  // Squares equal but for their last bits, as digitised data are (sides 1 + (k - 3.5) 2^-40):
+  // the remainders lie within 2^-34 on either side of 3/8, a multiple of 2^-30. Rounded down to
+  // 2^-30, those below 3/8 would rank last and never get one more.
+  CVT_2::IO::Poly_data<Point> near;
+  for (int k = 0; k < 8; ++k) {
+    const double side = 1 + (k - 3.5) * 0x1p-40;
+    add_ring(near, {{2.0 * k, 0}, {2.0 * k + side, 0}, {2.0 * k + side, side}, {2.0 * k, side}});
+  }
+  const Cdt near_squares = triangulate(near);
+  extra = {};
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    std::array<int, 8> c{};
+    for (const Point& p : CVT_2::random_points_in_domain_2(
+             near_squares, 27, CVT_2::parameters::random_seed(seed).by_region(true)))
+      ++c[std::size_t(p.x() / 2)];
+    for (int k = 0; k < 8; ++k) extra[k] += c[k] == 4;
+  }
+  CAPTURE(extra);
+  CHECK(*std::min_element(extra.begin(), extra.end()) > 0);
 }
 
 TEST_CASE("random initial generators are reproducible, inside, and follow the density", "[lloyd]") {

@@ -214,7 +214,8 @@ struct Conforming_pair_2 {
 /// at `spacing` (`conforming_sites_2()`), and adds their circles to `disks`; returns the pairs
 /// inserted, line after line. A step whose two generators are not both strictly inside the
 /// domain (in a domain face, or on an edge that is no constraint) is left out, its generators
-/// not inserted, and counted in `*left_out` if given. The generators are to stay fixed
+/// not inserted and its circles not added unless a step kept shares them, and counted in
+/// `*left_out` if given. The generators are to stay fixed
 /// (`fixed_points`) and the circles free of others (`keep_out(disks)`).
 /// \throws std::invalid_argument as `conforming_sites_2()`.
 template <class CDT>
@@ -235,16 +236,24 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
   std::size_t out = 0;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const auto c = conforming_sites_2(lines[i], spacing);
-    disks.add(c);
+    // The circles of the nodes of the steps kept: one kept empty for a pair left out would
+    // only keep the generators around from their centroids (a line along the boundary, all
+    // its steps left out, never converged).
+    std::vector<bool> used(c.nodes.size(), false);
     for (std::size_t k = 0; k + 1 < c.sites.size(); k += 2) {
       if (strictly_inside(c.sites[k]) && strictly_inside(c.sites[k + 1])) {
         sites.push_back(c.sites[k]);
         sites.push_back(c.sites[k + 1]);
         pairs.push_back({c.sites[k], c.sites[k + 1], i});
+        used[k / 2] = used[k / 2 + 1] = true;
       } else {
         ++out;
       }
     }
+    Conforming_sites<Point_2> kept;
+    for (std::size_t k = 0; k < c.nodes.size(); ++k)
+      if (used[k]) kept.nodes.push_back(c.nodes[k]), kept.radii.push_back(c.radii[k]);
+    disks.add(kept);
   }
   insert_generators_2(cdt, sites);
   if (left_out) *left_out = out;

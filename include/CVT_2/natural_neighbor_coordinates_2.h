@@ -57,6 +57,9 @@ class Natural_neighbors {
 
   // The unnormalized weights of q's natural neighbours into `out` (cleared), with a positive
   // weight each; false (and nothing) if q is outside the closed domain.
+  // \throws Domain_error if q is inside but its weights are all 0 or not finite: its
+  // neighbours' cells are too small for double precision at their coordinates (nodes a few
+  // ulps apart), or their areas underflow or overflow (coordinates beyond 1e150 or 1e-150).
   bool compute(const Point_2& q, Natural_neighbor_method method, Face_handle& hint,
                std::vector<std::pair<Vertex_handle, FT>>& out) {
     out.clear();
@@ -75,6 +78,13 @@ class Natural_neighbors {
       laplace(out);
     else
       sibson(out);
+    FT sum = 0;
+    for (const auto& w : out) sum += w.second;
+    if (!(sum > 0) || !CGAL::is_finite(sum))  // an empty row or NaNs would interpolate silently
+      throw Domain_error("query " + to_string(q) +
+                         ": its natural-neighbour weights vanish or are not finite in double "
+                         "precision (its neighbours' cells are too small for their coordinates, "
+                         "or their areas underflow or overflow)");
     return true;
   }
 
@@ -308,7 +318,9 @@ class Natural_neighbors {
 /// \param np optional named parameters:
 ///   - `natural_neighbor_method(m)`: `SIBSON` (the default) or `LAPLACE`.
 ///   - `hint(f)`: a face near q, where the point location starts (the previous query's, say).
-/// \throws std::invalid_argument if q is not finite or exceeds 1e300 in magnitude.
+/// \throws std::invalid_argument if q is not finite or exceeds 1e300 in magnitude;
+///         `Domain_error` (one) if q is inside but its weights vanish or are not finite in double
+///         precision: nodes a few ulps apart, or coordinates whose squares underflow or overflow.
 template <class Diagram, class OutputIterator, class NP = No_named_parameters>
 CGAL::Triple<OutputIterator, typename Diagram::FT, bool> natural_neighbor_coordinates_2(
     const Diagram& bvd, const typename Diagram::Point_2& q, OutputIterator out,
@@ -378,7 +390,8 @@ struct Natural_neighbor_matrix_2 {
 /// on its lip 0.
 /// \param np optional named parameters: `natural_neighbor_method(m)` (default `SIBSON`),
 ///        `number_of_threads(n)` (default 0, one per core), `lips(b)` (default false).
-/// \throws std::invalid_argument for a query that is not finite, naming it.
+/// \throws std::invalid_argument for a query that is not finite, naming it, and `Domain_error`
+///         for a query inside whose weights vanish or are not finite in double precision.
 template <class Diagram, class PointRange, class NP = No_named_parameters>
 Natural_neighbor_matrix_2<typename Diagram::Vertex_handle, typename Diagram::FT>
 natural_neighbor_matrix_2(const Diagram& bvd, const PointRange& queries,

@@ -218,3 +218,19 @@ def test_the_callback_sees_every_state_once_the_final_one_last(square, algorithm
     for answer in (1, "stop", [False]):
         with pytest.raises(TypeError, match=rf"^the callback must return None, True or False, not {type(answer).__name__}$"):
             cvt2.optimize(square, points, algorithm=algorithm, callback=lambda info: answer)
+
+
+def test_cells_too_small_for_double_precision_are_an_error():
+    # A 1 x 1 square at 1e15 (an ulp is 0.125) with 40 cells: cells round to fewer than three
+    # vertices, which every output wrote as an empty polygon (a DISV row MODFLOW rejects).
+    far = cvt2.Domain(np.array([[0, 0], [1, 0], [1, 1], [0, 1]]) + 1e15,
+                      [[0, 1], [1, 2], [2, 3], [3, 0]])
+    with pytest.raises(cvt2.DomainError, match=r"the cell of generator \(.*\) rounds to [0-2] "
+                                               r"vertices: the cells are too small for double "
+                                               r"precision at their coordinates"):
+        cvt2.bounded_voronoi(far, cvt2.random_points(far, 40, seed=1))
+    # the same square at 1e6 is fine
+    near = cvt2.Domain(np.array([[0, 0], [1, 0], [1, 1], [0, 1]]) + 1e6,
+                       [[0, 1], [1, 2], [2, 3], [3, 0]])
+    d = cvt2.bounded_voronoi(near, cvt2.random_points(near, 40, seed=1))
+    assert d.areas.sum() == pytest.approx(1, rel=1e-9)

@@ -136,3 +136,37 @@ def test_optimize_says_which_row_each_generator_started_from(algorithm):
     assert np.array_equal(vd.point_region, np.arange(len(moved.points)))
     assert np.array_equal(vd.input_index, moved.input_index)
     assert vd.duplicates.shape == (0, 2)
+
+
+def test_points_a_rounding_off_a_slanted_edge_keep_their_own_cells():
+    # Points along the triangle's slanted edge, computed in floating point: about half lie
+    # outside it by a rounding and go onto it. Each row must name its own cell (found by the
+    # nearest vertex around where the row was, rows 3 and 8 named rows 0 and 6's).
+    tri = cvt2.Domain([[0, 0], [1, 0], [0.3, 0.7]], [[0, 1], [1, 2], [2, 0]])
+    rows = np.array([1, 0]) + (np.arange(1, 40) / 40)[:, None] * np.array([-0.7, 0.7])
+    d = cvt2.bounded_voronoi(tri, rows)
+    assert len(d.duplicates) == 0
+    assert sorted(d.point_region[:len(rows)]) == sorted(set(d.point_region[:len(rows)]))
+    assert np.max(np.hypot(*(d.points[d.point_region[:len(rows)]] - rows).T)) < 1e-15
+    r = cvt2.optimize(tri, rows, max_iterations=1)
+    assert sorted(r.input_index[r.input_index >= 0]) == list(range(len(rows)))
+    # "a generator that is no node" (an internal error) when rows went to other rows' vertices
+    m = cvt2.natural_neighbours(tri, rows, [[0.3, 0.2], [0.5, 0.45]])
+    assert np.allclose(m.toarray().sum(axis=1), 1)
+
+
+def test_editor_snapshots_follow_the_points_relax_moved():
+    square = cvt2.Domain([[0, 0], [10, 0], [10, 10], [0, 10]], [[0, 1], [1, 2], [2, 3], [3, 0]])
+    rows = np.random.default_rng(4).uniform(0, 10, (500, 2))
+    editor = cvt2.ConstraintEditor(square, rows)
+    editor.insert_constraint([[0, 4.1], [3, 4.3]])
+    moved = editor.relax(2, 5)
+    assert len(moved["moved_from"]) > 10
+    d = editor.bounded_voronoi()
+    assert len(d.duplicates) == 0  # 40 when the snapshot looked for the rows where they started
+    cells = d.point_region[:len(rows)]
+    assert len(set(cells)) == len(rows)
+    where = rows.copy()
+    for a, b in zip(moved["moved_from"], moved["moved_to"]):
+        where[(rows == a).all(axis=1)] = b
+    assert np.array_equal(d.points[cells], where)

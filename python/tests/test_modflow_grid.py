@@ -322,6 +322,16 @@ def test_top_and_bottom_by_cell(program, data, tmp_path):
     p = subprocess.run(command + ["--top", str(tmp_path / "low.txt")], capture_output=True, text=True)
     assert p.returncode != 0 and "cell 6's bottom -2.5 is not below its top -3" in p.stderr
     assert disv.read_text() == text  # the earlier file is kept
+    # before the work, as far as it can be told: a bottom above its top, and with --cells the
+    # count (a million cells would take minutes)
+    big = [program, str(data / "four_clusters.poly"), "--quiet", "--bottom", "-2.5", "--disv",
+           str(disv)]
+    p = subprocess.run(big + ["-n", "1000000", "--top", str(tmp_path / "low.txt")],
+                       capture_output=True, text=True, timeout=10)
+    assert p.returncode != 0 and "cell 6's bottom -2.5 is not below its top -3" in p.stderr
+    p = subprocess.run(big + ["--cells", "1000000", "--top", str(tmp_path / "short.txt")],
+                       capture_output=True, text=True, timeout=10)
+    assert p.returncode != 0 and f"--top has {cells - 1} values for --cells 1000000" in p.stderr
 
 
 def test_module_top_and_bottom_by_cell(data, tmp_path):
@@ -434,6 +444,20 @@ def test_conforming_line_lies_on_faces_that_water_crosses(program, tmp_path):
     _, _, files = run_program(program, domain, tmp_path, "--cells", 1500, outputs=("disv",))
     vertices, centers, cells = read_disv(files["disv"])
     assert max(r[5] for r in connection_geometry(vertices, centers, connections(cells))) > 0.1
+
+
+def test_a_conforming_line_on_the_boundary_keeps_no_circles(program, tmp_path):
+    """A line along the boundary has each pair's outer generator outside: its steps are left
+    out, and so must their circles be (kept empty, they held the generators around away from
+    their centroids: 1000 iterations without converging, against 17)."""
+    domain = tmp_path / "edge.wkt"
+    domain.write_text("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))\nLINESTRING (0 0, 0.6 0, 1 0)\n")
+    summary, _, _ = run_program(program, domain, tmp_path, "-n", 50, "--constraints", "conforming")
+    plain = tmp_path / "plain.wkt"
+    plain.write_text("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))\n")
+    alone, _, _ = run_program(program, plain, tmp_path, "-n", 50)
+    assert summary["stop"] == "converged"
+    assert summary["energy"] == alone["energy"]  # as if the line were not there
 
 
 def test_conforming_lines_come_from_wkt_or_geojson(program, data):

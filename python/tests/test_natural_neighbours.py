@@ -247,3 +247,26 @@ def test_bad_input():
         cvt2.natural_neighbours(domain, np.ones((3, 2), dtype=bool), [[0.1, 0.1]])
     empty = cvt2.natural_neighbours(domain, [], np.empty((0, 2)))
     assert empty.shape == (0, 4) and empty.nnz == 0
+
+
+@pytest.mark.parametrize("method", ["sibson", "laplace"])
+def test_weights_double_precision_cannot_give_are_an_error_not_an_empty_row(method):
+    # Nodes 2 ulps apart at 1e15 (Sibson's areas round to nothing), a square 1e160 wide (areas
+    # and squared lengths overflow): an empty row or NaNs, which M @ values would take silently.
+    off = -1e15
+    square = np.array([[0, 0], [10, 0], [10, 10], [0, 10]], dtype=float)
+    ring = [[0, 1], [1, 2], [2, 3], [3, 0]]
+    far = cvt2.Domain(square + off, ring)
+    tight = np.array([[7.125, 4.625], [7.125, 4.875]]) + off
+    if method == "sibson":
+        with pytest.raises(cvt2.DomainError, match=r"query \(.*\): its natural-neighbour weights "
+                                                   r"vanish or are not finite in double precision"):
+            cvt2.natural_neighbours(far, tight, np.array([[7.125, 4.75]]) + off, method=method)
+    s = 1e160
+    huge = cvt2.Domain(square * s, ring)
+    with pytest.raises(cvt2.DomainError, match="vanish or are not finite"):
+        cvt2.natural_neighbours(huge, np.array([[3, 3], [6, 7]]) * s, [[5 * s, 5 * s]],
+                                method=method)
+    # the same nodes at a sane scale: a row summing to 1
+    m = cvt2.natural_neighbours(cvt2.Domain(square, ring), [[3, 3], [6, 7]], [[5, 5]], method=method)
+    assert m.toarray().sum() == pytest.approx(1)

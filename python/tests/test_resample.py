@@ -2,6 +2,8 @@
 # Constraints resampled to a cell size (Domain.resample, cvt2 --boundary resample): the count
 # asked for delivered, specks gone, the outputs valid, the same bits as the program.
 import json
+import re
+import subprocess
 
 import numpy as np
 import pytest
@@ -119,6 +121,10 @@ def test_cells_count_what_the_program_counts(program, data, tmp_path):
         cvt2.optimize(d, None, size=1e-300)
     with pytest.raises(ValueError, match=r"cells=1000000000000000000 asks for too many cells"):
         cvt2.optimize(d, None, cells=10**18, constraints="conforming")
+    # more than memory holds: refused before any is drawn, as cvt2 --cells refuses
+    with pytest.raises(ValueError, match=r"^cells=100000000000: 9999999\d+ points need about "
+                                         r"\d+ GB; this machine has \d+ GB$"):
+        cvt2.optimize(d, None, cells=10**11)
     with pytest.raises(ValueError, match=r"size=1e\+300 \(0 cells\) asks for fewer cells than"):
         cvt2.optimize(d, None, size=1e300)
     with pytest.raises(ValueError, match="boundary='resample' resamples the domain"):
@@ -222,7 +228,6 @@ def test_resample_report_and_arguments(data):
 
 
 def test_program_size_and_errors(program, data, tmp_path):
-    import subprocess
     name = data / "france_mainland.poly"
     h = 0.3
     summary, _, _ = run_program(program, name, tmp_path, "--boundary", "resample", "--size", h)
@@ -242,7 +247,8 @@ def test_program_size_and_errors(program, data, tmp_path):
                         "--constraints", "conforming", "--cells", str(10**18)],
                        capture_output=True, text=True, timeout=60)
     assert p.returncode != 0 and "--cells asks for 1e+18 cells: too many" in p.stderr
-    assert "--cells: 99999999" in fails("--cells", 10**11)  # the option named, not --points
+    assert re.search(r"--cells: 9999999\d+ points need about \d+ GB; this machine has",
+                     fails("--cells", 10**11))  # the option named, not --points
     assert "give one of -n, --cells and --size" in fails("--cells", 100, "-n", 5)
     assert "--deviation-bound needs --boundary resample" in fails("--deviation-bound", 1)
     assert "--boundary-spacing needs --boundary resample" in fails("--boundary-spacing", 1)
@@ -279,7 +285,6 @@ def test_outputs_say_which_boundary_made_them_and_match_the_program(program, dat
 
 
 def test_program_writes_the_resampled_domain_and_the_layer(program, data, tmp_path):
-    import subprocess
     name = data / "france_mainland.poly"
     poly, disv = tmp_path / "resampled.poly", tmp_path / "grid.disv"
     subprocess.run([program, str(name), "--quiet", "--boundary", "resample", "--cells", "600",
@@ -298,7 +303,6 @@ def test_program_writes_the_resampled_domain_and_the_layer(program, data, tmp_pa
 
 
 def test_minimum_ring_area_drops_small_islands(program, data, tmp_path):
-    import subprocess
     world = cvt2.Domain.from_file(data / "world_land_110m.wkt")
     cell = 3**0.5 / 2 * world.resample(cells=2000).resampling["size"] ** 2
     kept, dropped = world.resample(cells=2000), world.resample(cells=2000, minimum_ring_area=cell)
@@ -349,7 +353,6 @@ def test_program_slides_the_boundary_on_the_input_valid_and_tiling(program, data
     assert metadata["boundary"] == "slide"
     assert "# boundary: slide\n" in files["disv"].read_text()
     # --domain-out writes the lines where the vertices slid to.
-    import subprocess
     poly = tmp_path / "slid.poly"
     subprocess.run([program, str(data / name), "--quiet", "--boundary", "slide", "--cells",
                     str(cells), "--domain-out", str(poly)], check=True, capture_output=True)
@@ -438,3 +441,19 @@ def test_a_slid_chord_split_by_a_fixed_point_keeps_its_item():
                            boundary="slide", fixed_points=[middle], max_iterations=20)
     items = result.domain.segment_items
     assert (items >= 0).all() and set(items) <= set(strip.segment_items)
+
+
+def test_points_given_outside_the_resampled_domain_are_told_why(program, tmp_path):
+    # Inside the input's 64-gon, outside the chords that resampling put across its corners.
+    t = np.linspace(0, 2 * np.pi, 65)[:-1]
+    circle = tmp_path / "circle.wkt"
+    circle.write_text("POLYGON ((" + ", ".join(f"{np.cos(a):.17g} {np.sin(a):.17g}" for a in t)
+                      + f", {np.cos(t[0]):.17g} {np.sin(t[0]):.17g}))\n")
+    points = tmp_path / "p.txt"
+    points.write_text("0.99 0\n")
+    for option in ("--fixed-points", "--points-in"):
+        p = subprocess.run([program, str(circle), "-n", "50", "--boundary", "resample", option,
+                            str(points), "--quiet"], capture_output=True, text=True, timeout=60)
+        assert p.returncode == 1
+        assert "p.txt:1: generator (0.99, 0) lies outside the domain" in p.stderr
+        assert "the domain as --boundary resample left it" in p.stderr

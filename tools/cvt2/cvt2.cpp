@@ -23,6 +23,7 @@
 #include <CVT_2/conforming_sites_2.h>
 #include <CVT_2/density_response_2.h>
 #include <CVT_2/insert_generators_2.h>
+#include <CVT_2/internal/memory_estimate.h>
 #include <CVT_2/lbfgs_optimize_2.h>
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/mark_domain_2.h>
@@ -44,6 +45,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iomanip>
@@ -119,7 +121,8 @@ void print_help(std::ostream& os) {
         "Generators:\n"
         "  -n, --points N         N random generators (default 1000 if DOMAIN has none and no\n"
         "                         --points-in is given, else 0)\n"
-        "      --points-in FILE   generators from FILE, one 'x y' per line ('#' comments)\n"
+        "      --points-in FILE   generators from FILE, one 'x y' per line ('#' comments), or\n"
+        "                         --points-out's 'x y c' (c = 1, the domain's own: skipped)\n"
         "      --boundary-tolerance T  a point of FILE outside DOMAIN by at most T goes onto\n"
         "                         its boundary, a constrained generator (default 2^-50 of the\n"
         "                         largest coordinate: a rounding; 0: none)\n"
@@ -173,7 +176,8 @@ void print_help(std::ostream& os) {
         "                         where the iteration would stop far from the optimum\n"
         "      --time-limit T     stop after T seconds (default 0: no limit)\n"
         "      --threads N        threads (default 0: one per core); the result is the same\n"
-        "Outputs (written only when the optimization succeeded; an existing file is replaced):\n"
+        "Outputs (written only when the optimization succeeded; an existing file is replaced,\n"
+        "never an input, and none twice):\n"
         "      --geojson FILE     the cells as GeoJSON features, valid polygons (QGIS, GDAL,\n"
         "                         shapely): cell, generator, constrained, area, neighbors\n"
         "      --vtu FILE         the cells as a VTK XML grid with shared points (ParaView,\n"
@@ -434,20 +438,6 @@ void note_repeated(const std::vector<std::string>& notes) {
   std::cerr << "; merged\n";
 }
 
-// The physical memory, or 0 where the system does not say.
-double physical_memory() {
-#ifdef CVT2_POSIX
-  return double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-#else
-  return 0;
-#endif
-}
-
-// Peak memory per generator, at most (triangulation, cells, moves, the faces' layout after the
-// insertion; L-BFGS's history): what memory cannot hold is refused rather than killed after
-// minutes of work.
-double bytes_per_generator(const Options& o) { return o.lbfgs ? 750 : 360; }
-
 // The conforming lines (--constraints conforming, or a feature's "kind"), their input items and
 // the pairs of generators mirrored across their steps.
 struct Conforming {
@@ -472,15 +462,13 @@ struct Sizing_choice {
 void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& sizing, CDT& cdt,
                           const CVT_2::Conforming_disks<Point_2>& keep_out) {
   if (n == 0) return;
-  const double needed = bytes_per_generator(o) * double(n), memory = physical_memory();
-  if (memory > 0 && needed > memory)
+  // What memory cannot hold is refused rather than killed after minutes of work.
+  const std::string shortfall = CVT_2::internal::memory_shortfall(double(n), o.lbfgs);
+  if (!shortfall.empty())
     throw Usage_error(std::string(o.cells  ? "--cells"
                                   : o.size ? "--size"
                                            : "--points") +
-                      ": " + std::to_string(n) + " points need about " +
-                      std::to_string(static_cast<long long>(needed / 1e9)) +
-                      " GB; this machine has " +
-                      std::to_string(static_cast<long long>(memory / 1e9)) + " GB");
+                      ": " + shortfall);
   const auto draw = [&](std::size_t count, std::uint64_t seed) {
     // --cells and --size: cells of one size, region by region; -n: n points, as before. The
     // points drawn again for those that fell in the circles of conforming lines, a few, are
@@ -595,33 +583,97 @@ CVT_2::Optimization_result optimize(CDT& cdt, const Options& o, const Sizing_cho
 
 // --- outputs -----------------------------------------------------------------------------------
 
-// Files written as FILE.tmp, renamed together once all were written: nothing half-written, and
-// an existing file is replaced only by a complete one.
+// The output files, written beside their names and renamed once all are written, so that a run
+// that fails leaves every file as it was. A temporary name is one no file has; an existing
+// output that is not a regular file (a named pipe, /dev/stdout) is written directly, and a
+// symbolic link is written through, to the file it names.
 class Output_files {
  public:
   ~Output_files() {
-    for (const auto& [file, tmp] : m_files) std::remove(tmp.c_str());
+    for (const auto& [file, tmp] : m_files)
+      if (!tmp.empty()) std::remove(tmp.c_str());
   }
   template <class Writer>
-  void write(const std::string& file, Writer writer) {
-    const std::string tmp = file + ".tmp";
+  void write(const std::string& name, Writer writer) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const std::string file =
+        fs::is_symlink(name, ec) ? fs::weakly_canonical(name, ec).string() : name;
+    const bool direct = fs::exists(file, ec) && !fs::is_regular_file(file, ec);
+    std::string tmp;
+    if (!direct)
+      for (int k = 0; tmp.empty() || fs::exists(tmp, ec); ++k)
+        tmp = file + ".cvt2-" + std::to_string(process_id()) + "-" + std::to_string(k) + ".tmp";
     m_files.emplace_back(file, tmp);
-    std::ofstream os(tmp, std::ios::binary);
-    if (!os) throw std::runtime_error("cannot write '" + file + "': " + std::strerror(errno));
+    std::ofstream os(direct ? file : tmp, std::ios::binary);
+    if (!os) throw std::runtime_error("cannot write '" + name + "': " + std::strerror(errno));
     writer(os);
     os.close();
-    if (!os) throw std::runtime_error("error while writing '" + file + "'");
+    if (!os) throw std::runtime_error("error while writing '" + name + "'");
   }
   void commit() {
     for (const auto& [file, tmp] : m_files)
-      if (std::rename(tmp.c_str(), file.c_str()) != 0)
+      if (!tmp.empty() && std::rename(tmp.c_str(), file.c_str()) != 0)
         throw std::runtime_error("cannot rename '" + tmp + "' to '" + file + "'");
     m_files.clear();
   }
 
  private:
-  std::vector<std::pair<std::string, std::string>> m_files;
+  static long process_id() {
+#ifdef CVT2_POSIX
+    return long(getpid());
+#else
+    return 0;
+#endif
+  }
+  std::vector<std::pair<std::string, std::string>> m_files;  // (file, temporary or empty)
 };
+
+// The outputs checked before any work: each in a directory that exists, none a directory, none
+// one of the input files (it would be replaced: "--geojson in.poly"), no two the same file.
+void check_output_paths(const Options& o) {
+  namespace fs = std::filesystem;
+  std::vector<std::pair<std::string, std::string>> outputs;  // (option, path)
+  const auto output = [&](const char* option, const std::string& path) {
+    if (!path.empty()) outputs.emplace_back(option, path);
+  };
+  output("--svg", o.svg);
+  output("--points-out", o.points_out);
+  output("--cells-out", o.cells_out);
+  output("--geojson", o.geojson);
+  output("--vtu", o.vtu);
+  output("--disv", o.disv);
+  output("--cells-on-constraints", o.cells_on_constraints);
+  output("--domain-out", o.domain_out);
+  if (!o.mesh_out.empty())
+    for (const char* e : {".node", ".ele", ".edge"}) output("--mesh-out", o.mesh_out + e);
+  std::vector<std::pair<std::string, std::string>> inputs{{"the domain file", o.domain}};
+  if (!o.points_in.empty()) inputs.emplace_back("--points-in", o.points_in);
+  if (!o.fixed_points.empty()) inputs.emplace_back("--fixed-points", o.fixed_points);
+  if (!is_number(o.top)) inputs.emplace_back("--top", o.top);
+  if (!is_number(o.bottom)) inputs.emplace_back("--bottom", o.bottom);
+  std::error_code ec;
+  // The same file: both exist and are one, or neither does and their paths are one.
+  const auto same = [&ec](const std::string& a, const std::string& b) {
+    if (fs::exists(a, ec) || fs::exists(b, ec)) return fs::equivalent(a, b, ec);
+    return fs::weakly_canonical(a, ec) == fs::weakly_canonical(b, ec);
+  };
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const auto& [option, path] = outputs[i];
+    if (fs::is_directory(path, ec)) throw Usage_error(option + " '" + path + "' is a directory");
+    const fs::path parent = fs::path(path).parent_path();
+    if (!parent.empty() && !fs::is_directory(parent, ec))
+      throw Usage_error(option + " '" + path + "': there is no directory '" + parent.string() +
+                        "'");
+    for (const auto& [what, input] : inputs)
+      if (same(path, input))
+        throw Usage_error(option + " '" + path + "' would replace " + what + " '" + input + "'");
+    for (std::size_t j = 0; j < i; ++j)
+      if (same(path, outputs[j].second))
+        throw Usage_error(option + " and " + outputs[j].first + " name the same file '" + path +
+                          "'");
+  }
+}
 
 // What each inner constraint is, by the input item its lines come from: the GeoJSON features'
 // "kind" properties, --constraints for the others.
@@ -825,13 +877,36 @@ void insert_conforming_sites(const Options& o, std::size_t free_generators, CDT&
               << " steps of the conforming lines have a generator outside the domain: left out\n";
 }
 
+// What can be checked of --top and --bottom before the work: their counts against each other
+// (and against --cells), each bottom below its top; write_disv() checks the rest.
+void check_layer(const Options& o, const std::vector<double>& top,
+                 const std::vector<double>& bottom) {
+  for (const auto& [values, name] : {std::pair(&top, "--top"), std::pair(&bottom, "--bottom")})
+    if (values->size() != 1 && o.cells && values->size() != *o.cells)
+      throw Usage_error(name + std::string(" has ") + std::to_string(values->size()) +
+                        " values for --cells " + std::to_string(*o.cells) +
+                        " (one, or one a cell)");
+  if (top.size() != 1 && bottom.size() != 1 && top.size() != bottom.size())
+    throw Usage_error("--top has " + std::to_string(top.size()) + " values and --bottom " +
+                      std::to_string(bottom.size()) + " (one, or one a cell each)");
+  for (std::size_t k = 0; k < std::max(top.size(), bottom.size()); ++k) {
+    const double t = top[top.size() == 1 ? 0 : k], b = bottom[bottom.size() == 1 ? 0 : k];
+    if (std::isfinite(t) && std::isfinite(b) && !(b < t))  // as write_disv() says it
+      throw Usage_error("cell " + std::to_string(k + 1) + "'s bottom " +
+                        CVT_2::internal::number_text(b) + " is not below its top " +
+                        CVT_2::internal::number_text(t));
+  }
+}
+
 int run(const Options& o) {
   if (!std::ifstream(o.domain))
     throw std::runtime_error("cannot open the domain file '" + o.domain + "'");
+  check_output_paths(o);
   CDT cdt;
   // The DISV's top and bottom read first: a bad file fails before the optimization.
   const std::vector<double> top = number_or_values("--top", o.top);
   const std::vector<double> bottom = number_or_values("--bottom", o.bottom);
+  if (!o.disv.empty()) check_layer(o, top, bottom);
   auto data = CVT_2::IO::read_domain_data<K>(o.domain);
   // Conforming lines (--constraints conforming, or a GeoJSON feature's "kind") are not
   // constraints, only where faces will lie.
@@ -896,20 +971,37 @@ int run(const Options& o) {
         o.boundary_size ? std::optional<K::FT>(*o.boundary_size) : std::nullopt);
   // the domain's vertices and generators
   const std::size_t own = CVT_2::internal::number_of_vertices_in_domain(cdt);
+  // Points given outside a resampled domain: inside the input's, where a chord cut a corner?
+  const auto resampled_hint = [&o](const auto& insert) {
+    try {
+      return insert();
+    } catch (const CVT_2::Domain_error& e) {
+      if (!o.resample || std::string(e.what()).find("outside") == std::string::npos) throw;
+      throw CVT_2::Domain_error(std::string(e.what()) +
+                                    " (the domain as --boundary resample left it, whose chords "
+                                    "cut corners by up to the deviation bound; points in the "
+                                    "domain file, as POINT, are kept inside)",
+                                e.index());
+    }
+  };
   if (!o.points_in.empty()) {
     if (!std::ifstream(o.points_in))
       throw std::runtime_error("cannot open the points file '" + o.points_in + "'");
     const auto points = CVT_2::IO::read_points<Point_2>(o.points_in);
+    if (points.constrained_skipped > 0 && !o.quiet)
+      std::cerr << "cvt2: note: " << o.points_in << ": " << points.constrained_skipped
+                << " constrained generators ('x y 1') skipped: the domain gives them\n";
     std::vector<std::string> notes;
     for (const auto& [line, earlier] : points.repeated_points)
       notes.push_back(o.points_in + ":" + std::to_string(line) +
                       ": this point repeats the one on line " + std::to_string(earlier));
     note_repeated(notes);
-    const auto moved =
-        o.boundary_tolerance
-            ? CVT_2::IO::insert_points(cdt, points,
-                                       CVT_2::parameters::boundary_tolerance(*o.boundary_tolerance))
-            : CVT_2::IO::insert_points(cdt, points);
+    const auto moved = resampled_hint([&] {
+      return o.boundary_tolerance
+                 ? CVT_2::IO::insert_points(
+                       cdt, points, CVT_2::parameters::boundary_tolerance(*o.boundary_tolerance))
+                 : CVT_2::IO::insert_points(cdt, points);
+    });
     const std::string note = CVT_2::IO::moved_points_note(points, moved);
     if (!note.empty()) std::cerr << "cvt2: note: " << note << '\n';
   }
@@ -920,7 +1012,7 @@ int run(const Options& o) {
     if (!std::ifstream(o.fixed_points))
       throw std::runtime_error("cannot open the fixed points file '" + o.fixed_points + "'");
     const auto points = CVT_2::IO::read_points<Point_2>(o.fixed_points);
-    const auto moved = CVT_2::IO::insert_points(cdt, points);
+    const auto moved = resampled_hint([&] { return CVT_2::IO::insert_points(cdt, points); });
     fixed = points.points;
     for (std::size_t i = 0; i < moved.moved.size(); ++i) fixed[moved.moved[i]] = moved.moved_to[i];
     const std::string note = CVT_2::IO::moved_points_note(points, moved);
@@ -1000,7 +1092,8 @@ int main(int argc, char* argv[]) {
   } catch (const Usage_error& e) {
     std::cerr << "cvt2: " << e.what() << "\ncvt2: try 'cvt2 --help'\n";
   } catch (const std::bad_alloc&) {
-    std::cerr << "cvt2: out of memory: a generator needs up to " << bytes_per_generator(Options())
+    std::cerr << "cvt2: out of memory: a generator needs up to "
+              << CVT_2::internal::peak_bytes_per_generator(Options().lbfgs)
               << " bytes during the optimization (--points, the input files)\n";
   } catch (const std::exception& e) {
     std::cerr << "cvt2: " << e.what() << '\n';

@@ -28,19 +28,32 @@ struct Point_data {
   /// each point equal to an earlier one, as (its line, the earlier one's line): inserting them
   /// merges them
   std::vector<std::array<std::size_t, 2>> repeated_points;
+  /// the lines `x y 1` skipped: constrained generators of a file `cvt2 --points-out` wrote,
+  /// which the domain gives
+  std::size_t constrained_skipped = 0;
 };
 
 /// \ingroup PkgCvt2IO
-/// Reads one point `x y` per line; blank lines and `#` comments are skipped.
-/// \throws Parse_error on a line that is not two finite numbers.
+/// Reads one point `x y` per line; blank lines and `#` comments are skipped. A line `x y c`, as
+/// `cvt2 --points-out` writes them (`c` = 1 for a constrained generator), is read as `x y` if
+/// `c` is 0 and skipped if it is 1 (the domain gives its constrained generators), so that a
+/// run continues from another's generators.
+/// \throws Parse_error on a line that is not two finite numbers, or those and a 0 or a 1.
 template <class Point_2>
 Point_data<Point_2> read_points(std::istream& is, const std::string& source = "<points>") {
   internal::Line_reader in(is, source);
   Point_data<Point_2> data;
   data.source = source;
   for (std::vector<std::string> t; in.next(t);) {
-    if (t.size() != 2) in.fail("expected 'x y'", t.size() > 2 ? t[2] : t[0]);
-    data.points.emplace_back(in.real(t[0]), in.real(t[1]));
+    if (t.size() != 2 && (t.size() != 3 || (t[2] != "0" && t[2] != "1")))
+      in.fail("expected 'x y' (or 'x y c', c 0 or 1, as cvt2 --points-out writes)",
+              t.size() > 2 ? t[2] : t[0]);
+    const Point_2 p(in.real(t[0]), in.real(t[1]));
+    if (t.size() == 3 && t[2] == "1") {
+      ++data.constrained_skipped;
+      continue;
+    }
+    data.points.push_back(p);
     data.lines.push_back(in.line());
   }
   data.repeated_points = internal::repeated_points(data.points, data.lines);

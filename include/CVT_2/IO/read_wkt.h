@@ -192,7 +192,8 @@ Wkt_data<K> read_wkt(std::istream& is, const std::string& source = "<wkt>") {
     std::vector<Point_2> points;
     std::vector<std::vector<Point_2>> polylines;
     std::vector<CGAL::Polygon_with_holes_2<K>> polygons;
-    std::istringstream iss(type + line.substr(e));  // CGAL reads upper-case keywords only
+    // CGAL reads upper-case keywords only, and takes a CR or a tab at the end for more text
+    std::istringstream iss(type + " " + rest);
     bool ok = false;
     {
       const internal::Silenced_cerr silence;

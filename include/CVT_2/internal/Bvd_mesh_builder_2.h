@@ -5,11 +5,13 @@
 #ifndef CVT_2_INTERNAL_BVD_MESH_BUILDER_2_H
 #define CVT_2_INTERNAL_BVD_MESH_BUILDER_2_H
 
+#include <CVT_2/exceptions.h>
 #include <CVT_2/internal/construct_cell.h>
 #include <CVT_2/internal/layout/Handle_numbering.h>
 #include <CVT_2/internal/layout/prefetch.h>
 #include <CVT_2/internal/parallel/Face_chunks.h>
 #include <CVT_2/internal/parallel/run_chunks.h>
+#include <CVT_2/internal/to_string.h>
 #include <CVT_2/mark_domain_2.h>
 
 #include <CGAL/number_utils.h>
@@ -192,6 +194,14 @@ Bvd_mesh_builder_2<Diagram>::Bvd_mesh_builder_2(Mesh& mesh, const Diagram& bvd, 
   assemble(found, threads);
   conform_constraints();
   pair_constraint_sides();
+  // Cells a few ulps of their coordinates wide (a small domain far from the origin) can round
+  // to fewer than three vertices: an empty polygon in every file, which no reader takes.
+  for (std::size_t k = 0; k < m_generators.size(); ++k)
+    if (m_offsets[k + 1] - m_offsets[k] < 3)
+      throw Domain_error("the cell of generator " + to_string(m_generators[k]->point()) +
+                         " rounds to " + std::to_string(m_offsets[k + 1] - m_offsets[k]) +
+                         " vertices: the cells are too small for double precision at their "
+                         "coordinates (move the domain nearer the origin, or use fewer cells)");
 }
 
 // Cells are numbered in the order the cells pass visits them, circumcenters of the faces that
