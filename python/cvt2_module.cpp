@@ -771,11 +771,17 @@ struct Diagram {
   std::vector<double> points, vertices, areas, centroids;
   std::vector<std::uint8_t> constrained, ridge_boundary, vertex_kinds;
   std::vector<std::int64_t> ridge_points, ridge_vertices, ridge_constraint;
-  std::vector<std::string> notes;             // the points moved onto the boundary
+  std::vector<std::int64_t> ridge_edit_constraint;  // a ConstraintEditor's snapshots only
+  std::vector<std::string> notes;                   // the points moved onto the boundary
   std::optional<std::vector<Point_2>> given;  // the points of bounded_voronoi(), in their order
+  // The input segments' ends where they are: the domain's, or as a ConstraintEditor moved them.
+  std::vector<Point_2> segment_ends;
 
-  Diagram(std::shared_ptr<CDT> t, std::shared_ptr<const Domain> d, unsigned threads)
-      : cdt(std::move(t)), domain(std::move(d)) {
+  Diagram(std::shared_ptr<CDT> t, std::shared_ptr<const Domain> d, unsigned threads,
+          const std::vector<Point_2>* moved_ends = nullptr)
+      : cdt(std::move(t)),
+        domain(std::move(d)),
+        segment_ends(moved_ends ? *moved_ends : domain->segment_ends) {
     bvd = std::make_unique<BVD>(*cdt);
     mesh = std::make_unique<Mesh>(*bvd, threads);
     const std::vector<std::int64_t> input = input_segments();
@@ -842,13 +848,13 @@ struct Diagram {
 
   // For each constraint of the mesh, the input segment it lies on, and that segment's item.
   std::vector<std::int64_t> input_segments() const {
-    return CVT_2::internal::input_segments_of_constraints(*cdt, *mesh, domain->segment_ends);
+    return CVT_2::internal::input_segments_of_constraints(*cdt, *mesh, segment_ends);
   }
   std::vector<std::int64_t> input_items() const {
     const struct {
       const std::vector<Point_2>& ends;
       const std::vector<std::int64_t>& items;
-    } segments{domain->segment_ends, domain->segment_items};
+    } segments{segment_ends, domain->segment_items};
     return CVT_2::IO::constraint_items(*cdt, *mesh, segments);
   }
 
@@ -961,12 +967,13 @@ struct Editing {
   std::shared_ptr<CDT> cdt;
   std::unique_ptr<BVD> bvd;
   std::unique_ptr<CVT_2::Constraint_editor_2<CDT>> editor;
-  std::vector<Point_2> given;  // where the points given are, as relax() and move() move them
+  std::vector<Point_2> given;         // where the points given are, as relax() and move() move them
+  std::vector<Point_2> segment_ends;  // the domain's input segments', as move() moves them
   std::vector<std::string> notes;
 
   Editing(const std::shared_ptr<const Domain>& d, py::handle points_object,
           std::optional<double> boundary_tolerance)
-      : domain(d) {
+      : domain(d), segment_ends(d->segment_ends) {
     cdt = domain->triangulation();
     notes = insert_points(*cdt, to_points(points_object, "points"), "points", boundary_tolerance,
                           &given);
@@ -1081,6 +1088,7 @@ struct Editing {
     const CDT::Vertex_handle v = f->vertex(li);
     editor->move_constrained_vertex(v, q);
     follow({p}, {v->point()});
+    std::replace(segment_ends.begin(), segment_ends.end(), p, v->point());
     return report();
   }
   py::dict remove(std::int64_t c) {
@@ -1096,8 +1104,24 @@ struct Editing {
   std::shared_ptr<Diagram> diagram(std::int64_t threads) const {
     const unsigned t = unsigned(checked_count(threads, "threads"));
     auto copy = std::make_shared<CDT>(*cdt);
-    auto d = std::make_shared<Diagram>(std::move(copy), domain, t);
+    auto d = std::make_shared<Diagram>(std::move(copy), domain, t, &segment_ends);
     d->given = given;
+    // the constraints inserted here by their ids, walked as the input segments are
+    std::vector<Point_2> ends;
+    std::vector<std::int64_t> ids;
+    for (std::size_t c = 0; c < editor->number_of_constraints(); ++c) {
+      if (editor->is_removed(c)) continue;
+      const auto& chain = editor->vertices_in_constraint(c);
+      for (std::size_t k = 0; k + 1 < chain.size(); ++k)
+        ends.push_back(chain[k]->point()), ends.push_back(chain[k + 1]->point()),
+            ids.push_back(std::int64_t(c));
+    }
+    const std::vector<std::int64_t> on =
+        CVT_2::internal::input_segments_of_constraints(*d->cdt, *d->mesh, ends);
+    for (const Mesh::Edge& e : d->mesh->edges())
+      d->ridge_edit_constraint.push_back(e.constraint == Mesh::none || on[e.constraint] < 0
+                                             ? -1
+                                             : ids[std::size_t(on[e.constraint])]);
     return d;
   }
 };
@@ -1516,6 +1540,8 @@ PYBIND11_MODULE(_cvt2, m) {
                              [](const Diagram& d) { return to_array(d.ridge_vertices, 2); })
       .def_property_readonly("ridge_constraint",
                              [](const Diagram& d) { return to_array(d.ridge_constraint); })
+      .def_property_readonly("ridge_edit_constraint",
+                             [](const Diagram& d) { return to_array(d.ridge_edit_constraint); })
       .def_property_readonly(
           "ridge_boundary",
           [](const Diagram& d) { return to_array(d.ridge_boundary).attr("astype")("bool"); })

@@ -271,7 +271,8 @@ class Constraint_editor_2 {
     finish_edit();
   }
 
-  /// the vertices of constraint `id`, in order along it (those of a removed one as they were)
+  /// the vertices of constraint `id`, in order along it (a removed one's: the vertices it had,
+  /// where they are now, as later edits and moves left them)
   const std::vector<Vertex_handle>& vertices_in_constraint(Constraint_id id) const {
     return m_polylines.at(id);
   }

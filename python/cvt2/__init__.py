@@ -753,8 +753,8 @@ class ConstraintEditor:
         return self._impl.report()
 
     def constraint_vertices(self, id) -> np.ndarray:
-        """Float (k, 2): the vertices of constraint ``id`` in order (a removed one's as they
-        were)."""
+        """Float (k, 2): the vertices of constraint ``id`` in order (a removed one's: the
+        vertices it had, where they are now, as later moves and ``relax`` left them)."""
         return self._impl.constraint_vertices(_count(id, "id"))
 
     @property
@@ -928,7 +928,10 @@ class BoundedVoronoi:
     - ``ridge_vertices``: int (E, 2), the ends of each ridge (rows of ``vertices``);
     - ``ridge_constraint``: int (E,), the input segment each ridge lies on (a row of
       :attr:`Domain.segments`; :attr:`Domain.segment_items` gives its line, feature or
-      shapely geometry), or -1 for a bisector ridge;
+      shapely geometry, as a :class:`ConstraintEditor`'s moves left it), or -1 for a bisector
+      ridge or one on a constraint the editor inserted;
+    - ``ridge_edit_constraint``: for a :class:`ConstraintEditor`'s snapshot, int (E,), the id
+      of the constraint the editor inserted that each ridge lies on, or -1; None otherwise;
     - ``areas``: float (n,), ``centroids``: float (n, 2) (of the cells as uniform polygons);
     - ``notes``: the points moved onto the boundary (``boundary_tolerance``), a list of
       strings, empty if none was.
@@ -996,6 +999,11 @@ class BoundedVoronoi:
     @functools.cached_property
     def ridge_constraint(self) -> np.ndarray:
         return self._impl.ridge_constraint
+
+    @functools.cached_property
+    def ridge_edit_constraint(self):
+        ids = self._impl.ridge_edit_constraint
+        return ids if len(ids) == len(self._impl.ridge_constraint) else None
 
     @functools.cached_property
     def ridge_boundary(self) -> np.ndarray:

@@ -208,3 +208,32 @@ def test_relax_moves_only_near_the_tip_and_matches_a_rebuild():
     assert np.array_equal(a[0], b[0])
     assert np.allclose(a[1], b[1], rtol=0, atol=1e-12)
     assert np.allclose(a[2], b[2], rtol=0, atol=1e-12)
+
+
+def test_ridges_name_the_constraints_the_editor_inserted_and_moved():
+    # A domain with an inner wall (segments 4 and 5), a crack grown by the editor, a slit moved,
+    # one removed: each ridge on a line names it, by the editor's id or the domain's segment.
+    vertices = np.vstack([SQUARE, [[2, 2], [4, 2.5], [6, 2]]])
+    segments = np.vstack([RING, [[4, 5], [5, 6]]])
+    rng = np.random.default_rng(5)
+    editor = cvt2.ConstraintEditor(cvt2.Domain(vertices, segments), rng.uniform(0, 10, (600, 2)))
+    crack = editor.insert_constraint([[0, 6.05], [1.1, 6.2]])
+    editor.extend_constraint(crack, [3.3, 6.6], spacing=0.3)
+    slit = editor.insert_constraint([[5, 8], [6, 8.6], [7, 8.1]])
+    editor.move_constrained_vertex([6, 8.6], [6.1, 8.2])
+    gone = editor.insert_constraint([[7, 4], [8, 5]])
+    editor.remove_constraint(gone)
+    editor.move_constrained_vertex([4, 2.5], [4.1, 2.9])  # the domain's wall, bent
+    d = editor.bounded_voronoi()
+    ids, rows = d.ridge_edit_constraint, d.ridge_constraint
+    assert ids is not None and len(ids) == len(rows)
+    assert set(ids) == {-1, crack, slit}
+    assert ((ids < 0) | (rows < 0)).all()  # never both
+    ends = d.vertices[d.ridge_vertices]
+    length = np.hypot(*(ends[:, 1] - ends[:, 0]).T)
+    for c in (crack, slit):  # a ridge a pair of cells, whole along the line
+        line = editor.constraint_vertices(c)
+        assert length[ids == c].sum() == pytest.approx(np.hypot(*np.diff(line, axis=0).T).sum())
+    wall = np.hypot(4.1 - 2, 2.9 - 2) + np.hypot(6 - 4.1, 2 - 2.9)
+    assert length[(rows == 4) | (rows == 5)].sum() == pytest.approx(wall)
+    assert cvt2.bounded_voronoi(cvt2.Domain(vertices, segments), [[1, 1]]).ridge_edit_constraint is None
