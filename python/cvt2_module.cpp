@@ -483,6 +483,12 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
         "a domain without kinds");
   const std::vector<Point_2> fixed_points =
       fixed.is_none() ? std::vector<Point_2>() : to_points(fixed, "fixed_points");
+  for (std::size_t k = 0; k < fixed_points.size(); ++k)  // NaN matched no vertex: ignored
+    if (!CVT_2::internal::is_valid_point(fixed_points[k]))
+      throw CVT_2::Domain_error("fixed_points[" + std::to_string(k) + "]: " +
+                                    CVT_2::internal::invalid_point_message(
+                                        "point " + CVT_2::internal::to_string(fixed_points[k])),
+                                k);
   auto out = std::make_shared<Domain>();
   CVT_2::Resampling_report r;
   double h = 0;

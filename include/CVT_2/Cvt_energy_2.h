@@ -570,7 +570,13 @@ auto Cvt_energy_2<CDT, Density, Quadrature, Traits>::cell_figures(
   const typename Kernel::Vector_2 shift =
       f.mass > 0 ? m.first_moment / m.mass : typename Kernel::Vector_2(CGAL::NULL_VECTOR);
   const double diameter2 = squared_diameter(points);
-  f.move_ratio = diameter2 > 0 ? std::sqrt(CGAL::to_double(shift.squared_length()) / diameter2) : 0;
+  // With circles to keep out of, the move they allow: a generator that a centroid inside one
+  // holds on its rim is where it can be (measured to the centroid, it never met the stop).
+  const double moved2 = m_keep_out && f.mass > 0
+                            ? CGAL::to_double(CGAL::squared_distance(
+                                  m_keep_out(v->point(), v->point() + shift), v->point()))
+                            : CGAL::to_double(shift.squared_length());
+  f.move_ratio = diameter2 > 0 ? std::sqrt(moved2 / diameter2) : 0;
   f.generator = {v, v->point() + shift, m.mass};
   return f;
 }

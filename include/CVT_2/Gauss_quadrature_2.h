@@ -20,7 +20,8 @@ namespace CVT_2 {
 /// A model of `CellQuadrature_2` for any smooth density, the default for densities that are
 /// not uniform: Radon's seven-point rule, exact for polynomials of degree 5, on each fan
 /// triangle \f$(x, c_i, c_{i+1})\f$ of the cell (those of zero area, the slits of a generator on
-/// constraints, are dropped), each cut into `subdivisions`² similar triangles first.
+/// constraints, are dropped, and so are those that rounding makes negative), each cut into
+/// `subdivisions`² similar triangles first.
 ///
 /// So \f$\rho\f$ is evaluated \f$7 m^2 k\f$ times (\f$m\f$ = `subdivisions`, \f$k\f$ the fan
 /// triangles of nonzero area, about 6): 42 times a cell with the default \f$m = 1\f$, against
@@ -138,7 +139,10 @@ class Gauss_quadrature_2 {
       const FT ax = p.x() - x.x(), ay = p.y() - x.y();
       const FT bx = q.x() - x.x(), by = q.y() - x.y();
       const FT area = (ax * by - ay * bx) / 2;
-      if (area == 0) return;
+      // Star-shaped from x, the cell has no fan triangle of negative area: one computed so is a
+      // rounding of 0 (x a rounding off the cell's edge), which a steep density's values would
+      // make a negative mass.
+      if (!(area > 0)) return;
       if (m == 1) return triangle(FT(0), FT(0), ax, ay, bx, by, area, visit);
       const FT part = area / FT(double(m * m)), inv = FT(1) / FT(double(m));
       const auto at = [&](std::size_t i, std::size_t j, FT& u, FT& v) {

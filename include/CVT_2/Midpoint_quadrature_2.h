@@ -124,7 +124,8 @@ class Midpoint_quadrature_2 {
       const FT ax = p.x() - x.x(), ay = p.y() - x.y();
       const FT bx = q.x() - x.x(), by = q.y() - x.y();
       const FT area = (ax * by - ay * bx) / 2;
-      if (area != 0) triangles.push_back(make_triangle(FT(0), FT(0), ax, ay, bx, by, area));
+      if (area > 0)  // none is negative but by a rounding of 0 (as Gauss_quadrature_2)
+        triangles.push_back(make_triangle(FT(0), FT(0), ax, ay, bx, by, area));
     });
     if (triangles.empty()) return;
 

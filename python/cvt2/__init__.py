@@ -388,7 +388,7 @@ def random_points(
         _seed(seed),
         density,
         float(lipschitz_k),
-        boundary_size,
+        _boundary_size(boundary_size),
         by_region=cells is not None,
     )
 
@@ -523,7 +523,7 @@ def optimize(
         _count(threads, "threads"),
         callback,
         float(lipschitz_k),
-        boundary_size,
+        _boundary_size(boundary_size),
         _tolerance(boundary_tolerance),
         fixed_points,
         _slide(boundary),
@@ -580,6 +580,14 @@ def _barriers(constraints):
     if constraints not in ("slit", "barrier", "conforming"):
         raise ValueError(f"constraints must be 'slit', 'barrier' or 'conforming', not {constraints!r}")
     return constraints == "barrier"
+
+
+def _boundary_size(value):
+    if value is None:
+        return None
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
+        raise TypeError(f"boundary_size must be None or a number, not {type(value).__name__}")
+    return float(value)
 
 
 def _tolerance(value):

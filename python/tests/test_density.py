@@ -209,3 +209,18 @@ def test_redistribute_takes_auto_true_or_false(rectangle):
             cvt2.optimize(rectangle, points, density=step, redistribute=bad)
     with pytest.raises(ValueError, match="seed must be below 2\\*\\*64"):
         cvt2.optimize(rectangle, points, density=step, seed=2**64)
+
+
+@pytest.mark.parametrize("algorithm", ["lbfgs", "lloyd"])
+def test_a_steep_lipschitz_sizing_does_not_stop_the_run(data, algorithm):
+    # k = 1e6: sizes grow a million-fold a unit away from the boundary, the density 1/mu^4 spans
+    # dozens of orders of magnitude in a boundary layer thinner than a cell. A generator moved a
+    # rounding off the boundary gave a fan triangle of area -1e-18 there, and a negative mass:
+    # "a bug in CVT_2" (bubble_with_hole at k = 1e4 too).
+    triangle = cvt2.Domain([[0, 0], [1, 0], [0.5, 0.8]], [[0, 1], [1, 2], [2, 0]])
+    bubble = cvt2.Domain.from_file(data / "bubble_with_hole.poly")
+    for domain, k, n in ((triangle, 1e6, 50), (bubble, 1e4, 300)):
+        points = cvt2.random_points(domain, n, seed=2, density="lipschitz", lipschitz_k=k)
+        r = cvt2.optimize(domain, points, density="lipschitz", lipschitz_k=k, max_iterations=30,
+                          algorithm=algorithm)
+        assert np.isfinite(r.energy) and r.energy > 0

@@ -457,3 +457,13 @@ def test_points_given_outside_the_resampled_domain_are_told_why(program, tmp_pat
         assert p.returncode == 1
         assert "p.txt:1: generator (0.99, 0) lies outside the domain" in p.stderr
         assert "the domain as --boundary resample left it" in p.stderr
+
+
+def test_resample_and_the_sizing_check_their_arguments():
+    d = cvt2.Domain([[0, 0], [1, 0], [1, 1], [0, 1]], [[0, 1], [1, 2], [2, 3], [3, 0]])
+    for bad in ([[np.nan, 0]], [[1e301, 0]]):  # matched no vertex, and were ignored
+        with pytest.raises(cvt2.DomainError, match=r"fixed_points\[0\]: point \(.*\) is not"):
+            d.resample(size=0.3, fixed_points=bad)
+    # was "RuntimeError: Unable to cast Python instance to C++ type"
+    with pytest.raises(TypeError, match="boundary_size must be None or a number, not str"):
+        cvt2.random_points(d, 10, density="lipschitz", boundary_size="x")
