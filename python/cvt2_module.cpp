@@ -1460,6 +1460,8 @@ std::shared_ptr<Optimization> optimize(
           CVT_2::density_response_2(bvd, Python_density{choice.function, false});
     const std::string note = CVT_2::internal::density_response_note(out->density_response);
     if (!note.empty()) out->notes.push_back(note);
+    const std::string inside = CVT_2::internal::conforming_disks_note(*cdt, disks);
+    if (!inside.empty()) out->notes.push_back(inside);  // as cvt2 says it
     if (slide) out->domain = slid_domain(*domain, *cdt, *runs, *slid);
     out->cdt = std::move(cdt);
   }

@@ -328,6 +328,26 @@ TEST_CASE("WKT: polygons, linestrings and points, each with its line", "[io][wkt
       f->vertex(li)));  // on the linestring: a constrained vertex
 }
 
+TEST_CASE("WKT: an island in a hole along the hole's edge stays, and one that fills it fills it",
+          "[io][wkt]") {
+  // The hole's seed faces, just inside its edges, were the island's where it runs along them:
+  // the flood took the island with the hole (areas 12 and 12, not 14 and 16).
+  const std::string shell = "((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 3 1, 3 3, 1 3, 1 1))";
+  for (const auto& [island, area] :
+       {std::pair("((1 1, 3 1, 3 2, 1 2, 1 1))", 14.0),
+        std::pair("((1 1, 3 1, 3 3, 1 3, 1 1))", 16.0),
+        std::pair("((1.5 1, 2.5 1, 2.5 2, 1.5 2, 1.5 1))", 13.0),
+        std::pair("((1.5 1.5, 2.5 1.5, 2.5 2.5, 1.5 2.5, 1.5 1.5))", 13.0)}) {
+    CAPTURE(island);
+    Cdt cdt;
+    CVT_2::IO::insert_wkt(cdt, parse_wkt("MULTIPOLYGON (" + shell + ", " + island + ")\n"));
+    double sum = 0;
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+      if (f->is_inside_domain()) sum += cdt.triangle(f).area();
+    CHECK(sum == Approx(area));
+  }
+}
+
 TEST_CASE("WKT with Windows line ends or trailing tabs reads as with Unix ones", "[io][wkt]") {
   const auto w = parse_wkt(  // "malformed POLYGON" when CGAL saw the CR
       "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))\r\nLINESTRING (1 1, 3 3)\t\r\nPOINT (1 3) \r\n");

@@ -208,8 +208,16 @@ class Sliding_runs_2 {
       s.evaluated = false;  // one slide an evaluation
       Run& r = m_runs[s.run];
       const std::size_t k = s.index;
-      const double to = reachable(cdt, r, k, s.target);  // its neighbours may have moved
+      double to = reachable(cdt, r, k, s.target);  // its neighbours may have moved
       if (to == r.at[k]) continue;
+      // Sent back to where its last slide came from, a slider would swing between two places
+      // for ever (on a curved run each slide moves the chords its cell is measured against):
+      // halfway there instead, so that the swing dies out.
+      if (s.has_before && std::abs(to - s.before) <= 1e-9 * std::abs(to - r.at[k]))
+        to = reachable(cdt, r, k, (r.at[k] + to) / 2);
+      if (to == r.at[k]) continue;
+      s.before = r.at[k];
+      s.has_before = true;
       r.q[k] = point_at(r, to);
       r.at[k] = to;
       r.v[k]->set_point(r.q[k]);
@@ -249,6 +257,8 @@ class Sliding_runs_2 {
     bool evaluated = false;
     bool stopped = false;  // by stop_at_split_chords()
     double target = 0;     // the arc length planned
+    double before = 0;     // the arc length before its last slide
+    bool has_before = false;
   };
 
   static std::size_t segment_of(const Run& r, double s) {

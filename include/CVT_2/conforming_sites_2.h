@@ -260,6 +260,24 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
   return pairs;
 }
 
+namespace internal {
+
+// The note on the generators of `cdt` inside the circles of conforming lines (after an
+// optimization: those that keep_out could not keep away), empty if none is.
+template <class CDT>
+std::string conforming_disks_note(const CDT& cdt,
+                                  const Conforming_disks<typename CDT::Point_2>& disks) {
+  if (disks.empty()) return {};
+  std::size_t inside = 0;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    inside += disks.contains(v->point()) ? 1 : 0;
+  if (inside == 0) return {};
+  return std::to_string(inside) +
+         " generators lie inside the circles of the conforming lines: the faces near them are "
+         "not on the lines";
+}
+
+}  // namespace internal
 }  // namespace CVT_2
 
 #endif  // CVT_2_CONFORMING_SITES_2_H

@@ -137,42 +137,6 @@ std::vector<std::size_t> nesting_depths(const std::vector<std::vector<Point_2>>&
   return depth;
 }
 
-// The face on the given side of the constrained edge that starts at the vertex at `a` and goes
-// toward `b` (the segment ab may have been split by vertices lying on it).
-template <class CDT>
-typename CDT::Face_handle face_beside(const CDT& cdt, const typename CDT::Point_2& a,
-                                      const typename CDT::Point_2& b, CGAL::Orientation side) {
-  typename CDT::Locate_type lt;
-  int li;
-  const typename CDT::Face_handle fa = cdt.locate(a, lt, li);
-  if (lt != CDT::VERTEX)
-    throw Domain_error("polygon vertex " + to_string(a) + " is not a vertex of the triangulation");
-  const typename CDT::Vertex_handle va = fa->vertex(li);
-  typename CDT::Edge_circulator ec = cdt.incident_edges(va), done = ec;
-  do {
-    const typename CDT::Face_handle f = ec->first;
-    const int i = ec->second;
-    const typename CDT::Vertex_handle w =
-        f->vertex(CDT::cw(i)) == va ? f->vertex(CDT::ccw(i)) : f->vertex(CDT::cw(i));
-    if (cdt.is_infinite(w) || !cdt.is_constrained(*ec)) continue;
-    if (CGAL::orientation(a, b, w->point()) != CGAL::COLLINEAR ||
-        !CGAL::collinear_are_ordered_along_line(a, w->point(), b))
-      continue;
-    const typename CDT::Face_handle g = f->neighbor(i);
-    const typename CDT::Vertex_handle third = f->vertex(i);
-    const bool f_on_side =
-        !cdt.is_infinite(third) && CGAL::orientation(a, b, third->point()) == side;
-    if (f_on_side) return f;
-    if (cdt.is_infinite(f) && !cdt.is_infinite(g)) {
-      const typename CDT::Vertex_handle other = g->vertex(g->index(f));
-      if (CGAL::orientation(a, b, other->point()) != side) return f;
-    }
-    return g;
-  } while (++ec != done);
-  throw Domain_error("polygon edge " + to_string(a) + " - " + to_string(b) +
-                     " is not a constraint of the triangulation");
-}
-
 // Calls f(face, index) for each edge of the triangulation along the segment from the vertex u
 // to the point b, in order (a constraint from u to b, split by the vertices on it), and returns
 // the vertex at b; a null handle if the segment is not made of edges.
@@ -397,8 +361,10 @@ void mark_domain_2(const CDT& cdt, const PointRange& hole_seeds) {
 /// \ingroup PkgCvt2Ref
 /// Marks the domain of a triangulation into which the caller inserted the rings of polygons
 /// with holes (for example read by `CGAL::IO::read_WKT()`), without seed points: the faces
-/// inside each hole ring, next to its edges, serve as hole seeds, and Triangle's rule does the
-/// rest. Polygons may share edges and vertices (a map of counties); their union is the domain.
+/// inside each hole ring, next to its edges, serve as hole seeds (but those that are also just
+/// inside another polygon's ring: an island in the hole, along its edge), and Triangle's rule
+/// does the rest. Polygons may share edges and vertices (a map of counties); their union is the
+/// domain, an island that fills a hole filling it.
 ///
 /// A ring that touches itself at a vertex is read as GEOS reads it (`make_valid()`): cut there
 /// into simple loops, a loop of an outer ring that lies inside another loop of the same ring
@@ -411,28 +377,60 @@ void mark_domain_from_polygons_2(const CDT& cdt, const PolygonWithHolesRange& po
   using Face_handle = typename CDT::Face_handle;
   mark_domain_2(cdt, std::vector<typename CDT::Point_2>());
   if (cdt.dimension() < 2) return;
-  std::vector<Face_handle> stack;
-  // The faces just inside the loops of `ring` whose depth has the parity `hole_parity`.
-  const auto seed = [&](auto first, auto last, std::size_t hole_parity) {
+  // visit(f, hole) for the face f just inside each edge of the loops of a ring, `hole` for the
+  // loops whose depth has the parity `hole_parity`.
+  Face_handle hint;
+  const auto for_each_inside_face = [&](auto first, auto last, std::size_t hole_parity,
+                                        const auto& visit) {
     const auto loops = internal::simple_loops(first, last);
     const auto depth = internal::nesting_depths(loops);
     for (std::size_t l = 0; l < loops.size(); ++l) {
-      if (depth[l] % 2 != hole_parity) continue;
       const auto& loop = loops[l];
+      const bool hole = depth[l] % 2 == hole_parity;
       // The loop's inside lies left of its edges if it turns counterclockwise, right otherwise.
       const CGAL::Orientation inside =
           CGAL::orientation_2(loop.begin(), loop.end()) == CGAL::COUNTERCLOCKWISE
               ? CGAL::LEFT_TURN
               : CGAL::RIGHT_TURN;
-      for (std::size_t i = 0; i < loop.size(); ++i)
-        stack.push_back(internal::face_beside(cdt, loop[i], loop[(i + 1) % loop.size()], inside));
+      auto u = internal::vertex_at(cdt, loop[0], hint);
+      if (u == typename CDT::Vertex_handle())
+        throw Domain_error("polygon vertex " + internal::to_string(loop[0]) +
+                           " is not a vertex of the triangulation");
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const auto& a = loop[i];
+        const auto& b = loop[(i + 1) % loop.size()];
+        u = internal::for_each_edge_along(cdt, u, b, [&](Face_handle g, int j) {
+          const auto third = g->vertex(j);
+          const bool g_inside =
+              !cdt.is_infinite(third) && CGAL::orientation(a, b, third->point()) == inside;
+          visit(g_inside ? g : g->neighbor(j), hole);
+        });
+        if (u == typename CDT::Vertex_handle())
+          throw Domain_error("polygon edge " + internal::to_string(a) + " - " +
+                             internal::to_string(b) + " is not a constraint of the triangulation");
+      }
     }
   };
+  // Holes are flooded from the faces just inside their edges, but for a face that is also just
+  // inside a loop with area (an island in the hole, along its edge: the island's face, which
+  // the flood would have taken with it; a hole an island fills is no hole of the union).
+  std::unordered_set<Face_handle> solid;
+  std::vector<Face_handle> seeds;
+  const auto visit = [&](Face_handle f, bool hole) {
+    if (hole)
+      seeds.push_back(f);
+    else
+      solid.insert(f);
+  };
   for (const auto& pwh : polygons) {
-    seed(pwh.outer_boundary().vertices_begin(), pwh.outer_boundary().vertices_end(), 1);
+    for_each_inside_face(pwh.outer_boundary().vertices_begin(), pwh.outer_boundary().vertices_end(),
+                         1, visit);
     for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h)
-      seed(h->vertices_begin(), h->vertices_end(), 0);
+      for_each_inside_face(h->vertices_begin(), h->vertices_end(), 0, visit);
   }
+  std::vector<Face_handle> stack;
+  for (const Face_handle f : seeds)
+    if (!solid.count(f)) stack.push_back(f);
   internal::flood_outside(cdt, stack);
 }
 

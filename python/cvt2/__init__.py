@@ -388,7 +388,7 @@ def random_points(
         _seed(seed),
         density,
         float(lipschitz_k),
-        _boundary_size(boundary_size),
+        _optional_number(boundary_size, "boundary_size"),
         by_region=cells is not None,
     )
 
@@ -506,6 +506,13 @@ def optimize(
                 "or size=, or a domain made by Domain.resample()"
             )
     counted = cells is not None or size is not None
+    if boundary in ("resample", "slide") and constraints == "conforming" and domain.resampling is None:
+        # Domain.resample() would make the lines constraints ("this domain has none")
+        raise ValueError(
+            f"boundary={boundary!r} with constraints='conforming' is not in the module yet "
+            "(Domain.resample() makes the lines constraints; cvt2 --boundary resample "
+            "--constraints conforming keeps them conforming)"
+        )
     if boundary in ("resample", "slide") and domain.resampling is None and counted:
         domain = domain.resample(cells=cells, size=size)
     if points is None and counted:
@@ -523,8 +530,8 @@ def optimize(
         _count(threads, "threads"),
         callback,
         float(lipschitz_k),
-        _boundary_size(boundary_size),
-        _tolerance(boundary_tolerance),
+        _optional_number(boundary_size, "boundary_size"),
+        _optional_number(boundary_tolerance, "boundary_tolerance"),
         fixed_points,
         _slide(boundary),
         _conforming(constraints),
@@ -582,19 +589,12 @@ def _barriers(constraints):
     return constraints == "barrier"
 
 
-def _boundary_size(value):
+def _optional_number(value, name):
+    """None, or a number as a float (bool and strings refused)."""
     if value is None:
         return None
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
-        raise TypeError(f"boundary_size must be None or a number, not {type(value).__name__}")
-    return float(value)
-
-
-def _tolerance(value):
-    if value is None:
-        return None
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
-        raise TypeError(f"boundary_tolerance must be None or a number, not {type(value).__name__}")
+        raise TypeError(f"{name} must be None or a number, not {type(value).__name__}")
     return float(value)
 
 
@@ -632,7 +632,10 @@ def bounded_voronoi(domain, points, threads=0, *, boundary_tolerance=None) -> "B
     """
     return BoundedVoronoi(
         _cvt2.bounded_voronoi(
-            _impl(domain), points, _count(threads, "threads"), _tolerance(boundary_tolerance)
+            _impl(domain),
+            points,
+            _count(threads, "threads"),
+            _optional_number(boundary_tolerance, "boundary_tolerance"),
         ),
         domain,
     )
@@ -684,7 +687,7 @@ def natural_neighbours(domain, nodes, queries, method="sibson", threads=0, *, bo
         queries,
         method,
         _count(threads, "threads"),
-        _tolerance(boundary_tolerance),
+        _optional_number(boundary_tolerance, "boundary_tolerance"),
         bool(lips),
     )
     try:
@@ -725,7 +728,9 @@ class ConstraintEditor:
 
     def __init__(self, domain, points, *, boundary_tolerance=None):
         self._domain = domain
-        self._impl = _cvt2.ConstraintEditor(_impl(domain), points, _tolerance(boundary_tolerance))
+        self._impl = _cvt2.ConstraintEditor(
+            _impl(domain), points, _optional_number(boundary_tolerance, "boundary_tolerance")
+        )
 
     def insert_constraint(self, points) -> int:
         """Inserts the polyline through ``points`` (float (k, 2), k >= 2); returns its id."""

@@ -226,8 +226,8 @@ def test_cells_too_small_for_double_precision_are_an_error():
     far = cvt2.Domain(np.array([[0, 0], [1, 0], [1, 1], [0, 1]]) + 1e15,
                       [[0, 1], [1, 2], [2, 3], [3, 0]])
     with pytest.raises(cvt2.DomainError, match=r"the cell of generator \(.*\) rounds to [0-2] "
-                                               r"vertices: the cells are too small for double "
-                                               r"precision at their coordinates"):
+                                               r"vertices: double precision cannot hold the "
+                                               r"cells at their coordinates \(cells a few ulps"):
         cvt2.bounded_voronoi(far, cvt2.random_points(far, 40, seed=1))
     # the same square at 1e6 is fine
     near = cvt2.Domain(np.array([[0, 0], [1, 0], [1, 1], [0, 1]]) + 1e6,

@@ -627,3 +627,20 @@ def test_kinds_by_feature_in_python_are_the_programs(program, data, tmp_path):
     assert (tmp_path / "ours.csv").read_bytes() == csv.read_bytes()
     item, _, _, _ = read_csv(csv)
     assert set(item) == {1, 2, 3}  # the boundary, the fault, the river
+
+
+def test_conforming_notes_and_refusals_in_python(data):
+    # A fixed generator inside a line's circles breaks the faces there: cvt2 says so, and now
+    # so does the module (its notes were empty). Resampling with conforming lines is refused with
+    # the reason (was "this domain has none", of a domain with lines).
+    import cvt2
+    from shapely.geometry import LineString, Polygon
+    d = cvt2.Domain.from_shapely(Polygon([(0, 0), (4, 0), (4, 4), (0, 4)]),
+                                 [LineString([(0.5, 2.5), (3.5, 2.5)])])
+    r = cvt2.optimize(d, cvt2.random_points(d, 200, seed=3), constraints="conforming",
+                      max_iterations=5, fixed_points=[[2, 2.52]])  # a well by the river
+    assert any("inside the circles of the conforming lines" in n for n in r.notes), r.notes
+    for boundary in ("resample", "slide"):
+        with pytest.raises(ValueError, match=f"boundary='{boundary}' with constraints='conforming' "
+                                             "is not in the module yet"):
+            cvt2.optimize(d, None, boundary=boundary, cells=300, constraints="conforming")

@@ -467,3 +467,13 @@ def test_resample_and_the_sizing_check_their_arguments():
     # was "RuntimeError: Unable to cast Python instance to C++ type"
     with pytest.raises(TypeError, match="boundary_size must be None or a number, not str"):
         cvt2.random_points(d, 10, density="lipschitz", boundary_size="x")
+
+
+@pytest.mark.parametrize("algorithm", ["lbfgs", "lloyd"])
+def test_a_slide_that_swings_between_two_places_dies_out(program, data, tmp_path, algorithm):
+    # On a curved run a slide moves the chords its cell is measured against: one vertex of
+    # earcut_eberly6 went back and forth between two places every step under L-BFGS (1000
+    # iterations, largest move ratio 0.49); sent back where it came from, it goes halfway.
+    summary, _, _ = run_program(program, data / "earcut_eberly6.wkt", tmp_path, "--boundary",
+                                "slide", "--cells", 300, "--algorithm", algorithm)
+    assert summary["stop"] == "converged" and int(summary["iterations"]) < 200

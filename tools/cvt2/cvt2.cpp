@@ -1060,15 +1060,9 @@ int run(const Options& o) {
   const CVT_2::Optimization_result r =
       optimize(cdt, o, sizing, fixed, disks, o.slide ? &runs : nullptr);
   if (o.slide) slid_domain(o, cdt, runs, *slid, segments, domain_alone, metadata);
-  if (!conforming.lines.empty() && !o.quiet) {  // what breaks the faces on the lines, if any
-    std::size_t inside = 0;
-    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-      inside += disks.contains(v->point()) ? 1 : 0;
-    if (inside > 0)
-      std::cerr << "cvt2: note: " << inside
-                << " generators lie inside the circles of the conforming lines: the faces "
-                   "near them are not on the lines\n";
-  }
+  // what breaks the faces on the lines, if any
+  const std::string inside = CVT_2::internal::conforming_disks_note(cdt, disks);
+  if (!inside.empty() && !o.quiet) std::cerr << "cvt2: note: " << inside << '\n';
   const BVD bvd(cdt);
   write_outputs(o, cdt, bvd, metadata, domain_alone, segments, kinds, conforming, top, bottom);
   print_summary(o, r, bvd, domain_area(cdt));

@@ -194,14 +194,16 @@ Bvd_mesh_builder_2<Diagram>::Bvd_mesh_builder_2(Mesh& mesh, const Diagram& bvd, 
   assemble(found, threads);
   conform_constraints();
   pair_constraint_sides();
-  // Cells a few ulps of their coordinates wide (a small domain far from the origin) can round
-  // to fewer than three vertices: an empty polygon in every file, which no reader takes.
+  // Cells a few ulps of their coordinates wide (a small domain far from the origin), or whose
+  // squared lengths overflow (coordinates beyond about 1e154), can round to fewer than three
+  // vertices: an empty polygon in every file, which no reader takes.
   for (std::size_t k = 0; k < m_generators.size(); ++k)
     if (m_offsets[k + 1] - m_offsets[k] < 3)
       throw Domain_error("the cell of generator " + to_string(m_generators[k]->point()) +
                          " rounds to " + std::to_string(m_offsets[k + 1] - m_offsets[k]) +
-                         " vertices: the cells are too small for double precision at their "
-                         "coordinates (move the domain nearer the origin, or use fewer cells)");
+                         " vertices: double precision cannot hold the cells at their "
+                         "coordinates (cells a few ulps wide: move the domain nearer the origin "
+                         "or use fewer cells; squared lengths beyond 1e308: scale it down)");
 }
 
 // Cells are numbered in the order the cells pass visits them, circumcenters of the faces that
