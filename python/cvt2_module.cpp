@@ -1066,19 +1066,20 @@ struct Editing {
     for (std::size_t k = 0; k < seen.size(); ++k)
       if (seen[k]->point() != from[k])
         moved_from.push_back(from[k]), moved_to.push_back(seen[k]->point());
-    follow(moved_from, moved_to);
+    follow(given, moved_from, moved_to);
     out["moved_from"] = to_array(moved_from);
     out["moved_to"] = to_array(moved_to);
     return out;
   }
-  // The points given that were at `from[k]` are now at `to[k]`: the snapshots' point_region
-  // follows them.
-  void follow(const std::vector<Point_2>& from, const std::vector<Point_2>& to) {
+  // The `points` that were at `from[k]` are now at `to[k]`: the snapshots' point_region and
+  // ridge_constraint follow the points given and the input segments' ends.
+  static void follow(std::vector<Point_2>& points, const std::vector<Point_2>& from,
+                     const std::vector<Point_2>& to) {
     if (from.empty()) return;
     std::map<std::pair<double, double>, Point_2> moved;
     for (std::size_t k = 0; k < from.size(); ++k)
       moved.emplace(std::pair(from[k].x(), from[k].y()), to[k]);
-    for (Point_2& p : given) {
+    for (Point_2& p : points) {
       const auto it = moved.find(std::pair(p.x(), p.y()));
       if (it != moved.end()) p = it->second;
     }
@@ -1091,10 +1092,10 @@ struct Editing {
     if (lt != CDT::VERTEX)
       throw CVT_2::Domain_error("move_constrained_vertex: no vertex at " +
                                 CVT_2::internal::to_string(p));
-    const CDT::Vertex_handle v = f->vertex(li);
-    editor->move_constrained_vertex(v, q);
-    follow({p}, {v->point()});
-    std::replace(segment_ends.begin(), segment_ends.end(), p, v->point());
+    // the vertex where it went (a new one if it was removed and inserted there)
+    const Point_2 now = editor->move_constrained_vertex(f->vertex(li), q)->point();
+    follow(given, {p}, {now});
+    follow(segment_ends, {p}, {now});
     return report();
   }
   py::dict remove(std::int64_t c) {

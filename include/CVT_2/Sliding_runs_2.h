@@ -209,7 +209,6 @@ class Sliding_runs_2 {
       Run& r = m_runs[s.run];
       const std::size_t k = s.index;
       double to = reachable(cdt, r, k, s.target);  // its neighbours may have moved
-      if (to == r.at[k]) continue;
       // Sent back to where its last slide came from, a slider would swing between two places
       // for ever (on a curved run each slide moves the chords its cell is measured against):
       // halfway there instead, so that the swing dies out.

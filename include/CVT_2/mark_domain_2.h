@@ -178,6 +178,32 @@ typename CDT::Vertex_handle vertex_at(const CDT& cdt, const typename CDT::Point_
   return lt == CDT::VERTEX ? hint->vertex(li) : typename CDT::Vertex_handle();
 }
 
+// Calls visit(g, j, inside) for each edge (g, j) of the triangulation along the simple loop
+// `loop` (constraints from each of its points to the next), `inside` the face beside the edge
+// on the loop's inside (left of it if the loop turns counterclockwise, right otherwise).
+// \throws Domain_error if the loop is not made of edges.
+template <class CDT, class Visit>
+void for_each_edge_of_loop(const CDT& cdt, const std::vector<typename CDT::Point_2>& loop,
+                           typename CDT::Face_handle& hint, const Visit& visit) {
+  const CGAL::Orientation inside =
+      CGAL::orientation_2(loop.begin(), loop.end()) == CGAL::COUNTERCLOCKWISE ? CGAL::LEFT_TURN
+                                                                              : CGAL::RIGHT_TURN;
+  auto u = vertex_at(cdt, loop[0], hint);
+  for (std::size_t i = 0; i < loop.size() && u != typename CDT::Vertex_handle(); ++i) {
+    const auto& a = loop[i];
+    const auto& b = loop[(i + 1) % loop.size()];
+    u = for_each_edge_along(cdt, u, b, [&](typename CDT::Face_handle g, int j) {
+      const auto third = g->vertex(j);
+      const bool g_inside =
+          !cdt.is_infinite(third) && CGAL::orientation(a, b, third->point()) == inside;
+      visit(g, j, g_inside ? g : g->neighbor(j));
+    });
+  }
+  if (u == typename CDT::Vertex_handle())
+    throw Domain_error("the ring through " + to_string(loop[0]) +
+                       " is not made of constraints of the triangulation");
+}
+
 // The faces of the region a ring encloses, read as mark_domain_from_polygons_2() reads it (its
 // loops touch at vertices; a loop inside an odd number of the others is a hole in it): flooded
 // from inside its loops, across every edge but its own. The ring's edges are constraints.
@@ -195,28 +221,12 @@ std::unordered_set<typename CDT::Face_handle> ring_region(const CDT& cdt, PointI
   std::set<Key> own;
   std::vector<Face_handle> stack;
   Face_handle hint;
-  for (std::size_t l = 0; l < loops.size(); ++l) {
-    const auto& loop = loops[l];
-    const CGAL::Orientation inside =
-        CGAL::orientation_2(loop.begin(), loop.end()) == CGAL::COUNTERCLOCKWISE ? CGAL::LEFT_TURN
-                                                                                : CGAL::RIGHT_TURN;
-    auto u = vertex_at(cdt, loop[0], hint);
-    for (std::size_t i = 0; i < loop.size() && u != typename CDT::Vertex_handle(); ++i) {
-      const auto& a = loop[i];
-      const auto& b = loop[(i + 1) % loop.size()];
-      u = for_each_edge_along(cdt, u, b, [&](Face_handle g, int j) {
-        own.insert(key(g->vertex(CDT::ccw(j)), g->vertex(CDT::cw(j))));
-        if (depth[l] % 2 != 0) return;  // a hole in the ring's region: its inside is not in it
-        const auto third = g->vertex(j);
-        const bool g_inside =
-            !cdt.is_infinite(third) && CGAL::orientation(a, b, third->point()) == inside;
-        stack.push_back(g_inside ? g : g->neighbor(j));
-      });
-    }
-    if (u == typename CDT::Vertex_handle())
-      throw Domain_error("the ring through " + to_string(loop[0]) +
-                         " is not made of constraints of the triangulation");
-  }
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    for_each_edge_of_loop(cdt, loops[l], hint, [&](Face_handle g, int j, Face_handle inside) {
+      own.insert(key(g->vertex(CDT::ccw(j)), g->vertex(CDT::cw(j))));
+      // a hole in the ring's region: its inside is not in it
+      if (depth[l] % 2 == 0) stack.push_back(inside);
+    });
   std::unordered_set<Face_handle> region;
   while (!stack.empty()) {
     const Face_handle f = stack.back();
@@ -384,32 +394,10 @@ void mark_domain_from_polygons_2(const CDT& cdt, const PolygonWithHolesRange& po
                                         const auto& visit) {
     const auto loops = internal::simple_loops(first, last);
     const auto depth = internal::nesting_depths(loops);
-    for (std::size_t l = 0; l < loops.size(); ++l) {
-      const auto& loop = loops[l];
-      const bool hole = depth[l] % 2 == hole_parity;
-      // The loop's inside lies left of its edges if it turns counterclockwise, right otherwise.
-      const CGAL::Orientation inside =
-          CGAL::orientation_2(loop.begin(), loop.end()) == CGAL::COUNTERCLOCKWISE
-              ? CGAL::LEFT_TURN
-              : CGAL::RIGHT_TURN;
-      auto u = internal::vertex_at(cdt, loop[0], hint);
-      if (u == typename CDT::Vertex_handle())
-        throw Domain_error("polygon vertex " + internal::to_string(loop[0]) +
-                           " is not a vertex of the triangulation");
-      for (std::size_t i = 0; i < loop.size(); ++i) {
-        const auto& a = loop[i];
-        const auto& b = loop[(i + 1) % loop.size()];
-        u = internal::for_each_edge_along(cdt, u, b, [&](Face_handle g, int j) {
-          const auto third = g->vertex(j);
-          const bool g_inside =
-              !cdt.is_infinite(third) && CGAL::orientation(a, b, third->point()) == inside;
-          visit(g_inside ? g : g->neighbor(j), hole);
-        });
-        if (u == typename CDT::Vertex_handle())
-          throw Domain_error("polygon edge " + internal::to_string(a) + " - " +
-                             internal::to_string(b) + " is not a constraint of the triangulation");
-      }
-    }
+    for (std::size_t l = 0; l < loops.size(); ++l)
+      internal::for_each_edge_of_loop(cdt, loops[l], hint, [&](Face_handle, int, Face_handle f) {
+        visit(f, depth[l] % 2 == hole_parity);
+      });
   };
   // Holes are flooded from the faces just inside their edges, but for a face that is also just
   // inside a loop with area (an island in the hole, along its edge: the island's face, which

@@ -889,13 +889,9 @@ void check_layer(const Options& o, const std::vector<double>& top,
   if (top.size() != 1 && bottom.size() != 1 && top.size() != bottom.size())
     throw Usage_error("--top has " + std::to_string(top.size()) + " values and --bottom " +
                       std::to_string(bottom.size()) + " (one, or one a cell each)");
-  for (std::size_t k = 0; k < std::max(top.size(), bottom.size()); ++k) {
-    const double t = top[top.size() == 1 ? 0 : k], b = bottom[bottom.size() == 1 ? 0 : k];
-    if (std::isfinite(t) && std::isfinite(b) && !(b < t))  // as write_disv() says it
-      throw Usage_error("cell " + std::to_string(k + 1) + "'s bottom " +
-                        CVT_2::internal::number_text(b) + " is not below its top " +
-                        CVT_2::internal::number_text(t));
-  }
+  const std::string bad =
+      CVT_2::internal::layer_error(top, bottom, std::max(top.size(), bottom.size()));
+  if (!bad.empty()) throw Usage_error(bad);  // as write_disv() says it
 }
 
 int run(const Options& o) {

@@ -18,6 +18,26 @@
 #include <vector>
 
 namespace CVT_2 {
+namespace internal {
+
+// The first of `cells` cells whose top or bottom (one value, or one a cell) is not finite or
+// whose bottom is not below its top, as "cell k's ..." (k from 1); empty if none is.
+inline std::string layer_error(const std::vector<double>& top, const std::vector<double>& bottom,
+                               std::size_t cells) {
+  for (std::size_t k = 0; k < cells; ++k) {
+    const double t = top[top.size() == 1 ? 0 : k], b = bottom[bottom.size() == 1 ? 0 : k];
+    if (!std::isfinite(t) || !std::isfinite(b))
+      return "cell " + std::to_string(k + 1) + "'s " + (std::isfinite(t) ? "bottom " : "top ") +
+             number_text(std::isfinite(t) ? b : t) + " is not a finite number";
+    if (!(b < t))
+      return "cell " + std::to_string(k + 1) + "'s bottom " + number_text(b) +
+             " is not below its top " + number_text(t);
+  }
+  return {};
+}
+
+}  // namespace internal
+
 namespace IO {
 
 /// \ingroup PkgCvt2IO
@@ -52,18 +72,8 @@ void write_disv(std::ostream& os, const Simulation_grid_2<Mesh>& grid,
       throw std::invalid_argument("write_disv: " + std::to_string(values->size()) + " " + name +
                                   " values for " + std::to_string(cells) +
                                   " cells (one, or one a cell)");
-  for (std::size_t k = 0; k < cells; ++k) {
-    const double t = top[top.size() == 1 ? 0 : k], b = bottom[bottom.size() == 1 ? 0 : k];
-    if (!std::isfinite(t) || !std::isfinite(b))
-      throw std::invalid_argument("write_disv: cell " + std::to_string(k + 1) + "'s " +
-                                  (std::isfinite(t) ? "bottom " : "top ") +
-                                  internal::number_text(std::isfinite(t) ? b : t) +
-                                  " is not a finite number");
-    if (!(b < t))
-      throw std::invalid_argument("write_disv: cell " + std::to_string(k + 1) + "'s bottom " +
-                                  internal::number_text(b) + " is not below its top " +
-                                  internal::number_text(t));
-  }
+  const std::string bad = internal::layer_error(top, bottom, cells);
+  if (!bad.empty()) throw std::invalid_argument("write_disv: " + bad);
   // Which cells use each vertex, and whether it lies between two bisector pieces of the two.
   std::vector<std::vector<Index>> users(grid.number_of_vertices());
   std::vector<unsigned char> inner(grid.number_of_vertices(), 1);
