@@ -1472,6 +1472,7 @@ std::shared_ptr<Optimization> optimize(
   return out;
 }
 
+#ifdef CVT_2_MODULE_BENCHMARKS
 // The benchmark's C++ lambda: the density the benchmark's numpy callback computes,
 // 1 + a exp(-|p - c|^2 / w), in Lloyd iteration as optimize() runs it.
 std::shared_ptr<Optimization> optimize_lambda_density(const std::shared_ptr<const Domain>& domain,
@@ -1497,6 +1498,7 @@ std::shared_ptr<Optimization> optimize_lambda_density(const std::shared_ptr<cons
   out->cdt = std::move(cdt);
   return out;
 }
+#endif
 
 }  // namespace
 
@@ -1678,7 +1680,9 @@ PYBIND11_MODULE(_cvt2, m) {
   m.def("natural_neighbours", &natural_neighbours, py::arg("domain"), py::arg("nodes"),
         py::arg("queries"), py::arg("method"), py::arg("threads"), py::arg("boundary_tolerance"),
         py::arg("lips") = false);
+#ifdef CVT_2_MODULE_BENCHMARKS
   m.def("_optimize_lambda_density", &optimize_lambda_density, py::arg("domain"), py::arg("points"),
         py::arg("max_iterations"), py::arg("move_ratio"), py::arg("threads"), py::arg("a"),
         py::arg("cx"), py::arg("cy"), py::arg("w"));
+#endif
 }

@@ -7,8 +7,10 @@
 # cells coloured by the county of their generator, by scripts/plot_geojson_cells.py).
 set -e
 root=$(cd "$(dirname "$0")/.." && pwd)
-"$root/scripts/install_dependencies.sh" --only cmake g++ make libcgal-dev nlohmann-json3-dev \
-  python3-pil
+# ccache keeps the compiled cvt2: the test command (scripts/run_tests.sh) compiles it with the
+# same flags and takes it from the cache, a minute and a half of a core.
+"$root/scripts/install_dependencies.sh" --only cmake g++ make ccache libcgal-dev \
+  nlohmann-json3-dev python3-pil
 # No tests, examples or Python module: cvt2 alone, so the configuration finds only what it uses.
 cmake -S "$root" -B "$root/build-main" -DCMAKE_BUILD_TYPE=Release -DCVT_2_BUILD_TESTS=OFF \
   -DCVT_2_BUILD_EXAMPLES=OFF -DCVT_2_BUILD_PYTHON=OFF > /dev/null

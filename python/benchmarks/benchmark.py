@@ -5,7 +5,8 @@ section of benchmarks/README.md, each a median of --runs runs, ratios within one
 1. optimize() against the cvt2 program on the same run: 10^5 generators, uniform density, Lloyd,
    20 iterations; the optimization's time as the program prints it (seconds=) and as
    OptimizeResult.seconds measures it the same way, and the whole call against the whole program.
-2. A numpy density callback against the same formula as a C++ lambda, in the same optimization.
+2. A numpy density callback against the same formula as a C++ lambda, in the same optimization
+   (the lambda is in the module of a build configured with -DCVT_2_BUILD_BENCHMARKS=ON).
 3. What Python users do today, side by side: scipy.spatial.Voronoi of the same generators (four
    far points added, so that every region is finite) and shapely's intersection of each region
    with the domain, as flopy and pyvista-gridder do, against bounded_voronoi(); cell areas in a
@@ -82,6 +83,10 @@ def bench_optimize(program, n, runs, tmp):
 
 
 def bench_density(n, runs):
+    if not hasattr(cvt2._cvt2, "_optimize_lambda_density"):
+        print("## 2. A numpy density against a C++ lambda: skipped, the module has no C++ lambda "
+              "(configure with -DCVT_2_BUILD_BENCHMARKS=ON)\n")
+        return
     domain = cvt2.Domain([[0, 0], [1, 0], [1, 1], [0, 1]], [[0, 1], [1, 2], [2, 3], [3, 0]])
     points = cvt2.random_points(domain, n, seed=2)
     a, cx, cy, w = 20.0, 0.5, 0.5, 0.05
