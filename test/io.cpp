@@ -672,6 +672,15 @@ TEST_CASE("regression: a constraint or hole point outside the domain is an error
                  "coordinates": [[37.5, -84.2], [37.6, -84.1]]}]})"),
              Catch::Contains("t.geojson: geometry 1: the line from (37.5, -84.2) "
                              "to (37.6, -84.1) lies outside"));
+  // A line of no length (its points all one; GEOS finds it invalid) was a point constraint.
+  CHECK_THAT(wkt_domain_error("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))\n"
+                              "LINESTRING (0.5 0.25, 0.5 0.25, 0.5 0.25)"),
+             Catch::Contains("t.wkt:2: the line at (0.5, 0.25) has no length"));
+  CHECK_THAT(geojson_domain_error(
+                 R"({"type": "GeometryCollection", "geometries": [{"type": "Polygon",
+                 "coordinates": [[[0, 0], [1, 0], [1, 1], [0, 0]]]}, {"type": "LineString",
+                 "coordinates": [[0.5, 0.25], [0.5, 0.25]]}]})"),
+             Catch::Contains("t.geojson: geometry 1: the line at (0.5, 0.25) has no length"));
   // .poly: a segment outside, a hole point outside (two in one hole are fine)
   const auto poly_error = [](const std::string& text) {
     return message_of<CVT_2::Domain_error>([&] {

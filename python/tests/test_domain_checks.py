@@ -66,6 +66,24 @@ def test_a_constraint_outside_the_domain_is_an_error_naming_it(tmp_path):
         cvt2.Domain.from_file(geojson)
 
 
+def test_a_line_of_no_length_is_an_error_naming_it(tmp_path):
+    # All its points one: GEOS finds it invalid; it was taken as a point, a vertex of the cells.
+    square = Polygon([(0, 0), (1, 0), (1, 1), (0, 1)])
+    dot = LineString([(0.5, 0.25), (0.5, 0.25)])
+    assert not dot.is_valid
+    with pytest.raises(cvt2.DomainError, match=r"^<shapely>: constraints\[0\]: the line at "
+                                               r"\(0.5, 0.25\) has no length"):
+        cvt2.Domain.from_shapely(square, [dot])
+    wkt = tmp_path / "dot.wkt"
+    write_wkt(wkt, [square], [dot])
+    with pytest.raises(cvt2.DomainError, match=rf"{wkt}:2: the line at \(0.5, 0.25\) has no"):
+        cvt2.Domain.from_file(wkt)
+    geojson = tmp_path / "dot.geojson"
+    write_geojson(geojson, [square], [dot])
+    with pytest.raises(cvt2.DomainError, match=rf"{geojson}: feature 2: the line at"):
+        cvt2.Domain.from_file(geojson)
+
+
 def test_a_line_partly_outside_constrains_the_cells_with_its_part_inside():
     square = Polygon([(0, 0), (1, 0), (1, 0.5), (1, 1), (0, 1)])
     line = LineString([(0.5, 0.5), (1, 0.5), (2, 0.5)])  # out through the vertex (1, 0.5)
@@ -186,3 +204,16 @@ def test_the_program_takes_points_a_rounding_outside_and_says_so(program, tmp_pa
     run = subprocess.run([program, str(domain), "--points-in", str(points), "-n", "0",
                           "--boundary-tolerance", "0"], capture_output=True, text=True)
     assert run.returncode == 1 and "(boundary tolerance 0); so do" in run.stderr
+
+
+def test_the_program_says_when_refine_asks_for_no_finer_cells(program, data, tmp_path):
+    # --refine's SIZE at or above the background size (that of -n's uniform cells) refines
+    # nothing: a note names it. A size below it says nothing.
+    domain = data / "square_inner_constraints.wkt"
+    for size, said in ((100, True), (0.05, False)):
+        run = subprocess.run([program, str(domain), "-n", "200", "--iterations", "2", "--refine",
+                              "5", "5", str(size), "1", "--points-out",
+                              str(tmp_path / "points.txt")], capture_output=True, text=True)
+        assert run.returncode == 0, run.stderr
+        assert ("cvt2: note: --refine 5 5 " in run.stderr
+                and "not below the background cells'" in run.stderr) == said, run.stderr

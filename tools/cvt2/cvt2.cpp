@@ -1045,8 +1045,13 @@ int run(const Options& o) {
   if (!o.refine.empty()) {  // the background: uniform cells, as many as asked for
     const double background = background_size(o, n + present, cdt);
     sizing.refinement.emplace(background);
-    for (const auto& [x, y, size, radius] : o.refine)
+    for (const auto& [x, y, size, radius] : o.refine) {
+      if (size >= background)  // the background is the largest size: nothing to refine
+        std::cerr << "cvt2: note: --refine " << x << ' ' << y << ' ' << size << ' ' << radius
+                  << ": the size is not below the background cells' (" << background
+                  << "): no finer cells there\n";
       sizing.refinement->add_point(Point_2(x, y), std::min(size, background), radius);
+    }
   }
   n += redistribute(o, sizing, fixed, cdt);
   insert_random_points(n, o, sizing, cdt, disks);

@@ -275,7 +275,8 @@ Wkt_data<K> read_wkt(const std::string& filename) {
 ///         (from 0 within the line or feature, ring 0 the exterior): a geometry that crosses
 ///         itself or an earlier one, with the two segments (with a triangulation that does
 ///         not compute intersections), a hole not inside its polygon's exterior or inside another
-///         hole (as GEOS finds the polygon invalid), an empty domain, a linestring wholly outside
+///         hole (as GEOS finds the polygon invalid), an empty domain, a linestring of no length
+///         (its points all the same; GEOS finds it invalid), a linestring wholly outside
 ///         the domain (in another coordinate system, or with x and y swapped?), or a point outside
 ///         the domain (the first few named, with how many).
 template <class CDT>
@@ -308,6 +309,9 @@ void insert_wkt(CDT& cdt, const Wkt_data<typename CDT::Geom_traits>& w) {
   std::size_t inserted = 0;
   for_each_geometry([&](const auto& points, bool closed, std::size_t line) {
     const std::vector<Point_2> p = internal::polyline_points(points, closed);
+    if (!closed && p.size() < 2)  // a point, not a line (GEOS finds it invalid)
+      throw Domain_error(where(line) + "the line at " + internal::to_string(p.front()) +
+                         " has no length: its points are all the same");
     try {
       cdt.insert_constraint(p.begin(), p.end(), closed);
     } catch (const typename CDT::Intersection_of_constraints_exception&) {
