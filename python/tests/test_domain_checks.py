@@ -1,6 +1,7 @@
 # Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 # Issue 38: holes outside their polygon, constraints outside the domain, and points on the
 # boundary computed in floating point, through every reader and the functions that take points.
+import re
 import subprocess
 
 import numpy as np
@@ -49,39 +50,34 @@ def test_a_hole_outside_its_shell_is_an_error_in_every_reader(tmp_path):
         assert cvt2.Domain.from_shapely(valid).area == pytest.approx(valid.area, rel=1e-12)
 
 
+def _error_in_every_reader(tmp_path, polygon, lines, shapely_message, file_message):
+    """The same DomainError from shapely (the lines as constraints[i]) and from a WKT and a
+    GeoJSON file with the last line (on the file's line 2, its feature 2)."""
+    with pytest.raises(cvt2.DomainError, match="^<shapely>: " + shapely_message):
+        cvt2.Domain.from_shapely(polygon, lines)
+    for write, where in ((write_wkt, ":2: "), (write_geojson, ": feature 2: ")):
+        path = tmp_path / ("domain.wkt" if write is write_wkt else "domain.geojson")
+        write(path, [polygon], lines[-1:])
+        with pytest.raises(cvt2.DomainError, match=re.escape(f"{path}{where}") + file_message):
+            cvt2.Domain.from_file(path)
+
+
 def test_a_constraint_outside_the_domain_is_an_error_naming_it(tmp_path):
     square = Polygon([(10, 50), (11, 50), (11, 51), (10, 51)])
     swapped = LineString([(50.5, 10.2), (50.5, 10.8)])  # x and y swapped
-    with pytest.raises(cvt2.DomainError, match=r"^<shapely>: constraints\[1\]: the line from "
-                                               r"\(50.5, 10.2\) to \(50.5, 10.8\) lies outside "
-                                               r"the domain, which spans \(10, 50\) to \(11, 51\)"):
-        cvt2.Domain.from_shapely(square, [LineString([(10.2, 50.5), (10.8, 50.5)]), swapped])
-    wkt = tmp_path / "line.wkt"
-    write_wkt(wkt, [square], [swapped])
-    with pytest.raises(cvt2.DomainError, match=rf"{wkt}:2: the line from"):
-        cvt2.Domain.from_file(wkt)
-    geojson = tmp_path / "line.geojson"
-    write_geojson(geojson, [square], [swapped])
-    with pytest.raises(cvt2.DomainError, match=rf"{geojson}: feature 2: the line from"):
-        cvt2.Domain.from_file(geojson)
+    _error_in_every_reader(tmp_path, square, [LineString([(10.2, 50.5), (10.8, 50.5)]), swapped],
+                           r"constraints\[1\]: the line from \(50.5, 10.2\) to \(50.5, 10.8\) "
+                           r"lies outside the domain, which spans \(10, 50\) to \(11, 51\)",
+                           r"the line from \(50.5, 10.2\)")
 
 
 def test_a_line_of_no_length_is_an_error_naming_it(tmp_path):
     # All its points one: GEOS finds it invalid; it was taken as a point, a vertex of the cells.
-    square = Polygon([(0, 0), (1, 0), (1, 1), (0, 1)])
     dot = LineString([(0.5, 0.25), (0.5, 0.25)])
     assert not dot.is_valid
-    with pytest.raises(cvt2.DomainError, match=r"^<shapely>: constraints\[0\]: the line at "
-                                               r"\(0.5, 0.25\) has no length"):
-        cvt2.Domain.from_shapely(square, [dot])
-    wkt = tmp_path / "dot.wkt"
-    write_wkt(wkt, [square], [dot])
-    with pytest.raises(cvt2.DomainError, match=rf"{wkt}:2: the line at \(0.5, 0.25\) has no"):
-        cvt2.Domain.from_file(wkt)
-    geojson = tmp_path / "dot.geojson"
-    write_geojson(geojson, [square], [dot])
-    with pytest.raises(cvt2.DomainError, match=rf"{geojson}: feature 2: the line at"):
-        cvt2.Domain.from_file(geojson)
+    _error_in_every_reader(tmp_path, Polygon([(0, 0), (1, 0), (1, 1), (0, 1)]), [dot],
+                           r"constraints\[0\]: the line at \(0.5, 0.25\) has no length",
+                           r"the line at \(0.5, 0.25\) has no length")
 
 
 def test_a_line_partly_outside_constrains_the_cells_with_its_part_inside():
