@@ -247,6 +247,7 @@ struct Domain {
   // (shapely: 0 the polygon, k + 1 constraints[k]).
   std::vector<Point_2> segment_ends;
   std::vector<std::int64_t> segment_items;
+  std::size_t segment_rings = 0;  // the first segments, polygons' ring edges (Domain_segments)
   double area = 0;
   std::array<double, 4> bounds{};
   std::size_t own_cells = 0;  // the vertices of the triangulation with a cell: on the domain
@@ -292,9 +293,15 @@ struct Domain {
     auto segments = CVT_2::IO::domain_segments(data);
     segment_ends = std::move(segments.ends);
     segment_items = std::move(segments.items);
+    segment_rings = segments.rings;
     if (data.description.index() == 1)
       for (std::int64_t& item : segment_items) item += offset;
     const auto cdt = triangulation();
+    auto& notes = data.file.repeated;  // a domain made from another may have them already
+    for (const std::string& note : CVT_2::IO::segments_on_earlier_ones(
+             *cdt, CVT_2::IO::Domain_segments<K>{segment_ends, segment_items, segment_rings}))
+      if (std::find(notes.begin(), notes.end(), data.file.source + ": " + note) == notes.end())
+        notes.push_back(data.file.source + ": " + note);
     own_cells = CVT_2::internal::number_of_vertices_in_domain(*cdt);
     bounds = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     for (auto f = cdt->finite_faces_begin(); f != cdt->finite_faces_end(); ++f) {
@@ -459,7 +466,7 @@ py::dict domain_arrays(const Domain& d) {
 void name_segments(Domain& out, const CDT& cdt, const std::vector<Point_2>& ends,
                    const std::vector<std::int64_t>& items) {
   const auto of_edge =
-      CVT_2::IO::constrained_edge_items(cdt, CVT_2::IO::Domain_segments<K>{ends, items});
+      CVT_2::IO::constrained_edge_items(cdt, CVT_2::IO::Domain_segments<K>{ends, items, 0});
   for (std::size_t i = 0; i < out.segment_items.size(); ++i) {
     const auto it = of_edge.find(std::minmax(out.segment_ends[2 * i], out.segment_ends[2 * i + 1]));
     out.segment_items[i] = it == of_edge.end() ? -1 : it->second;
@@ -499,7 +506,7 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
     auto runs = std::make_shared<CVT_2::Sliding_runs_2<CDT>>();
     // The input item of each constrained edge, for the chords that replace them.
     const auto edge_items = CVT_2::IO::constrained_edge_items(
-        *cdt, CVT_2::IO::Domain_segments<K>{d.segment_ends, d.segment_items});
+        *cdt, CVT_2::IO::Domain_segments<K>{d.segment_ends, d.segment_items, d.segment_rings});
     std::vector<CVT_2::Resampled_chord<Point_2>> chords;
     auto np = CVT_2::parameters::corner_angle(corner_angle)
                   .spacing_ratio(spacing_ratio)

@@ -273,10 +273,17 @@ class Constraint_editor_2 {
 
   /// the vertices of constraint `id`, in order along it (a removed one's: the vertices it had,
   /// where they are now, as later edits and moves left them)
+  /// \throws Domain_error if there is no constraint `id`
   const std::vector<Vertex_handle>& vertices_in_constraint(Constraint_id id) const {
-    return m_polylines.at(id);
+    check_known(id, "vertices_in_constraint");
+    return m_polylines[id];
   }
-  bool is_removed(Constraint_id id) const { return m_removed.at(id); }  ///< removed?
+  /// whether constraint `id` was removed
+  /// \throws Domain_error if there is no constraint `id`
+  bool is_removed(Constraint_id id) const {
+    check_known(id, "is_removed");
+    return m_removed[id];
+  }
   /// the number of constraints inserted here, removed ones included (the next id)
   std::size_t number_of_constraints() const { return m_polylines.size(); }
   /// what the last edit changed (one that threw changed nothing and leaves it as it was)
@@ -293,9 +300,12 @@ class Constraint_editor_2 {
     return key(e.first->vertex(CDT::ccw(e.second)), e.first->vertex(CDT::cw(e.second)));
   }
 
-  void check_id(Constraint_id id, const char* what) const {
+  void check_known(Constraint_id id, const char* what) const {
     if (id >= m_polylines.size())
       throw Domain_error(std::string(what) + ": there is no constraint " + std::to_string(id));
+  }
+  void check_id(Constraint_id id, const char* what) const {
+    check_known(id, what);
     if (m_removed[id])
       throw Domain_error(std::string(what) + ": constraint " + std::to_string(id) + " was removed");
   }

@@ -206,7 +206,9 @@ class Domain:
 
     @property
     def notes(self) -> list:
-        """Points of the file that repeat earlier ones (they are merged), as ``cvt2`` notes them."""
+        """Points of the file that repeat earlier ones (they are merged), and segments that lie on
+        earlier ones (``ridge_constraint`` names the shared part by the earlier one's item), as
+        ``cvt2`` notes them."""
         return self._impl.notes
 
     @functools.cached_property

@@ -213,3 +213,27 @@ def test_the_program_says_when_refine_asks_for_no_finer_cells(program, data, tmp
         assert run.returncode == 0, run.stderr
         assert ("cvt2: note: --refine 5 5 " in run.stderr
                 and "not below the background cells'" in run.stderr) == said, run.stderr
+
+
+def test_a_segment_on_an_earlier_one_is_noted(program, data, tmp_path):
+    # A constrained edge is named by the first input segment it lies on: a segment along an
+    # earlier one (row 5 within row 4; row 6 partly along it) gives the shared part's cells to
+    # the earlier row. It was silent: row 5 was missing from the list of cells on constraints.
+    poly = tmp_path / "on.poly"
+    poly.write_text("8 2 0 0\n1 0 0\n2 10 0\n3 10 10\n4 0 10\n5 2 5\n6 6 5\n7 8 5\n8 9 5\n"
+                    "7 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 7\n6 6 7\n7 6 8\n0\n")
+    within = f"{poly}: item 5: the segment from (6, 5) to (8, 5) lies on item 4's: its pieces are named 4"
+    partly = (f"{poly}: item 6: the segment from (6, 5) to (9, 5) lies partly on item 4's: the "
+              "pieces along it are named 4")
+    domain = cvt2.Domain.from_file(poly)
+    assert domain.notes == [within, partly]
+    named = set(cvt2.bounded_voronoi(domain, [[5, 3], [5, 7], [3, 3], [7.5, 7]]).ridge_constraint)
+    assert named == {-1, 0, 1, 2, 3, 4, 6}
+    run = subprocess.run([program, str(poly), "-n", "10", "--iterations", "2", "--quiet",
+                          "--cells-on-constraints", str(tmp_path / "on.csv")],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    assert f"cvt2: note: {within} (and 1 more lie on others)" in run.stderr
+    # The bundled domains have none, counties sharing their borders included.
+    for name in ("square_inner_constraints.poly", "us_kentucky_counties.poly", "four_clusters.poly"):
+        assert cvt2.Domain.from_file(data / name).notes == []

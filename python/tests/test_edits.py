@@ -97,6 +97,11 @@ def test_bad_input_is_an_error():
         editor.move_constrained_vertex([[1, 1, 1]], [2, 2])
     with pytest.raises(cvt2.DomainError, match="million"):
         editor.extend_constraint(0, [3, 3], spacing=1e-300)
+    # Ids that name no constraint (was libstdc++'s "vector::_M_range_check" for these two)
+    for call in (editor.constraint_vertices, editor.is_removed, editor.remove_constraint):
+        for bad in (1, 99):
+            with pytest.raises(cvt2.DomainError, match=f"there is no constraint {bad}$"):
+                call(bad)
     before = editor.report
     assert editor.extend_constraint(0, [2, 2])["changed_cells"].shape == (0, 2)  # no change
     assert len(before["changed_cells"]) > 0

@@ -951,7 +951,16 @@ int run(const Options& o) {
   // items (a resampled domain's chords named by the lines they replace).
   Segments segments;
   const bool named = !o.cells_on_constraints.empty() || !kinds.of_item.empty();
-  if (named) segments = CVT_2::IO::domain_segments(data);
+  if (named) {
+    segments = CVT_2::IO::domain_segments(data);
+    const auto on_earlier = CVT_2::IO::segments_on_earlier_ones(cdt, segments);
+    if (!on_earlier.empty())
+      std::cerr << "cvt2: note: " << o.domain << ": " << on_earlier[0]
+                << (on_earlier.size() > 1
+                        ? " (and " + std::to_string(on_earlier.size() - 1) + " more lie on others)"
+                        : std::string())
+                << '\n';
+  }
   CVT_2::Sliding_runs_2<CDT> runs;  // --boundary slide: the runs the resampled vertices slide on
   if (o.resample) resample(o, default_n, cdt, metadata, runs, named ? &segments : nullptr);
   if (o.barriers || o.conforming)

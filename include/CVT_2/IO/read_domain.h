@@ -55,6 +55,9 @@ template <class K>
 struct Domain_segments {
   std::vector<typename K::Point_2> ends;  ///< two a segment
   std::vector<std::int64_t> items;        ///< one a segment
+  /// how many come first from polygons' rings (.wkt, .geojson); where two polygons share a
+  /// border, the later one's edges lie on the earlier one's
+  std::size_t rings = 0;
 };
 
 /// \ingroup PkgCvt2IO
@@ -89,6 +92,7 @@ Domain_segments<K> domain_segments(const Domain_data<K>& d) {
     for (auto h = w.polygons[i].holes_begin(); h != w.polygons[i].holes_end(); ++h)
       add(*h, true, w.polygon_lines[i]);
   }
+  s.rings = s.items.size();
   for (std::size_t i = 0; i < w.polylines.size(); ++i)
     add(w.polylines[i], false, w.polyline_lines[i]);
   return s;

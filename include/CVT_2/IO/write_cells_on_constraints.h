@@ -5,6 +5,7 @@
 
 #include <CVT_2/IO/internal/write_number.h>
 #include <CVT_2/internal/input_segments_of_constraints.h>
+#include <CVT_2/internal/to_string.h>
 
 #include <CGAL/Kernel/global_functions_2.h>
 #include <CGAL/number_utils.h>
@@ -15,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <fstream>
+#include <map>
 #include <ostream>
 #include <string>
 #include <type_traits>
@@ -38,6 +40,43 @@ std::vector<std::int64_t> constraint_items(const CDT& cdt, const Mesh& mesh,
   for (std::int64_t& i : items)
     if (i >= 0) i = segments.items[std::size_t(i)];
   return items;
+}
+
+/// \ingroup PkgCvt2IO
+/// Notes on the segments of `segments` (a `Domain_segments`) that lie on earlier ones in the
+/// domain: a repeated segment, or one along a part of another (not the edges of polygons'
+/// rings, which share their borders). A constrained edge is named by the first segment it lies
+/// on, so the pieces of cells along the shared part are listed under the earlier one's item.
+/// One note each: `item I: the segment from (x, y) to (x, y) lies on item J's: its pieces are
+/// named J` (`lies partly on` where some of it is its own).
+template <class CDT, class Segments>
+std::vector<std::string> segments_on_earlier_ones(const CDT& cdt, const Segments& segments) {
+  constexpr std::size_t none = std::size_t(-1);
+  std::map<std::pair<const void*, const void*>, std::size_t> first;  // an edge's first segment
+  std::vector<std::size_t> earlier(segments.ends.size() / 2, none);
+  std::vector<bool> own(earlier.size(), false);  // some edge in the domain is named by it
+  internal::for_each_edge_on_input_segments(cdt, segments.ends, [&](auto u, auto w, std::size_t i) {
+    if (!internal::has_domain_face(cdt, u) || !internal::has_domain_face(cdt, w)) return;
+    const void *a = &*u, *b = &*w;
+    if (b < a) std::swap(a, b);
+    const auto [it, added] = first.emplace(std::make_pair(a, b), i);
+    if (added || it->second == i)
+      own[i] = true;
+    else if (earlier[i] == none)
+      earlier[i] = it->second;
+  });
+  std::vector<std::string> notes;
+  for (std::size_t i = 0; i < earlier.size(); ++i) {
+    if (i < segments.rings || earlier[i] == none || segments.items[earlier[i]] == segments.items[i])
+      continue;
+    const std::string j = std::to_string(segments.items[earlier[i]]);
+    notes.push_back("item " + std::to_string(segments.items[i]) + ": the segment from " +
+                    internal::to_string(segments.ends[2 * i]) + " to " +
+                    internal::to_string(segments.ends[2 * i + 1]) + " lies " +
+                    (own[i] ? "partly " : "") + "on item " + j + "'s: " +
+                    (own[i] ? "the pieces along it are named " : "its pieces are named ") + j);
+  }
+  return notes;
 }
 
 /// \ingroup PkgCvt2IO
