@@ -248,6 +248,8 @@ struct Domain {
   std::vector<Point_2> segment_ends;
   std::vector<std::int64_t> segment_items;
   std::size_t segment_rings = 0;  // the first segments, polygons' ring edges (Domain_segments)
+  // the file's repeated points and the segments that lie on earlier ones, as cvt2 notes them
+  std::vector<std::string> notes;
   double area = 0;
   std::array<double, 4> bounds{};
   std::size_t own_cells = 0;  // the vertices of the triangulation with a cell: on the domain
@@ -297,11 +299,10 @@ struct Domain {
     if (data.description.index() == 1)
       for (std::int64_t& item : segment_items) item += offset;
     const auto cdt = triangulation();
-    auto& notes = data.file.repeated;  // a domain made from another may have them already
+    notes = data.file.repeated;  // a copy's own: a domain made from another has other segments
     for (const std::string& note : CVT_2::IO::segments_on_earlier_ones(
              *cdt, CVT_2::IO::Domain_segments<K>{segment_ends, segment_items, segment_rings}))
-      if (std::find(notes.begin(), notes.end(), data.file.source + ": " + note) == notes.end())
-        notes.push_back(data.file.source + ": " + note);
+      notes.push_back(data.file.source + ": " + note);
     own_cells = CVT_2::internal::number_of_vertices_in_domain(*cdt);
     bounds = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     for (auto f = cdt->finite_faces_begin(); f != cdt->finite_faces_end(); ++f) {
@@ -1535,7 +1536,7 @@ PYBIND11_MODULE(_cvt2, m) {
                                return py::make_tuple(d.bounds[0], d.bounds[1], d.bounds[2],
                                                      d.bounds[3]);
                              })
-      .def_property_readonly("notes", [](const Domain& d) { return d.data.file.repeated; })
+      .def_property_readonly("notes", [](const Domain& d) { return d.notes; })
       .def("arrays", &domain_arrays)
       .def("resample", &domain_resample, py::arg("cells"), py::arg("size"),
            py::arg("deviation_bound"), py::arg("corner_angle"), py::arg("fixed_points"),

@@ -431,11 +431,17 @@ Options parse_command_line(int argc, char* argv[]) {
 // --- domain and generators ---------------------------------------------------------------------
 
 // Said once per file: the triangulation merges points that repeat earlier ones.
-void note_repeated(const std::vector<std::string>& notes) {
+// The first of `notes` and how many more there are, which `others` says ("repeat earlier
+// ones"), then `end`.
+void note_first(const std::vector<std::string>& notes, const char* others, const char* end = "") {
   if (notes.empty()) return;
   std::cerr << "cvt2: note: " << notes[0];
-  if (notes.size() > 1) std::cerr << " (and " << notes.size() - 1 << " more repeat earlier ones)";
-  std::cerr << "; merged\n";
+  if (notes.size() > 1) std::cerr << " (and " << notes.size() - 1 << " more " << others << ")";
+  std::cerr << end << '\n';
+}
+
+void note_repeated(const std::vector<std::string>& notes) {
+  note_first(notes, "repeat earlier ones", "; merged");
 }
 
 // The conforming lines (--constraints conforming, or a feature's "kind"), their input items and
@@ -953,13 +959,9 @@ int run(const Options& o) {
   const bool named = !o.cells_on_constraints.empty() || !kinds.of_item.empty();
   if (named) {
     segments = CVT_2::IO::domain_segments(data);
-    const auto on_earlier = CVT_2::IO::segments_on_earlier_ones(cdt, segments);
-    if (!on_earlier.empty())
-      std::cerr << "cvt2: note: " << o.domain << ": " << on_earlier[0]
-                << (on_earlier.size() > 1
-                        ? " (and " + std::to_string(on_earlier.size() - 1) + " more lie on others)"
-                        : std::string())
-                << '\n';
+    std::vector<std::string> on_earlier = CVT_2::IO::segments_on_earlier_ones(cdt, segments);
+    if (!on_earlier.empty()) on_earlier[0] = o.domain + ": " + on_earlier[0];
+    note_first(on_earlier, "lie on others");
   }
   CVT_2::Sliding_runs_2<CDT> runs;  // --boundary slide: the runs the resampled vertices slide on
   if (o.resample) resample(o, default_n, cdt, metadata, runs, named ? &segments : nullptr);

@@ -52,14 +52,13 @@ std::vector<std::int64_t> constraint_items(const CDT& cdt, const Mesh& mesh,
 template <class CDT, class Segments>
 std::vector<std::string> segments_on_earlier_ones(const CDT& cdt, const Segments& segments) {
   constexpr std::size_t none = std::size_t(-1);
-  std::map<std::pair<const void*, const void*>, std::size_t> first;  // an edge's first segment
+  using Vertex_handle = typename CDT::Vertex_handle;
+  std::map<std::pair<Vertex_handle, Vertex_handle>, std::size_t> first;  // an edge's first one
   std::vector<std::size_t> earlier(segments.ends.size() / 2, none);
   std::vector<bool> own(earlier.size(), false);  // some edge in the domain is named by it
   internal::for_each_edge_on_input_segments(cdt, segments.ends, [&](auto u, auto w, std::size_t i) {
     if (!internal::has_domain_face(cdt, u) || !internal::has_domain_face(cdt, w)) return;
-    const void *a = &*u, *b = &*w;
-    if (b < a) std::swap(a, b);
-    const auto [it, added] = first.emplace(std::make_pair(a, b), i);
+    const auto [it, added] = first.emplace(std::minmax<Vertex_handle>(u, w), i);
     if (added || it->second == i)
       own[i] = true;
     else if (earlier[i] == none)
