@@ -1,7 +1,9 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 // cvt2 DOMAIN [options]: the centroidal Voronoi tessellation of a .poly, .wkt or .geojson domain
 // by L-BFGS or Lloyd iteration, written as GeoJSON, VTU, MODFLOW 6 DISV, Triangle files, text
-// and SVG. `cvt2 --help` says how.
+// and SVG. `cvt2 --help` says how. The optimization is a unit of its own, optimize.cpp.
+#include "cvt2.h"
+
 #include <CVT_2/Boundary_lipschitz_sizing_2.h>
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/Bvd_mesh_2.h>
@@ -24,8 +26,6 @@
 #include <CVT_2/density_response_2.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/internal/memory_estimate.h>
-#include <CVT_2/lbfgs_optimize_2.h>
-#include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/mark_domain_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 #include <CVT_2/resample_constraints_2.h>
@@ -33,14 +33,8 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#if defined(__unix__) || defined(__APPLE__)
-#include <unistd.h>
-#define CVT2_POSIX 1
-#endif
-
 #include <cerrno>
 #include <cmath>
-#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -59,55 +53,18 @@
 #include <utility>
 #include <vector>
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using CDT = CVT_2::Cvt_triangulation_2<K>;
 using BVD = CVT_2::Bounded_voronoi_diagram_2<CDT>;
 using Mesh = CVT_2::Bvd_mesh_2<BVD>;
 using Grid = CVT_2::Simulation_grid_2<Mesh>;
 using Segments = CVT_2::IO::Domain_segments<K>;
-using Point_2 = K::Point_2;
-using Sizing = CVT_2::Boundary_lipschitz_sizing_2<K>;
+using cvt2_program::Options;
+using cvt2_program::Sizing_choice;
 
 namespace {
 
 // A mistake on the command line: reported with a pointer to --help.
 struct Usage_error : std::runtime_error {
   using std::runtime_error::runtime_error;
-};
-
-struct Options {
-  std::string domain;
-  std::optional<std::size_t> points;  // -n; by default from the domain file
-  std::optional<std::size_t> cells;   // --cells: in all, the domain's vertices included
-  std::optional<double> size;         // --size: the spacing of a hexagonal tiling
-  bool resample = false;              // --boundary resample or slide
-  bool slide = false;                 // --boundary slide
-  std::optional<double> deviation_bound;
-  std::optional<double> spacing_ratio;  // --boundary-spacing
-  double corner_angle = 30;
-  double minimum_ring_area = 0;
-  std::string points_in;
-  std::string fixed_points;                   // --fixed-points FILE
-  std::vector<std::array<double, 4>> refine;  // --refine X Y SIZE RADIUS, each
-  std::optional<double> boundary_tolerance;   // default: insert_generators_2()'s
-  std::uint64_t seed = 1;
-  std::size_t iterations = 1000;
-  double move_ratio = 0.01;
-  bool lbfgs = true;
-  bool lipschitz = false;
-  double lipschitz_k = 0.1;
-  std::optional<double> boundary_size;  // default: each boundary edge's length
-  std::string redistribute = "auto";    // --redistribute: auto | always | never
-  double time_limit = 0;
-  unsigned threads = 0;  // 0: all cores
-  std::string svg, points_out, cells_out, geojson, vtu, disv, mesh_out, domain_out;
-  std::string cells_on_constraints;
-  std::string top = "1", bottom = "0";  // of the DISV's layer: a number or a file of them
-  bool barriers = false;                // --constraints barrier
-  bool conforming = false;              // --constraints conforming
-  bool quiet = false;
-  bool help = false;
-  bool version = false;
 };
 
 void print_help(std::ostream& os) {
@@ -452,19 +409,6 @@ struct Conforming {
   std::vector<CVT_2::Conforming_pair_2<Point_2>> pairs;
 };
 
-// The sizing field of --density lipschitz or of --refine, if any.
-struct Sizing_choice {
-  std::optional<Sizing> lipschitz;
-  std::optional<CVT_2::Point_refinement_sizing_2<K>> refinement;
-  // run(np) with the sizing field among the named parameters np.
-  template <class NP, class Run>
-  auto apply(const NP& np, Run run) const {
-    if (lipschitz) return run(np.sizing_field(*lipschitz));
-    if (refinement) return run(np.sizing_field(*refinement));
-    return run(np);
-  }
-};
-
 void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& sizing, CDT& cdt,
                           const CVT_2::Conforming_disks<Point_2>& keep_out) {
   if (n == 0) return;
@@ -510,81 +454,6 @@ std::size_t redistribute(const Options& o, const Sizing_choice& sizing,
                                            : "are redistributed (--redistribute always)")
               << ": replaced by as many drawn from it (--redistribute never keeps them)\n";
   return given.size();
-}
-
-// --- optimization ------------------------------------------------------------------------------
-
-volatile std::sig_atomic_t interrupted = 0;
-// The first Ctrl-C ends the iteration early and keeps its result; a second one kills.
-extern "C" void on_interrupt(int) {
-  interrupted = 1;
-  std::signal(SIGINT, SIG_DFL);
-}
-
-bool stderr_is_terminal() {
-#ifdef CVT2_POSIX
-  return isatty(2) != 0;
-#else
-  return false;
-#endif
-}
-
-// Progress on standard error: one updating line on a terminal, a line every 10 iterations else.
-class Progress {
- public:
-  explicit Progress(bool quiet) : m_quiet(quiet), m_terminal(stderr_is_terminal()) {}
-  bool operator()(const CVT_2::Optimization_result& r) {
-    if (!m_quiet && (m_terminal || r.number_of_iterations % 10 == 0)) {
-      std::ostringstream line;
-      line << "cvt2: iteration " << r.number_of_iterations << "  energy " << std::setprecision(8)
-           << r.energy << "  max move ratio " << std::setprecision(4) << r.max_move_ratio << "  "
-           << std::fixed << std::setprecision(2) << r.seconds << " s";
-      if (m_terminal)
-        std::cerr << '\r' << line.str() << "\033[K" << std::flush, m_line_open = true;
-      else
-        std::cerr << line.str() << '\n';
-    }
-    return !interrupted;
-  }
-  void finish() {
-    if (m_line_open) std::cerr << '\n';
-    m_line_open = false;
-  }
-
- private:
-  bool m_quiet, m_terminal, m_line_open = false;
-};
-
-// The optimization, with progress on standard error; Ctrl-C ends it early.
-CVT_2::Optimization_result optimize(CDT& cdt, const Options& o, const Sizing_choice& sizing,
-                                    const std::vector<Point_2>& fixed,
-                                    const CVT_2::Conforming_disks<Point_2>& keep_out,
-                                    CVT_2::Sliding_runs_2<CDT>* sliding) {
-  Progress progress(o.quiet);
-  const std::function<bool(const CVT_2::Optimization_result&)> callback = std::ref(progress);
-  const auto np = CVT_2::parameters::number_of_iterations(o.iterations)
-                      .move_ratio_bound(o.move_ratio)
-                      .maximum_running_time(o.time_limit)
-                      .number_of_threads(o.threads)
-                      .callback(callback)
-                      .fixed_points(fixed)
-                      .keep_out(keep_out)
-                      .sliding_runs(sliding);
-  const auto run = [&o](CDT& t, const auto& parameters) {
-    return o.lbfgs ? CVT_2::lbfgs_optimize_2(t, parameters)
-                   : CVT_2::lloyd_optimize_2(t, parameters);
-  };
-  std::signal(SIGINT, on_interrupt);
-  try {
-    const CVT_2::Optimization_result r =
-        sizing.apply(np, [&](const auto& parameters) { return run(cdt, parameters); });
-    progress.finish();
-    std::signal(SIGINT, SIG_DFL);
-    return r;
-  } catch (...) {
-    progress.finish();
-    throw;
-  }
 }
 
 // --- outputs -----------------------------------------------------------------------------------
@@ -1070,7 +939,7 @@ int run(const Options& o) {
   std::optional<CVT_2::Slid_vertices_2<CDT>> slid;
   if (o.slide) slid.emplace(cdt);
   const CVT_2::Optimization_result r =
-      optimize(cdt, o, sizing, fixed, disks, o.slide ? &runs : nullptr);
+      cvt2_program::optimize(cdt, o, sizing, fixed, disks, o.slide ? &runs : nullptr);
   if (o.slide) slid_domain(o, cdt, runs, *slid, segments, domain_alone, metadata);
   // what breaks the faces on the lines, if any
   const std::string inside = CVT_2::internal::conforming_disks_note(cdt, disks);
