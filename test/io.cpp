@@ -604,8 +604,10 @@ std::string geojson_domain_error(const std::string& text) {
 
 // Issue 38: a hole outside its shell was read as the bare shell, silently (GEOS: "Hole lies
 // outside shell"); so was a hole inside another hole ("Holes are nested").
-TEST_CASE("regression: a hole outside its shell or inside another hole is an error naming the ring",
-          "[io][wkt][regression]") {
+TEST_CASE(
+    "regression: a hole outside its shell, inside another hole or covering the shell is an "
+    "error naming the ring",
+    "[io][wkt][regression]") {
   CHECK_THAT(wkt_domain_error("POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0), (5 5, 6 5, 6 6, 5 6, 5 5))"),
              Catch::Contains("t.wkt:1: polygon 0, ring 1: the hole through (5, 5) lies outside "
                              "the polygon's exterior (ring 0)"));
@@ -621,6 +623,11 @@ TEST_CASE("regression: a hole outside its shell or inside another hole is an err
                               "(3 3, 4 3, 4 4, 3 4, 3 3))"),
              Catch::Contains("t.wkt:1: polygon 0, ring 2: the hole through (3, 3) overlaps the "
                              "hole of ring 1: holes may not lie inside one another"));
+  // A hole that is the exterior again leaves no area (it was read as the bare square).
+  CHECK_THAT(wkt_domain_error("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (0 0, 10 0, 10 10, 0 10, "
+                              "0 0))"),
+             Catch::Contains("t.wkt:1: polygon 0, ring 1: the hole through (0, 0) covers the "
+                             "polygon's exterior (ring 0): the polygon has no area"));
   // The second polygon's hole lies in the first one's hole, not in its own exterior.
   CHECK_THAT(wkt_domain_error("\nMULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 8 2, 8 8, 2 "
                               "8, 2 2)), ((20 0, 30 0, 30 10, 20 10, 20 0), (3 3, 4 3, 4 4, 3 4, 3 "
@@ -888,6 +895,14 @@ TEST_CASE("a point within the boundary tolerance of a boundary vertex is merged 
   CHECK(r.boundary_tolerance == 1e-3);
   check_marks(d.cdt);
   check_diagram(Bvd(d.cdt), 100, 1);
+  // However large the tolerance, a point 1e-12 outside goes onto the edge beside it, not to a
+  // vertex much farther (it went to the corner, 0.5 away, and merged with it).
+  const std::vector<Point> beside{Point(1 + 1e-12, 0.5)};
+  r = CVT_2::insert_generators_2(d.cdt, beside, CVT_2::parameters::boundary_tolerance(5.0));
+  REQUIRE(r.moved.size() == 1);
+  CHECK(r.moved_to[0] == Point(1, 0.5));
+  CHECK(d.cdt.number_of_vertices() == 7);
+  check_marks(d.cdt);
 }
 
 TEST_CASE("points outside beyond the tolerance: an error naming how many and the first few",

@@ -85,8 +85,10 @@ struct Generator_insertion_result {
 ///
 /// A point outside the domain by no more than the boundary tolerance (a boundary point computed
 /// in floating point: an edge's midpoint, a projection) goes onto the boundary as a constrained
-/// vertex: merged with a boundary vertex within the tolerance (no cell thinner than it), or else
-/// at its projection onto the nearest boundary edge, rounded: onto the edge when a rounding lies
+/// vertex: merged with a boundary vertex within the tolerance and at most twice as far as the
+/// boundary, plus a rounding (no cell thinner than its distance outside beside the vertex, and
+/// a point beside an edge goes onto the edge however large the tolerance), or else at its
+/// projection onto the nearest boundary edge, rounded: onto the edge when a rounding lies
 /// on it exactly (the constraint is split there), else next to it, where two constraints
 /// through the point replace the edge (the boundary bends by a rounding, and the domain's
 /// marks follow it). Such points are inserted after the others, and listed in the result.
@@ -146,9 +148,10 @@ Generator_insertion_result<typename CDT::Point_2> insert_generators_2(
     internal::poll_interrupt_sometimes();
     if (internal::locate_in_domain(cdt, pts[i], hint)) continue;
     if (tolerance < 0) tolerance = internal::default_boundary_tolerance(cdt);
-    const auto place = tolerance > 0 && cdt.dimension() == 2
-                           ? internal::nearest_boundary(cdt, pts[i], hint, tolerance, tolerance)
-                           : internal::Boundary_place<CDT>();
+    const auto place =
+        tolerance > 0 && cdt.dimension() == 2
+            ? internal::nearest_boundary(cdt, pts[i], hint, tolerance, tolerance, tolerance)
+            : internal::Boundary_place<CDT>();
     if (place.found())
       near.emplace_back(i, place.distance);
     else
@@ -221,8 +224,8 @@ Generator_insertion_result<typename CDT::Point_2> insert_generators_2(
   // The points near the boundary, after the others: the boundary they go onto is as it will be,
   // but for the roundings by which earlier ones bent it.
   std::sort(near.begin(), near.end());
-  const double radius =
-      near.empty() ? 0 : 2 * tolerance + internal::default_boundary_tolerance(cdt);
+  const double rounding = near.empty() ? 0 : internal::default_boundary_tolerance(cdt);
+  const double radius = 2 * tolerance + rounding;
   // A point a rounding off a boundary edge goes to the side whose flag new faces are created
   // with (that of a default face: outside, for Bvd_face_base_2), so that the faces CGAL makes
   // when the boundary is bent through it are marked right (replace_boundary_edge()).
@@ -233,7 +236,7 @@ Generator_insertion_result<typename CDT::Point_2> insert_generators_2(
     int li;
     Face_handle f = cdt.locate(p, lt, li, hint);
     hint = f;
-    const auto place = internal::nearest_boundary(cdt, p, f, radius, tolerance);
+    const auto place = internal::nearest_boundary(cdt, p, f, radius, tolerance, rounding);
     Point_2 to;
     bool done = false;
     if (place.vertex != typename CDT::Vertex_handle()) {

@@ -240,10 +240,10 @@ std::unordered_set<typename CDT::Face_handle> ring_region(const CDT& cdt, PointI
 }
 
 // GEOS's rules for the holes of a valid polygon: each lies inside the polygon's exterior ring,
-// and none inside another (they may touch the exterior and each other at points and, as
-// make_valid() reads them, along edges). A hole outside would remove nothing, silently.
-// `where(i, r)` names ring r (0: the exterior) of the i-th polygon in messages. The rings are
-// constraints of `cdt`.
+// covers less than all of it, and none lies inside another (they may touch the exterior and each
+// other at points and, as make_valid() reads them, along edges). A hole outside would remove
+// nothing, silently. `where(i, r)` names ring r (0: the exterior) of the i-th polygon in messages.
+// The rings are constraints of `cdt`.
 template <class CDT, class PolygonWithHolesRange, class Where>
 void check_holes_inside(const CDT& cdt, const PolygonWithHolesRange& polygons, const Where& where) {
   if (cdt.dimension() < 2) return;  // no area: the domain is empty
@@ -267,6 +267,9 @@ void check_holes_inside(const CDT& cdt, const PolygonWithHolesRange& polygons, c
         if (out)
           throw Domain_error(where(i, r) + hole + (in ? " reaches outside" : " lies outside") +
                              " the polygon's exterior (ring 0): a hole must lie inside it");
+        if (region.size() == shell.size())  // inside it and as large: all of it
+          throw Domain_error(where(i, r) + hole +
+                             " covers the polygon's exterior (ring 0): the polygon has no area");
         if (overlapped)
           throw Domain_error(where(i, r) + hole + " overlaps the hole of ring " +
                              std::to_string(overlapped) + ": holes may not lie inside one another");

@@ -41,6 +41,12 @@ def test_a_hole_outside_its_shell_is_an_error_in_every_reader(tmp_path):
     with pytest.raises(cvt2.DomainError, match=r"<shapely>: polygon 0, ring 2: the hole through "
                                                r"\(3, 3\) overlaps the hole of ring 1"):
         cvt2.Domain.from_shapely(nested)
+    # A hole that is the exterior again leaves no area (it was read as the bare square).
+    empty = Polygon(lake.exterior, [lake.exterior])
+    with pytest.raises(cvt2.DomainError, match=r"<shapely>: polygon 0, ring 1: the hole through "
+                                               r"\(0, 0\) covers the polygon's exterior"):
+        cvt2.Domain.from_shapely(empty)
+    assert empty.area == 0
     # GEOS agrees that these are invalid, and accepts the valid ones we accept.
     assert not SQUARE.is_valid and not MultiPolygon([lake, other]).is_valid and not nested.is_valid
     island = Polygon([(3, 3), (7, 3), (7, 7), (3, 7)])

@@ -313,7 +313,7 @@ def test_top_and_bottom_by_cell(program, data, tmp_path):
     assert "  BOTM LAYERED\n    CONSTANT -2.5\n" in text
     np.savetxt(tmp_path / "short.txt", top[:-1])
     p = subprocess.run(command + ["--top", str(tmp_path / "short.txt")], capture_output=True, text=True)
-    assert p.returncode != 0 and f"{cells - 1} top values for {cells} cells" in p.stderr
+    assert p.returncode != 0 and f"--top has {cells - 1} values, the DISV {cells} cells" in p.stderr
     p = subprocess.run(command + ["--top", "-3"], capture_output=True, text=True)
     assert p.returncode != 0 and "--bottom must be below --top" in p.stderr
     low = top.copy()

@@ -69,6 +69,11 @@ def test_temporary_names_take_no_file_and_links_are_written_through(program, dat
     assert os.path.islink(tmp_path / "link.geojson")
     assert (tmp_path / "real.geojson").read_text().startswith("<?xml")  # the VTU, through it
     assert not [f for f in os.listdir(tmp_path) if "cvt2-" in f]
+    # /dev/stdout a pipe (a link to /proc/self/fd/1, whose target is no path): written to
+    p = run(program, "in.poly", "-n", 50, "--geojson", "/dev/stdout", cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    assert p.stdout.startswith('{"type":"FeatureCollection"') and "algorithm=" in p.stdout
+    assert not [f for f in os.listdir(tmp_path) if "cvt2-" in f]
 
 
 def test_points_out_reads_back_as_points_in(program, data, tmp_path):
@@ -86,3 +91,51 @@ def test_points_out_reads_back_as_points_in(program, data, tmp_path):
     assert a["generators"] == b["generators"] and a["energy"] == b["energy"]
     rows = [sorted(map(tuple, np.loadtxt(tmp_path / f))) for f in ("a.txt", "b.txt")]
     assert rows[0] == rows[1]
+
+
+def test_a_top_a_cell_counts_the_cells_barriers_split(program, data, tmp_path):
+    # With barriers a cell they cross is two cells of the DISV: a --top of one value a DISV cell
+    # is taken (no length was: the count of --cells was asked for first, write_disv's after).
+    domain = data / "square_inner_constraints.wkt"
+    first = run(program, domain, "--cells", 200, "--constraints", "barrier", "--disv", "a.disv",
+                cwd=tmp_path)
+    assert first.returncode == 0, first.stderr
+    text = (tmp_path / "a.disv").read_text()
+    cells = int(text.split("NCPL")[1].split()[0])
+    assert cells > 200
+    for count in (cells, 200):
+        (tmp_path / "top.txt").write_text("\n".join(["2"] * count) + "\n")
+        p = run(program, domain, "--cells", 200, "--constraints", "barrier", "--disv",
+                f"b{count}.disv", "--top", "top.txt", cwd=tmp_path)
+        if count == cells:
+            assert p.returncode == 0, p.stderr
+        else:
+            assert p.returncode == 1 and not (tmp_path / "b200.disv").exists()
+            assert f"--top has 200 values, the DISV {cells} cells" in p.stderr, p.stderr
+    # Without barriers the count is --cells', checked before the work.
+    (tmp_path / "top.txt").write_text("2\n" * cells)
+    p = run(program, domain, "--cells", 200, "--disv", "c.disv", "--top", "top.txt", cwd=tmp_path)
+    assert p.returncode == 1 and f"--top has {cells} values for --cells 200" in p.stderr
+
+
+def test_the_lipschitz_options_need_the_lipschitz_density(program, data, tmp_path):
+    # (--lipschitz-k alone was taken and did nothing)
+    for option, value in (("--lipschitz-k", 0.5), ("--boundary-size", 0.1)):
+        p = run(program, data / "four_clusters.poly", option, value, cwd=tmp_path)
+        assert p.returncode == 1 and f"{option} needs --density lipschitz" in p.stderr, p.stderr
+    p = run(program, data / "four_clusters.poly", "--density", "lipschitz", "--lipschitz-k", 0.5,
+            "--iterations", 2, cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+
+
+def test_random_points_merged_where_coordinates_are_coarse_are_counted(program, tmp_path):
+    # A 10 x 10 square at (1e15, 1e15), where a double is an eighth: of 296 points drawn, some
+    # round onto others and merge; --cells 300 then gives fewer cells, and says how many.
+    c = 1e15
+    (tmp_path / "far.wkt").write_text(
+        f"POLYGON (({c} {c}, {c + 10} {c}, {c + 10} {c + 10}, {c} {c + 10}, {c} {c}))\n")
+    p = run(program, "far.wkt", "--cells", 300, "--iterations", 0, cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    merged = int(p.stderr.split("cvt2: note: ")[1].split(" of the 296 random points fell on")[0])
+    generators = int(dict(f.split("=", 1) for f in p.stdout.split())["generators"])
+    assert merged > 0 and generators + merged == 300, (p.stderr, generators)

@@ -365,6 +365,7 @@ Options parse_command_line(int argc, char* argv[]) {
     throw Usage_error("give one of --density lipschitz and --refine");
   if (!o.lipschitz && o.boundary_size)
     throw Usage_error("--boundary-size needs --density lipschitz");
+  if (!o.lipschitz && o.lipschitz_k) throw Usage_error("--lipschitz-k needs --density lipschitz");
   if (int(o.points.has_value()) + int(o.cells.has_value()) + int(o.size.has_value()) > 1)
     throw Usage_error("give one of -n, --cells and --size");
   for (const auto& [name, text] : {std::pair("--top", &o.top), std::pair("--bottom", &o.bottom)})
@@ -472,9 +473,11 @@ class Output_files {
   void write(const std::string& name, Writer writer) {
     namespace fs = std::filesystem;
     std::error_code ec;
+    // (what the name leads to, links followed: /dev/stdout may be a pipe, whose name in /proc
+    // is no path)
+    const bool direct = fs::exists(name, ec) && !fs::is_regular_file(name, ec);
     const std::string file =
-        fs::is_symlink(name, ec) ? fs::weakly_canonical(name, ec).string() : name;
-    const bool direct = fs::exists(file, ec) && !fs::is_regular_file(file, ec);
+        !direct && fs::is_symlink(name, ec) ? fs::weakly_canonical(name, ec).string() : name;
     std::string tmp;
     if (!direct)
       for (int k = 0; tmp.empty() || fs::exists(tmp, ec); ++k)
@@ -566,6 +569,19 @@ struct Kinds {
   }
 };
 
+// Whether --top and --bottom have one value or one a cell of the DISV, `cells` (`known`: as
+// --cells asks for, before the work), with the message for the first that has not.
+void check_layer_cells(const std::vector<double>& top, const std::vector<double>& bottom,
+                       std::size_t cells, bool known) {
+  for (const auto& [values, name] : {std::pair(&top, "--top"), std::pair(&bottom, "--bottom")})
+    if (values->size() != 1 && values->size() != cells)
+      throw Usage_error(name + std::string(" has ") + std::to_string(values->size()) +
+                        (known ? " values for --cells " + std::to_string(cells)
+                               : " values, the DISV " + std::to_string(cells) +
+                                     " cells (a cell that a barrier crosses is two)") +
+                        " (one, or one a cell)");
+}
+
 void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
                    const CVT_2::IO::Metadata& metadata, const CDT& domain, const Segments& segments,
                    const Kinds& kinds, const Conforming& conforming, const std::vector<double>& top,
@@ -600,8 +616,10 @@ void write_outputs(const Options& o, const CDT& cdt, const BVD& bvd,
       write(*grid_if);
     else
       write(mesh);  // the mesh's own cells and vertices, bit for bit
-    if (!o.disv.empty())
+    if (!o.disv.empty()) {
+      check_layer_cells(top, bottom, grid_if->number_of_cells(), false);
       out.write(o.disv, [&](std::ostream& os) { write_disv(os, *grid_if, top, bottom, metadata); });
+    }
     if (!o.cells_on_constraints.empty())
       out.write(o.cells_on_constraints, [&](std::ostream& os) {
         write_cells_on_constraints(
@@ -753,14 +771,9 @@ void insert_conforming_sites(const Options& o, std::size_t free_generators, CDT&
 }
 
 // What can be checked of --top and --bottom before the work: their counts against each other
-// (and against --cells), each bottom below its top; write_disv() checks the rest.
-void check_layer(const Options& o, const std::vector<double>& top,
-                 const std::vector<double>& bottom) {
-  for (const auto& [values, name] : {std::pair(&top, "--top"), std::pair(&bottom, "--bottom")})
-    if (values->size() != 1 && o.cells && values->size() != *o.cells)
-      throw Usage_error(name + std::string(" has ") + std::to_string(values->size()) +
-                        " values for --cells " + std::to_string(*o.cells) +
-                        " (one, or one a cell)");
+// (and against --cells where barriers split no cell: layer_cells_checked()), each bottom below
+// its top; layer_cells_checked() checks the rest.
+void check_layer(const std::vector<double>& top, const std::vector<double>& bottom) {
   if (top.size() != 1 && bottom.size() != 1 && top.size() != bottom.size())
     throw Usage_error("--top has " + std::to_string(top.size()) + " values and --bottom " +
                       std::to_string(bottom.size()) + " (one, or one a cell each)");
@@ -777,7 +790,7 @@ int run(const Options& o) {
   // The DISV's top and bottom read first: a bad file fails before the optimization.
   const std::vector<double> top = number_or_values("--top", o.top);
   const std::vector<double> bottom = number_or_values("--bottom", o.bottom);
-  if (!o.disv.empty()) check_layer(o, top, bottom);
+  if (!o.disv.empty()) check_layer(top, bottom);
   auto data = CVT_2::IO::read_domain_data<K>(o.domain);
   // Conforming lines (--constraints conforming, or a GeoJSON feature's "kind") are not
   // constraints, only where faces will lie.
@@ -811,6 +824,8 @@ int run(const Options& o) {
         "--constraints conforming takes its lines from a .wkt or .geojson file (LINESTRING), "
         "not from a .poly file");
   }
+  if (!o.disv.empty() && o.cells && !kinds.any_barrier())
+    check_layer_cells(top, bottom, *o.cells, true);
   CVT_2::IO::insert_domain(cdt, data);
   const CVT_2::IO::Domain_file& domain = data.file;
   note_repeated(domain.repeated);
@@ -843,7 +858,7 @@ int run(const Options& o) {
   Sizing_choice sizing;
   if (o.lipschitz)
     sizing.lipschitz.emplace(
-        cdt, o.lipschitz_k,
+        cdt, o.lipschitz_k.value_or(0.1),
         o.boundary_size ? std::optional<K::FT>(*o.boundary_size) : std::nullopt);
   // the domain's vertices and generators
   const std::size_t own = CVT_2::internal::number_of_vertices_in_domain(cdt);
@@ -934,7 +949,16 @@ int run(const Options& o) {
     }
   }
   n += redistribute(o, sizing, fixed, cdt);
+  const std::size_t before = CVT_2::internal::number_of_vertices_in_domain(cdt);
   insert_random_points(n, o, sizing, cdt, disks);
+  // Where the coordinates are coarse for the domain (a double near 1e15 is an eighth), drawn
+  // points can fall on one another, and are merged.
+  const std::size_t added = CVT_2::internal::number_of_vertices_in_domain(cdt) - before;
+  if (added < n)
+    std::cerr << "cvt2: note: " << n - added << " of the " << n
+              << " random points fell on others, their coordinates rounded to doubles (the "
+                 "domain is small for its coordinates' magnitude), and were merged: "
+              << n - added << " cells fewer\n";
   // --boundary slide: where each constrained vertex was, to follow the named lines' ends
   std::optional<CVT_2::Slid_vertices_2<CDT>> slid;
   if (o.slide) slid.emplace(cdt);

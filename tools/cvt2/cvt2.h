@@ -55,7 +55,7 @@ struct Options {
   double move_ratio = 0.01;
   bool lbfgs = true;
   bool lipschitz = false;
-  double lipschitz_k = 0.1;
+  std::optional<double> lipschitz_k;    // --lipschitz-k; default 0.1
   std::optional<double> boundary_size;  // default: each boundary edge's length
   std::string redistribute = "auto";    // --redistribute: auto | always | never
   double time_limit = 0;

@@ -74,7 +74,7 @@ bool is_boundary_edge(const typename CDT::Face_handle f, int i) {
 // boundary vertex, or a boundary edge (face, index) with `face` on the domain's side.
 template <class CDT>
 struct Boundary_place {
-  typename CDT::Vertex_handle vertex;  // a boundary vertex within the tolerance, if any
+  typename CDT::Vertex_handle vertex;  // a boundary vertex nearly as near, if any (see below)
   typename CDT::Face_handle face;      // else the nearest boundary edge, if any
   int index = -1;
   double distance = HUGE_VAL;  // from the point to the domain (to the edge, not the vertex)
@@ -83,15 +83,17 @@ struct Boundary_place {
 
 // The boundary of the domain nearest to `p` (outside the domain, in face `start` or on its
 // boundary) if it lies within `radius`, and its vertex nearest to `p` if that lies within
-// `tolerance`. The search crosses only edges within `radius` of `p`: a segment from `p` to the
-// boundary point within `radius` runs through faces whose edges it crosses within `radius`, and
-// around a vertex within `radius` all edges are. Outside the convex hull it follows the hull
-// edges that `p` sees and whose lines pass within `radius` (those the segment crosses), so a
-// point far from the domain costs a face or two.
+// `tolerance` and at most twice as far as that boundary point, plus a `rounding`: a point goes
+// to a vertex rather than make a cell thinner than its distance outside beside it, and a point
+// farther along an edge goes onto the edge, however large the tolerance. The search crosses only
+// edges within `radius` of `p`: a segment from `p` to the boundary point within `radius` runs
+// through faces whose edges it crosses within `radius`, and around a vertex within `radius` all
+// edges are. Outside the convex hull it follows the hull edges that `p` sees and whose lines pass
+// within `radius` (those the segment crosses), so a point far from the domain costs a face or two.
 template <class CDT>
 Boundary_place<CDT> nearest_boundary(const CDT& cdt, const typename CDT::Point_2& p,
                                      typename CDT::Face_handle start, double radius,
-                                     double tolerance) {
+                                     double tolerance, double rounding) {
   using Face_handle = typename CDT::Face_handle;
   using Vertex_handle = typename CDT::Vertex_handle;
   Boundary_place<CDT> best;
@@ -134,6 +136,7 @@ Boundary_place<CDT> nearest_boundary(const CDT& cdt, const typename CDT::Point_2
       stack.push_back(g);
     }
   }
+  if (best.found() && vertex_distance > 2 * best.distance + rounding) best.vertex = Vertex_handle();
   return best;
 }
 
