@@ -770,9 +770,9 @@ void insert_conforming_sites(const Options& o, std::size_t free_generators, CDT&
               << " steps of the conforming lines have a generator outside the domain: left out\n";
 }
 
-// What can be checked of --top and --bottom before the work: their counts against each other
-// (and against --cells where barriers split no cell: layer_cells_checked()), each bottom below
-// its top; layer_cells_checked() checks the rest.
+// What can be checked of --top and --bottom before the work: their counts against each other,
+// each bottom below its top. Their counts against the cells: check_layer_cells(), before the
+// work where barriers split no cell (--cells), else against the grid.
 void check_layer(const std::vector<double>& top, const std::vector<double>& bottom) {
   if (top.size() != 1 && bottom.size() != 1 && top.size() != bottom.size())
     throw Usage_error("--top has " + std::to_string(top.size()) + " values and --bottom " +
