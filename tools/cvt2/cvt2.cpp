@@ -949,11 +949,11 @@ int run(const Options& o) {
     }
   }
   n += redistribute(o, sizing, fixed, cdt);
-  const std::size_t before = CVT_2::internal::number_of_vertices_in_domain(cdt);
+  const std::size_t before = cdt.number_of_vertices();
   insert_random_points(n, o, sizing, cdt, disks);
   // Where the coordinates are coarse for the domain (a double near 1e15 is an eighth), drawn
   // points can fall on one another, and are merged.
-  const std::size_t added = CVT_2::internal::number_of_vertices_in_domain(cdt) - before;
+  const std::size_t added = cdt.number_of_vertices() - before;
   if (added < n)
     std::cerr << "cvt2: note: " << n - added << " of the " << n
               << " random points fell on others, their coordinates rounded to doubles (the "
