@@ -627,10 +627,10 @@ def bounded_voronoi(domain, points, threads=0, *, boundary_tolerance=None) -> "B
     more than ``boundary_tolerance`` (a boundary point computed in floating point: an edge's
     midpoint, a projection) goes onto the boundary as a constrained generator: merged with a
     boundary vertex within the tolerance and at most twice as far as the boundary, else at its
-    projection onto the nearest boundary edge (rounded; the edge bends through it by a rounding if no rounding lies on it); the
-    result's ``notes`` say which. ``boundary_tolerance`` is a distance >= 0 (0: none), by
-    default 2**-50 of the largest coordinate magnitude of the domain (4 to 8 units in the last
-    place). Points farther out raise DomainError naming how many and the first few rows.
+    projection onto the nearest boundary edge (rounded; the edge bends through it by a rounding
+    if no rounding lies on it); the result's ``notes`` say which. ``boundary_tolerance`` is a
+    distance >= 0 (0: none), by default 2**-50 of the largest coordinate magnitude of the domain
+    (4 to 8 units in the last place). Points farther out raise DomainError naming how many and the first few rows.
     """
     return BoundedVoronoi(
         _cvt2.bounded_voronoi(
