@@ -673,6 +673,83 @@ TEST_CASE("keep_out: no free generator stays in or enters the circles of a confo
   CHECK(inside_without > 0);  // without keep_out, starts inside stay there: the test can tell
 }
 
+TEST_CASE(
+    "conforming lines as a network: corners, junctions and a line that ends on another "
+    "lie on faces all along",
+    "[mesh][grid][keep_out]") {
+  // In the unit square, at the spacing of 1 000 cells: a V of 30 degrees, a right-angled loop,
+  // a tributary that ends on the interior of a river's segment, two lines crossing at a vertex
+  // they share, three meeting at a Y, and a zigzag of 10 and 20 degrees. Each pair's cells share
+  // the face along its step, after Lloyd with the pairs fixed and the circles kept out: the
+  // faces between pairs add up to the lines' length. (Placed line by line, each corner sharper
+  // than 90 degrees and each junction put two pairs on one point or a pair in a circle.)
+  const double a = 3.14159265358979323846 / 6;
+  const std::vector<std::vector<Point>> lines{
+      {{0.45, 0.5}, {0.15, 0.5}, {0.15 + 0.3 * std::cos(a), 0.5 + 0.3 * std::sin(a)}},
+      {{0.1, 0.1}, {0.3, 0.1}, {0.3, 0.3}, {0.1, 0.3}, {0.1, 0.1}},
+      {{0.5, 0.1}, {0.9, 0.1}},
+      {{0.7, 0.1}, {0.72, 0.4}},
+      {{0.55, 0.6}, {0.7, 0.75}, {0.85, 0.9}},
+      {{0.55, 0.9}, {0.7, 0.75}, {0.85, 0.6}},
+      {{0.3, 0.8}, {0.45, 0.8}},
+      {{0.3, 0.8}, {0.2, 0.95}},
+      {{0.3, 0.8}, {0.2, 0.65}},
+      {{0.45, 0.2}, {0.6, 0.2 + 0.15 * std::tan(a / 3)}, {0.45, 0.4}}};
+  double length = 0;
+  for (const auto& l : lines)
+    for (std::size_t k = 0; k + 1 < l.size(); ++k)
+      length += std::sqrt(CGAL::squared_distance(l[k], l[k + 1]));
+  const double h = std::sqrt(2 / (std::sqrt(3.0) * 1000));
+  Cdt_ids cdt = unit_square(false);
+  CVT_2::Conforming_disks<Point> disks;
+  std::size_t left_out = 1;
+  const auto pairs = CVT_2::insert_conforming_sites_2(cdt, lines, h, disks, &left_out);
+  CHECK(left_out == 0);
+  std::vector<Point> fixed;
+  for (const auto& p : pairs) fixed.push_back(p.left), fixed.push_back(p.right);
+  CVT_2::insert_generators_2(
+      cdt, CVT_2::draw_outside_disks_2(disks, 1000 - fixed.size(), 1, [&](std::size_t n, auto s) {
+        return CVT_2::random_points_in_domain_2(cdt, n, CVT_2::parameters::random_seed(s));
+      }));
+  CVT_2::lloyd_optimize_2(cdt, CVT_2::parameters::fixed_points(fixed).keep_out(disks));
+  std::size_t inside = 0;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    inside += disks.contains(v->point());
+  CHECK(inside == 0);
+  const Bvd_ids bvd(cdt);
+  const Mesh mesh(bvd);
+  check_mesh(mesh, cdt);
+  double on_faces = 0;
+  for (const auto& p : pairs) {
+    Cdt_ids::Locate_type lt;
+    int li;
+    const auto f = cdt.locate(p.left, lt, li);
+    REQUIRE(lt == Cdt_ids::VERTEX);
+    const std::size_t left = mesh.cell_of(f->vertex(li));
+    const auto g = cdt.locate(p.right, lt, li);
+    REQUIRE(lt == Cdt_ids::VERTEX);
+    const std::size_t right = mesh.cell_of(g->vertex(li));
+    for (std::size_t j = 0; j < mesh.cell(left).size(); ++j)
+      if (mesh.side(left, j).cell == right)
+        on_faces += std::sqrt(
+            CGAL::squared_distance(mesh.point(mesh.cell(left)[j]),
+                                   mesh.point(mesh.cell(left)[(j + 1) % mesh.cell(left).size()])));
+  }
+  // All along (the Voronoi vertices at the nodes rounded), and past the 14 ends of lines by
+  // less than a step each (a face goes on until a free cell closes it).
+  CHECK(on_faces > (1 - 1e-7) * length);
+  CHECK(on_faces < length + 14 * h);
+  // Lines that cross where neither has a vertex are refused, the segments named.
+  Cdt_ids other = unit_square(false);
+  CHECK_THROWS_WITH(
+      CVT_2::insert_conforming_sites_2(
+          other,
+          std::vector<std::vector<Point>>{{{0.2, 0.5}, {0.8, 0.5}}, {{0.5, 0.2}, {0.5, 0.8}}}, h,
+          disks),
+      Catch::Contains("a line crosses itself or an earlier one where neither has a vertex: its "
+                      "segment (0.5, 0.2) - (0.5, 0.8) crosses (0.2, 0.5) - (0.8, 0.5)"));
+}
+
 TEST_CASE("a cell that meets itself at its generator becomes one ring per lobe", "[mesh]") {
   // Two triangular holes touching at (2, 2): the cell of that vertex has two lobes.
   CVT_2::IO::Poly_data<Point> poly;

@@ -6,6 +6,7 @@
 
 #include <CVT_2/exceptions.h>
 #include <CVT_2/insert_generators_2.h>
+#include <CVT_2/internal/conforming_network.h>
 #include <CVT_2/internal/to_string.h>
 
 #include <CGAL/number_utils.h>
@@ -47,66 +48,28 @@ struct Conforming_sites {
 /// circles, so the nodes are equidistant from the four generators of the two steps they join:
 /// while no other generator lies inside a circle, each node is a vertex of the Voronoi diagram
 /// and each step the face between its pair, exactly on the line, perpendicular to the line
-/// between the pair. Optimizers should keep these generators fixed (`fixed_points`).
-/// \throws std::invalid_argument if `spacing` is not positive and finite, or the line has fewer
-///         than two distinct points or two equal points in a row.
+/// between the pair. At a corner sharper than 100 degrees, and where the line meets itself, the
+/// pairs are placed at a prescribed angle from the steps instead (at most 0.45 of the sector
+/// beside them), so that they stay in order around the node; where a pair would fall inside
+/// another node's circle (parts of the line close together) the steps there are halved, as
+/// `insert_conforming_sites_2()` does for several lines. A node where the line meets itself
+/// appears once a visit, with the same circle. Optimizers should keep these generators fixed
+/// (`fixed_points`).
+/// \throws std::invalid_argument if `spacing` is not positive and finite, the line has fewer
+///         than two distinct points or two equal points in a row, or crosses itself at a point
+///         that is not one of its vertices.
 template <class Point_2>
 Conforming_sites<Point_2> conforming_sites_2(const std::vector<Point_2>& line, double spacing) {
-  if (!(spacing > 0) || !std::isfinite(spacing))
-    throw std::invalid_argument(
-        "conforming_sites_2: the spacing must be positive and finite, not " +
-        internal::number_to_string(spacing));
-  if (line.size() < 2)
-    throw std::invalid_argument("conforming_sites_2: a line needs two points at least");
+  const auto net = internal::conforming_network(std::vector<std::vector<Point_2>>{line}, spacing,
+                                                "conforming_sites_2");
   Conforming_sites<Point_2> c;
-  const auto x = [](const Point_2& p) { return CGAL::to_double(p.x()); };
-  const auto y = [](const Point_2& p) { return CGAL::to_double(p.y()); };
-  c.nodes.push_back(line[0]);
-  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
-    const double dx = x(line[i + 1]) - x(line[i]), dy = y(line[i + 1]) - y(line[i]);
-    const double length = std::hypot(dx, dy);
-    if (!(length > 0))
-      throw std::invalid_argument("conforming_sites_2: the line repeats the point " +
-                                  internal::to_string(line[i]));
-    if (!(length / spacing < 1e8))
-      throw std::invalid_argument("conforming_sites_2: the spacing " +
-                                  internal::number_to_string(spacing) +
-                                  " cuts a segment of length " +
-                                  internal::number_to_string(length) + " into too many steps");
-    const auto steps = std::size_t(std::ceil(length / spacing));
-    for (std::size_t j = 1; j < steps; ++j) {
-      const double t = double(j) / double(steps);
-      c.nodes.emplace_back(x(line[i]) + t * dx, y(line[i]) + t * dy);
-    }
-    c.nodes.push_back(line[i + 1]);
-  }
-  const std::size_t n = c.nodes.size();
-  std::vector<double> d(n - 1);
-  for (std::size_t k = 0; k + 1 < n; ++k)
-    d[k] = std::hypot(x(c.nodes[k + 1]) - x(c.nodes[k]), y(c.nodes[k + 1]) - y(c.nodes[k]));
-  c.radii.resize(n);
-  for (std::size_t k = 0; k < n; ++k)
-    c.radii[k] = std::max(k > 0 ? d[k - 1] : 0.0, k + 1 < n ? d[k] : 0.0) / std::sqrt(2.0);
-  // Two circles cross if their radii differ by less than the step: the larger shrinks to that
-  // (never below half its own steps' length, which the smaller already exceeds).
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (std::size_t k = 0; k + 1 < n; ++k) {
-      double &a = c.radii[k], &b = c.radii[k + 1];
-      const double most = std::min(a, b) + 0.9 * d[k];
-      if (a > most) a = most, changed = true;
-      if (b > most) b = most, changed = true;
-    }
-  }
-  for (std::size_t k = 0; k + 1 < n; ++k) {
-    const double ux = (x(c.nodes[k + 1]) - x(c.nodes[k])) / d[k],
-                 uy = (y(c.nodes[k + 1]) - y(c.nodes[k])) / d[k];
-    const double a =
-        (c.radii[k] * c.radii[k] - c.radii[k + 1] * c.radii[k + 1] + d[k] * d[k]) / (2 * d[k]);
-    const double h = std::sqrt(std::max(0.0, c.radii[k] * c.radii[k] - a * a));
-    const double mx = x(c.nodes[k]) + a * ux, my = y(c.nodes[k]) + a * uy;
-    c.sites.emplace_back(mx - h * uy, my + h * ux);  // left
-    c.sites.emplace_back(mx + h * uy, my - h * ux);  // right
+  for (std::size_t k = 0; k < net.steps.size(); ++k) {
+    const auto& s = net.steps[k];
+    if (k == 0) c.nodes.push_back(net.nodes[s.a]), c.radii.push_back(net.radii[s.a]);
+    c.nodes.push_back(net.nodes[s.b]);
+    c.radii.push_back(net.radii[s.b]);
+    c.sites.push_back(net.sites[2 * k]);
+    c.sites.push_back(net.sites[2 * k + 1]);
   }
   return c;
 }
@@ -210,19 +173,24 @@ struct Conforming_pair_2 {
 };
 
 /// \ingroup PkgCvt2Ref
-/// Inserts into the marked domain of `cdt` the generators that make each of `lines` conforming
-/// at `spacing` (`conforming_sites_2()`), and adds their circles to `disks`; returns the pairs
-/// inserted, line after line. A step whose two generators are not both strictly inside the
-/// domain (in a domain face, or on an edge that is no constraint) is left out, its generators
-/// not inserted and its circles not added unless a step kept shares them, and counted in
-/// `*left_out` if given. The generators are to stay fixed
-/// (`fixed_points`) and the circles free of others (`keep_out(disks)`).
-/// \throws std::invalid_argument as `conforming_sites_2()`.
+/// Inserts into the marked domain of `cdt` the generators that make `lines` conforming at
+/// `spacing`, as one network: as `conforming_sites_2()` places them on each line, with one node
+/// where lines share a point (a junction, a line that ends on another's vertex or segment), the
+/// pairs around a node where three or more lines meet placed as at a sharp corner, and the steps
+/// halved where one line's pairs would fall in another's circles. Adds the circles to `disks`;
+/// returns the pairs inserted, line after line (a part that lines share, once). A step whose
+/// two generators are not both strictly inside the domain (in a domain face, or on an edge that
+/// is no constraint) is left out, its generators not inserted and its circles not added unless
+/// a step kept shares them, and counted in `*left_out` if given. The generators are to stay
+/// fixed (`fixed_points`) and the circles free of others (`keep_out(disks)`).
+/// \throws std::invalid_argument as `conforming_sites_2()`, and if two lines cross at a point
+///         that is a vertex of neither (the message names the segments).
 template <class CDT>
 std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
     CDT& cdt, const std::vector<std::vector<typename CDT::Point_2>>& lines, double spacing,
     Conforming_disks<typename CDT::Point_2>& disks, std::size_t* left_out = nullptr) {
   using Point_2 = typename CDT::Point_2;
+  const auto net = internal::conforming_network(lines, spacing, "conforming lines");
   std::vector<Conforming_pair_2<Point_2>> pairs;
   std::vector<Point_2> sites;
   typename CDT::Face_handle hint;
@@ -233,28 +201,28 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
     if (lt == CDT::EDGE) return !cdt.is_constrained({hint, li}) && hint->is_inside_domain();
     return lt == CDT::FACE && hint->is_inside_domain();
   };
+  // The circles of the nodes of the steps kept: one kept empty for a pair left out would only
+  // keep the generators around from their centroids (a line along the boundary, all its steps
+  // left out, never converged).
+  std::vector<bool> used(net.nodes.size(), false);
   std::size_t out = 0;
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    const auto c = conforming_sites_2(lines[i], spacing);
-    // The circles of the nodes of the steps kept: one kept empty for a pair left out would
-    // only keep the generators around from their centroids (a line along the boundary, all
-    // its steps left out, never converged).
-    std::vector<bool> used(c.nodes.size(), false);
-    for (std::size_t k = 0; k + 1 < c.sites.size(); k += 2) {
-      if (strictly_inside(c.sites[k]) && strictly_inside(c.sites[k + 1])) {
-        sites.push_back(c.sites[k]);
-        sites.push_back(c.sites[k + 1]);
-        pairs.push_back({c.sites[k], c.sites[k + 1], i});
-        used[k / 2] = used[k / 2 + 1] = true;
-      } else {
-        ++out;
-      }
+  for (std::size_t k = 0; k < net.steps.size(); ++k) {
+    const auto& s = net.steps[k];
+    if (s.repeat) continue;
+    const Point_2 &left = net.sites[2 * k], &right = net.sites[2 * k + 1];
+    if (strictly_inside(left) && strictly_inside(right)) {
+      sites.push_back(left);
+      sites.push_back(right);
+      pairs.push_back({left, right, s.line});
+      used[s.a] = used[s.b] = true;
+    } else {
+      ++out;
     }
-    Conforming_sites<Point_2> kept;
-    for (std::size_t k = 0; k < c.nodes.size(); ++k)
-      if (used[k]) kept.nodes.push_back(c.nodes[k]), kept.radii.push_back(c.radii[k]);
-    disks.add(kept);
   }
+  Conforming_sites<Point_2> kept;
+  for (std::size_t v = 0; v < net.nodes.size(); ++v)
+    if (used[v]) kept.nodes.push_back(net.nodes[v]), kept.radii.push_back(net.radii[v]);
+  disks.add(kept);
   insert_generators_2(cdt, sites);
   if (left_out) *left_out = out;
   return pairs;

@@ -408,13 +408,15 @@ def test_thiem_heads_converge_as_h_squared(program, tmp_path):
         fixed[cell[other == -1] - 1] = True
         exact = np.log(np.hypot(*centers.T) / 1000) / (2 * np.pi)
         error = np.abs(two_point_flux_heads(vertices, centers, grid, fixed, exact) - exact)[~fixed]
-        errors.append((error.max(), np.sqrt(np.mean(error**2))))
-    (max1, rms1), (max2, rms2) = errors
-    # h halves: the error quarters, in the mean; the largest error sits in the worst cell, which
-    # moves with the last bits of the run: the same binary gave orders 2.0 and 1.56 on two
-    # machines here (the rms order 2.0 and 2.01).
+        errors.append((error.max(), np.sqrt(np.mean(error**2)), np.percentile(error, 99)))
+    (max1, rms1, most1), (max2, rms2, most2) = errors
+    # h halves: the error quarters, in the mean and in all cells but the worst 1%. The largest
+    # error sits in the worst cell, which moves with the last bits of the run: the same binary
+    # gave orders 2.0, 1.56 and 1.28 on three machines here (the rms order 2.0 to 1.97, the 99th
+    # percentile's 2.16 where the largest's was 1.28).
     assert np.log2(rms1 / rms2) > 1.8
-    assert max1 < 0.01 and np.log2(max1 / max2) > 1.3
+    assert np.log2(most1 / most2) > 1.8
+    assert max1 < 0.01 and max2 < max1 / 2
 
 
 def test_conforming_line_lies_on_faces_that_water_crosses(program, tmp_path):
@@ -444,6 +446,42 @@ def test_conforming_line_lies_on_faces_that_water_crosses(program, tmp_path):
     _, _, files = run_program(program, domain, tmp_path, "--cells", 1500, outputs=("disv",))
     vertices, centers, cells = read_disv(files["disv"])
     assert max(r[5] for r in connection_geometry(vertices, centers, connections(cells))) > 0.1
+
+
+def test_conforming_lines_that_meet_lie_on_faces_all_along(program, tmp_path):
+    """Conforming lines with corners and junctions (a V of 30 degrees, a tributary that ends on
+    a river's segment, two lines crossing at a vertex they share, three meeting at a Y): the rows
+    of `--cells-on-constraints` cover each line from each side, all along (placed line by line,
+    the cells at an apex straddled it: 3.35 of a line 4.47 long). Lines that cross where neither
+    has a vertex are refused, the segments named."""
+    import subprocess
+
+    c, s = np.cos(np.pi / 6), np.sin(np.pi / 6)
+    lines = [[(4.5, 5), (1.5, 5), (1.5 + 3 * c, 5 + 3 * s)], [(5, 1), (9, 1)], [(7, 1), (7.2, 4)],
+             [(5.5, 6), (7, 7.5), (8.5, 9)], [(5.5, 9), (7, 7.5), (8.5, 6)],
+             [(3, 8), (4.5, 8)], [(3, 8), (2, 9.5)], [(3, 8), (2, 6.5)]]
+    domain = tmp_path / "network.wkt"
+    domain.write_text("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0))\n" + "".join(
+        "LINESTRING (" + ", ".join(f"{x!r} {y!r}" for x, y in line) + ")\n" for line in lines))
+    csv = tmp_path / "cells.csv"
+    run_program(program, domain, tmp_path, "--cells", 1000, "--constraints", "conforming",
+                "--cells-on-constraints", csv)
+    item, cell, length, other = read_csv(csv)
+    assert sorted(set(item)) == list(range(1, 2 + len(lines)))  # the boundary, the lines
+    h = np.sqrt(2 * 100 / (np.sqrt(3) * 1000))  # the spacing: that of 1000 cells
+    for i, line in enumerate(lines):
+        expected = np.hypot(*np.diff(np.array(line), axis=0).T).sum()
+        covered = length[item == i + 2].sum() / 2
+        # all along (the nodes' Voronoi vertices rounded), and past each end by less than a step
+        # (a face goes on until a free cell closes it)
+        assert (1 - 1e-7) * expected < covered < expected + 2 * h, (i, covered, expected)
+    crossing = tmp_path / "crossing.wkt"
+    crossing.write_text("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0))\n"
+                        "LINESTRING (2 5, 8 5)\nLINESTRING (5 2, 5 8)\n")
+    p = subprocess.run([program, str(crossing), "--constraints", "conforming"], capture_output=True,
+                       text=True)
+    assert p.returncode != 0
+    assert "its segment (5, 2) - (5, 8) crosses (2, 5) - (8, 5)" in p.stderr, p.stderr
 
 
 def test_a_conforming_line_on_the_boundary_keeps_no_circles(program, tmp_path):

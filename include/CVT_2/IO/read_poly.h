@@ -3,9 +3,9 @@
 #ifndef CVT_2_IO_READ_POLY_H
 #define CVT_2_IO_READ_POLY_H
 
-#include <CVT_2/IO/internal/crossing_segments.h>
 #include <CVT_2/IO/internal/line_reader.h>
 #include <CVT_2/exceptions.h>
+#include <CVT_2/internal/crossing_segments.h>
 #include <CVT_2/internal/valid_point.h>
 #include <CVT_2/mark_domain_2.h>
 

@@ -3,10 +3,10 @@
 #ifndef CVT_2_IO_READ_WKT_H
 #define CVT_2_IO_READ_WKT_H
 
-#include <CVT_2/IO/internal/crossing_segments.h>
 #include <CVT_2/IO/internal/line_reader.h>
 #include <CVT_2/exceptions.h>
 #include <CVT_2/insert_generators_2.h>
+#include <CVT_2/internal/crossing_segments.h>
 #include <CVT_2/internal/snap_to_boundary.h>
 #include <CVT_2/internal/to_string.h>
 #include <CVT_2/internal/valid_point.h>

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
-// Segments of an input that cross: which, for the readers' error messages.
-#ifndef CVT_2_IO_INTERNAL_CROSSING_SEGMENTS_H
-#define CVT_2_IO_INTERNAL_CROSSING_SEGMENTS_H
+// Segments of an input that cross: which, for the readers' and the conforming lines' errors.
+#ifndef CVT_2_INTERNAL_CROSSING_SEGMENTS_H
+#define CVT_2_INTERNAL_CROSSING_SEGMENTS_H
 
 #include <CVT_2/internal/to_string.h>
 
@@ -75,4 +75,4 @@ std::string first_crossing(const std::vector<std::array<Point_2, 2>>& segments,
 }  // namespace internal
 }  // namespace CVT_2
 
-#endif  // CVT_2_IO_INTERNAL_CROSSING_SEGMENTS_H
+#endif  // CVT_2_INTERNAL_CROSSING_SEGMENTS_H

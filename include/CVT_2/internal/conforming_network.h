@@ -1,0 +1,355 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// Conforming lines as one network: nodes shared at corners and junctions, each node's circle,
+// the pair mirrored across each step, steps refined where a pair falls in another circle.
+#ifndef CVT_2_INTERNAL_CONFORMING_NETWORK_H
+#define CVT_2_INTERNAL_CONFORMING_NETWORK_H
+
+#include <CVT_2/Cvt_triangulation_2.h>
+#include <CVT_2/internal/crossing_segments.h>
+#include <CVT_2/internal/input_segments_of_constraints.h>
+#include <CVT_2/internal/to_string.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CVT_2 {
+namespace internal {
+
+template <class Point_2>
+struct Conforming_network {
+  struct Step {
+    std::size_t a, b;  // from nodes[a] to nodes[b]
+    std::size_t line;  // the input line walked
+    bool repeat;       // walked before (lines that overlap): its pair is the earlier one's
+  };
+  std::vector<Point_2> nodes;
+  std::vector<double> radii;   // of the circle around each node
+  std::vector<Step> steps;     // line after line, each in its own direction
+  std::vector<Point_2> sites;  // two a step: left of a -> b, then its mirror image on the right
+};
+
+// The network of `lines` at `spacing`. A point that lines share (a corner, a junction, a line
+// that ends on another's vertex or segment) is one node, whose circle all its steps share. Each
+// edge between nodes is cut into equal steps at most `spacing` long. At a node where lines meet
+// at less than 100 degrees, or three or more meet, the pairs are placed at a prescribed angle
+// from each step (0.45 of the narrower sector beside it, at most 45 degrees), so that they stay
+// in order around it; elsewhere a node's radius is max(d_{k-1}, d_k)/sqrt(2) of its steps
+// (reduced where two circles would not cross), the pairs at about 45 degrees. Then each pair is
+// checked against every circle: a step whose pair lies in another node's circle (lines close
+// together) is halved, with the steps of that node, down to spacing / 16; one whose circles do
+// not cross, with no floor; the steps beside a halved one are kept within twice its length. Up
+// to 24 rounds; a pair still inside a circle after that is left (the callers count the
+// generators inside circles). `who` opens the messages.
+// \throws std::invalid_argument if `spacing` is not positive and finite, a line has fewer than
+//         two points, repeats a point, is cut into too many steps, or two lines (or a line and
+//         itself) cross at a point that is a vertex of neither.
+template <class Point_2>
+Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Point_2>>& lines,
+                                               double spacing, const std::string& who) {
+  using K = typename CGAL::Kernel_traits<Point_2>::Kernel;
+  using CDT = Cvt_triangulation_2<K>;
+  using Vertex_handle = typename CDT::Vertex_handle;
+  constexpr double pi = 3.14159265358979323846;
+  if (!(spacing > 0) || !std::isfinite(spacing))
+    throw std::invalid_argument(who + ": the spacing must be positive and finite, not " +
+                                number_to_string(spacing));
+  const auto x = [](const Point_2& p) { return CGAL::to_double(p.x()); };
+  const auto y = [](const Point_2& p) { return CGAL::to_double(p.y()); };
+  const auto distance = [&](const Point_2& p, const Point_2& q) {
+    return std::hypot(x(q) - x(p), y(q) - y(p));
+  };
+  const auto line_name = [&](std::size_t i) {
+    return lines.size() == 1 ? std::string("the line") : "line " + std::to_string(i);
+  };
+
+  // The lines as constraints of a triangulation of their own: it finds the points they share
+  // and splits a segment where another line's vertex lies on it (no point is constructed).
+  CDT cdt;
+  std::vector<Point_2> ends;
+  std::vector<std::size_t> segment_line;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const auto& line = lines[i];
+    if (line.size() < 2)
+      throw std::invalid_argument(who + ": " + line_name(i) + " needs two points at least");
+    for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+      const double length = distance(line[k], line[k + 1]);
+      if (!(length > 0))
+        throw std::invalid_argument(who + ": " + line_name(i) + " repeats the point " +
+                                    to_string(line[k]));
+      if (!(length / spacing < 1e8))
+        throw std::invalid_argument(who + ": the spacing " + number_to_string(spacing) +
+                                    " cuts a segment of length " + number_to_string(length) +
+                                    " into too many steps");
+      ends.push_back(line[k]);
+      ends.push_back(line[k + 1]);
+      segment_line.push_back(i);
+    }
+    try {
+      cdt.insert_constraint(line.begin(), line.end());
+    } catch (const typename CDT::Intersection_of_constraints_exception&) {
+      std::vector<std::array<Point_2, 2>> earlier;
+      for (std::size_t j = 0; j < i; ++j) add_segments(lines[j], false, earlier);
+      throw std::invalid_argument(who + ": " +
+                                  (lines.size() == 1 ? "the line crosses itself"
+                                                     : "a line crosses itself or an earlier one") +
+                                  " where neither has a vertex" +
+                                  first_crossing(earlier, line, false) +
+                                  "; the crossing must be a vertex of both");
+    }
+  }
+  Conforming_network<Point_2> net;
+  if (lines.empty()) return net;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    v->id() = int(net.nodes.size());
+    net.nodes.push_back(v->point());
+  }
+  const std::size_t n_nodes = net.nodes.size();
+
+  // The edges between nodes, each once, and each line's walk along them.
+  struct Edge {
+    std::size_t u, w;
+    double length;
+  };
+  std::vector<Edge> edges;
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> edge_of;
+  struct Walked {
+    std::size_t edge, line;
+    bool forward;
+  };
+  std::vector<Walked> walk;
+  for_each_edge_on_input_segments(cdt, ends, [&](Vertex_handle u, Vertex_handle w, std::size_t s) {
+    const auto a = std::size_t(u->id()), b = std::size_t(w->id());
+    const auto [it, added] = edge_of.emplace(std::minmax(a, b), edges.size());
+    if (added) edges.push_back({a, b, distance(net.nodes[a], net.nodes[b])});
+    walk.push_back({it->second, segment_line[s], edges[it->second].u == a});
+  });
+
+  // Around each node, its edges by angle: the sectors between them, each edge's angle for its
+  // pair (end 0 at u, 1 at w), and whether the node's angles are prescribed.
+  std::vector<std::vector<std::pair<double, std::size_t>>> around(n_nodes);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const Point_2 &u = net.nodes[edges[e].u], &w = net.nodes[edges[e].w];
+    around[edges[e].u].push_back({std::atan2(y(w) - y(u), x(w) - x(u)), 2 * e});
+    around[edges[e].w].push_back({std::atan2(y(u) - y(w), x(u) - x(w)), 2 * e + 1});
+  }
+  std::vector<double> angle(2 * edges.size(), pi / 4);
+  std::vector<bool> prescribed(n_nodes, false);
+  for (std::size_t n = 0; n < n_nodes; ++n) {
+    auto& a = around[n];
+    std::sort(a.begin(), a.end());
+    const std::size_t m = a.size();
+    if (m < 2) continue;
+    std::vector<double> sector(m);  // from edge k to edge k + 1, counterclockwise
+    for (std::size_t k = 0; k < m; ++k)
+      sector[k] = k + 1 < m ? a[k + 1].first - a[k].first : a[0].first + 2 * pi - a[k].first;
+    double narrowest = 2 * pi;
+    for (std::size_t k = 0; k < m; ++k) {
+      const double beside = std::min(sector[k], sector[(k + m - 1) % m]);
+      angle[a[k].second] = std::min(pi / 4, 0.45 * beside);
+      narrowest = std::min(narrowest, beside);
+    }
+    prescribed[n] = m >= 3 || narrowest < pi * 100 / 180;
+  }
+
+  // Each edge's steps, as parameters from u (0) to w (1): equal steps at most `spacing` long,
+  // at least two where an end is prescribed (its next node's radius is), three where both are.
+  std::vector<std::vector<double>> cuts(edges.size());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const std::size_t least = 1 + prescribed[edges[e].u] + prescribed[edges[e].w];
+    const auto steps = std::max(least, std::size_t(std::ceil(edges[e].length / spacing)));
+    for (std::size_t j = 0; j <= steps; ++j) cuts[e].push_back(double(j) / double(steps));
+  }
+
+  struct Step_at {
+    std::size_t p, q, edge;
+    double length;
+  };
+  std::vector<Step_at> steps;
+  std::vector<std::vector<std::size_t>> ids(edges.size());  // each cut's node
+  for (int round = 0;; ++round) {
+    // The nodes between the edges' ends, and the steps.
+    net.nodes.resize(n_nodes);
+    steps.clear();
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      const Point_2 u = net.nodes[edges[e].u], w = net.nodes[edges[e].w];  // copies: it grows
+      const double dx = x(w) - x(u), dy = y(w) - y(u);
+      auto& id = ids[e];
+      id.assign(cuts[e].size(), 0);
+      id.front() = edges[e].u, id.back() = edges[e].w;
+      for (std::size_t j = 1; j + 1 < cuts[e].size(); ++j) {
+        id[j] = net.nodes.size();
+        net.nodes.emplace_back(x(u) + cuts[e][j] * dx, y(u) + cuts[e][j] * dy);
+      }
+      for (std::size_t j = 0; j + 1 < id.size(); ++j)
+        steps.push_back({id[j], id[j + 1], e, distance(net.nodes[id[j]], net.nodes[id[j + 1]])});
+    }
+    const std::size_t n = net.nodes.size();
+    std::vector<std::vector<std::size_t>> steps_at(n);
+    for (std::size_t s = 0; s < steps.size(); ++s)
+      steps_at[steps[s].p].push_back(s), steps_at[steps[s].q].push_back(s);
+
+    // The radii: max(d)/sqrt(2), or prescribed (fixed).
+    auto& r = net.radii;
+    r.assign(n, 0.0);
+    for (const Step_at& s : steps)
+      r[s.p] = std::max(r[s.p], s.length / std::sqrt(2.0)),
+      r[s.q] = std::max(r[s.q], s.length / std::sqrt(2.0));
+    // At a prescribed node v, the pair of the step to the next node w at the angle a from the
+    // step lies on v's circle (radius R) and on w's: |w - v| = d, r_w^2 = R^2 + d^2 - 2Rd cos a.
+    // R = min d cos a makes r_w = d sin a where it is least (w's circle as small as it can be,
+    // its pair right above it): the pairs of a narrow sector stay far from the other lines.
+    std::vector<bool> fixed(n, false);
+    const auto next_node = [&](std::size_t end) {
+      const auto& id = ids[end / 2];
+      return end % 2 == 0 ? id[1] : id[id.size() - 2];
+    };
+    for (std::size_t v = 0; v < n_nodes; ++v) {
+      if (!prescribed[v]) continue;
+      double radius = HUGE_VAL;
+      for (const auto& around_v : around[v]) {
+        const std::size_t end = around_v.second;
+        radius = std::min(radius,
+                          distance(net.nodes[v], net.nodes[next_node(end)]) * std::cos(angle[end]));
+      }
+      r[v] = radius, fixed[v] = true;
+      for (const auto& around_v : around[v]) {
+        const std::size_t end = around_v.second, w = next_node(end);
+        const double d = distance(net.nodes[v], net.nodes[w]);
+        r[w] = std::sqrt(
+            std::max(0.0, radius * radius + d * d - 2 * radius * d * std::cos(angle[end])));
+        fixed[w] = true;
+      }
+    }
+    const auto at_prescribed = [&](const Step_at& s) {
+      return (s.p < n_nodes && prescribed[s.p]) || (s.q < n_nodes && prescribed[s.q]);
+    };
+    // Two circles cross if their radii differ by less than the step: the larger free one
+    // shrinks to that (never below half its own steps' length, which the smaller already
+    // exceeds), or the smaller free one grows where the larger is fixed.
+    for (int pass = 0, changed = 1; changed && pass < 100; ++pass) {
+      changed = 0;
+      for (const Step_at& s : steps) {
+        const std::size_t big = r[s.p] >= r[s.q] ? s.p : s.q, small = big == s.p ? s.q : s.p;
+        const double most = r[small] + 0.9 * s.length;
+        if (r[big] <= most) continue;
+        if (!fixed[big])
+          r[big] = most, changed = 1;
+        else if (!fixed[small])
+          r[small] = r[big] - 0.9 * s.length, changed = 1;
+      }
+    }
+
+    // The pairs, and the steps to halve: those whose circles barely cross, whose pair lies in
+    // another circle, and the steps of that circle's node.
+    net.sites.assign(2 * steps.size(), Point_2());
+    std::vector<bool> halve(steps.size(), false), crossing(steps.size(), false);
+    double largest = 0;
+    for (std::size_t v = 0; v < n; ++v) largest = std::max(largest, r[v]);
+    const auto cell = [&](double c) { return (long long)std::floor(c / largest); };
+    std::unordered_multimap<long long, std::size_t> buckets;
+    const auto key = [](long long i, long long j) { return i * 1000003LL + j; };
+    for (std::size_t v = 0; v < n; ++v)
+      buckets.emplace(key(cell(x(net.nodes[v])), cell(y(net.nodes[v]))), v);
+    bool clean = true;
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+      const Step_at& s = steps[k];
+      const Point_2 &a = net.nodes[s.p], &b = net.nodes[s.q];
+      const double d = s.length, ux = (x(b) - x(a)) / d, uy = (y(b) - y(a)) / d;
+      const double along = (r[s.p] * r[s.p] - r[s.q] * r[s.q] + d * d) / (2 * d);
+      const double h2 = r[s.p] * r[s.p] - along * along;
+      const double h = std::sqrt(std::max(0.0, h2));
+      const double mx = x(a) + along * ux, my = y(a) + along * uy;
+      net.sites[2 * k] = Point_2(mx - h * uy, my + h * ux);
+      net.sites[2 * k + 1] = Point_2(mx + h * uy, my - h * ux);
+      // (a prescribed pair is as close to its step as its sector is narrow)
+      if (!(h > 0.01 * d) && !at_prescribed(s)) halve[k] = crossing[k] = true, clean = false;
+      for (int side = 0; side < 2; ++side) {
+        const double sx = x(net.sites[2 * k + side]), sy = y(net.sites[2 * k + side]);
+        for (long long i = cell(sx) - 1; i <= cell(sx) + 1; ++i)
+          for (long long j = cell(sy) - 1; j <= cell(sy) + 1; ++j) {
+            const auto range = buckets.equal_range(key(i, j));
+            for (auto it = range.first; it != range.second; ++it) {
+              const std::size_t v = it->second;
+              if (v == s.p || v == s.q ||
+                  !(std::hypot(sx - x(net.nodes[v]), sy - y(net.nodes[v])) < r[v] * (1 - 1e-9)))
+                continue;
+              clean = false;
+              halve[k] = true;
+              for (const std::size_t t : steps_at[v]) halve[t] = true;
+            }
+          }
+      }
+    }
+    if (clean || round == 24) break;
+    // A step no shorter than `spacing` / 16 after halving for a pair in a circle: lines closer
+    // than that, or a corner that sharp near its apex, keep their pairs inside circles (the
+    // callers say so) rather than get cells far smaller than asked for. Circles that do not
+    // cross (a step beside a much shorter one) are graded down to it.
+    const double shortest_step = spacing / 16;
+    for (std::size_t k = 0; k < steps.size(); ++k)
+      halve[k] = halve[k] && (crossing[k] || steps[k].length >= 2 * shortest_step);
+
+    // Halve, then keep the steps beside a halved one within twice its length: along an edge,
+    // and among the steps that leave a node (not a prescribed node's first steps, whose pairs
+    // are placed for any length of the next).
+    for (bool more = true; more;) {
+      more = false;
+      for (std::size_t v = 0; v < n; ++v) {
+        double shortest = HUGE_VAL;
+        bool any = false;
+        for (const std::size_t s : steps_at[v]) {
+          any = any || halve[s];
+          shortest = std::min(shortest, steps[s].length / (halve[s] ? 2 : 1));
+        }
+        if (!any) continue;
+        for (const std::size_t s : steps_at[v])
+          if (!halve[s] && steps[s].length > 2 * shortest && !at_prescribed(steps[s]))
+            halve[s] = true, more = true;
+      }
+    }
+    std::vector<std::vector<double>> finer(edges.size(), std::vector<double>{0.0});
+    for (std::size_t e = 0, k = 0; e < edges.size(); ++e) {
+      for (std::size_t j = 0; j + 1 < cuts[e].size(); ++j, ++k) {
+        if (halve[k]) finer[e].push_back(0.5 * (cuts[e][j] + cuts[e][j + 1]));
+        finer[e].push_back(cuts[e][j + 1]);
+      }
+    }
+    cuts = std::move(finer);
+  }
+
+  // The steps along each line, in its direction.
+  std::vector<bool> walked(steps.size(), false);
+  std::vector<std::size_t> first_step(edges.size() + 1, 0);
+  for (std::size_t e = 0; e < edges.size(); ++e)
+    first_step[e + 1] = first_step[e] + cuts[e].size() - 1;
+  std::vector<Point_2> sites;
+  for (const Walked& w : walk) {
+    const std::size_t m = cuts[w.edge].size() - 1;
+    for (std::size_t j = 0; j < m; ++j) {
+      const std::size_t k = first_step[w.edge] + (w.forward ? j : m - 1 - j);
+      const Step_at& s = steps[k];
+      net.steps.push_back({w.forward ? s.p : s.q, w.forward ? s.q : s.p, w.line, walked[k]});
+      walked[k] = true;
+      sites.push_back(net.sites[2 * k + (w.forward ? 0 : 1)]);
+      sites.push_back(net.sites[2 * k + (w.forward ? 1 : 0)]);
+    }
+  }
+  net.sites = std::move(sites);
+  return net;
+}
+
+}  // namespace internal
+}  // namespace CVT_2
+
+#endif  // CVT_2_INTERNAL_CONFORMING_NETWORK_H
