@@ -678,8 +678,9 @@ TEST_CASE(
     "lie on faces all along",
     "[mesh][grid][keep_out]") {
   // In the unit square, at the spacing of 1 000 cells: a V of 30 degrees, a right-angled loop,
-  // a tributary that ends on the interior of a river's segment, two lines crossing at a vertex
-  // they share, three meeting at a Y, and a zigzag of 10 and 20 degrees. Each pair's cells share
+  // a tributary that ends on the interior of a river's segment (a rounding beside it: snapped),
+  // two lines crossing at a vertex they share, three meeting at a Y, and a zigzag of 10 and 20
+  // degrees. Each pair's cells share
   // the face along its step, after Lloyd with the pairs fixed and the circles kept out: the
   // faces between pairs add up to the lines' length. (Placed line by line, each corner sharper
   // than 90 degrees and each junction put two pairs on one point or a pair in a circle.)
@@ -687,8 +688,8 @@ TEST_CASE(
   const std::vector<std::vector<Point>> lines{
       {{0.45, 0.5}, {0.15, 0.5}, {0.15 + 0.3 * std::cos(a), 0.5 + 0.3 * std::sin(a)}},
       {{0.1, 0.1}, {0.3, 0.1}, {0.3, 0.3}, {0.1, 0.3}, {0.1, 0.1}},
-      {{0.5, 0.1}, {0.9, 0.1}},
-      {{0.7, 0.1}, {0.72, 0.4}},
+      {{0.5, 0.1}, {0.9, 0.13}},
+      {{0.7, 0.115}, {0.72, 0.4}},  // on the river but for a rounding (left of it)
       {{0.55, 0.6}, {0.7, 0.75}, {0.85, 0.9}},
       {{0.55, 0.9}, {0.7, 0.75}, {0.85, 0.6}},
       {{0.3, 0.8}, {0.45, 0.8}},

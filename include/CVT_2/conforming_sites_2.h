@@ -177,7 +177,9 @@ struct Conforming_pair_2 {
 /// `spacing`, as one network: as `conforming_sites_2()` places them on each line, with one node
 /// where lines share a point (a junction, a line that ends on another's vertex or segment), the
 /// pairs around a node where three or more lines meet placed as at a sharp corner, and the steps
-/// halved where one line's pairs would fall in another's circles. Adds the circles to `disks`;
+/// halved where one line's pairs would fall in another's circles. An end of a line within
+/// `spacing` / 100 of another line (digitized onto it, a rounding short or past) is moved onto
+/// that line's vertex, or made a vertex of its segment. Adds the circles to `disks`;
 /// returns the pairs inserted, line after line (a part that lines share, once). A step whose
 /// two generators are not both strictly inside the domain (in a domain face, or on an edge that
 /// is no constraint) is left out, its generators not inserted and its circles not added unless

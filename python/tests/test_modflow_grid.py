@@ -450,14 +450,15 @@ def test_conforming_line_lies_on_faces_that_water_crosses(program, tmp_path):
 
 def test_conforming_lines_that_meet_lie_on_faces_all_along(program, tmp_path):
     """Conforming lines with corners and junctions (a V of 30 degrees, a tributary that ends on
-    a river's segment, two lines crossing at a vertex they share, three meeting at a Y): the rows
-    of `--cells-on-constraints` cover each line from each side, all along (placed line by line,
-    the cells at an apex straddled it: 3.35 of a line 4.47 long). Lines that cross where neither
-    has a vertex are refused, the segments named."""
+    a river's segment, a rounding past it, two lines crossing at a vertex they share, three
+    meeting at a Y): the rows of `--cells-on-constraints` cover each line from each side, all
+    along (placed line by line, the cells at an apex straddled it: 3.35 of a line 4.47 long).
+    Lines that cross where neither has a vertex are refused, the segments named."""
     import subprocess
 
     c, s = np.cos(np.pi / 6), np.sin(np.pi / 6)
-    lines = [[(4.5, 5), (1.5, 5), (1.5 + 3 * c, 5 + 3 * s)], [(5, 1), (9, 1)], [(7, 1), (7.2, 4)],
+    # the tributary's end (7, 1.15) is on the river but for a rounding, past it: snapped
+    lines = [[(4.5, 5), (1.5, 5), (1.5 + 3 * c, 5 + 3 * s)], [(5, 1), (9, 1.3)], [(7.2, 4), (7, 1.15)],
              [(5.5, 6), (7, 7.5), (8.5, 9)], [(5.5, 9), (7, 7.5), (8.5, 6)],
              [(3, 8), (4.5, 8)], [(3, 8), (2, 9.5)], [(3, 8), (2, 6.5)]]
     domain = tmp_path / "network.wkt"

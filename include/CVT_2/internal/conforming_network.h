@@ -26,6 +26,83 @@
 namespace CVT_2 {
 namespace internal {
 
+// Ends of lines drawn to meet another line but off it by a rounding (a tributary's end
+// digitized onto a river's segment, a hair short of it or past it): an end of one of `lines`
+// that no other segment shares, within `tolerance` of a vertex of another segment, moves onto
+// it; one within `tolerance` of a segment's interior becomes a vertex of that segment. Segments
+// are found through a grid of cells `spacing` wide. Returns whether any end did.
+template <class Point_2>
+bool snap_ends(std::vector<std::vector<Point_2>>& lines, double spacing, double tolerance) {
+  const auto x = [](const Point_2& p) { return CGAL::to_double(p.x()); };
+  const auto y = [](const Point_2& p) { return CGAL::to_double(p.y()); };
+  const auto cell = [&](double c) { return (long long)std::floor(c / spacing); };
+  const auto key = [](long long i, long long j) { return i * 1000003LL + j; };
+  std::unordered_map<long long, std::vector<std::pair<std::size_t, std::size_t>>> grid;
+  for (std::size_t j = 0; j < lines.size(); ++j)
+    for (std::size_t k = 0; k + 1 < lines[j].size(); ++k) {
+      const Point_2 &p = lines[j][k], &q = lines[j][k + 1];
+      const auto samples = std::size_t(2 * std::hypot(x(q) - x(p), y(q) - y(p)) / spacing) + 1;
+      long long last = 0;
+      for (std::size_t m = 0; m <= samples; ++m) {
+        const double t = double(m) / double(samples);
+        const long long c = key(cell(x(p) + t * (x(q) - x(p))), cell(y(p) + t * (y(q) - y(p))));
+        if (m == 0 || c != last) grid[c].push_back({j, k});
+        last = c;
+      }
+    }
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::pair<double, Point_2>>> added;
+  bool moved = false;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    auto& line = lines[i];
+    if (line.size() < 2 || line.front() == line.back()) continue;  // a ring
+    for (const bool front : {true, false}) {
+      Point_2& end = front ? line.front() : line.back();
+      const std::size_t own = front ? 0 : line.size() - 2;  // its segment
+      const Point_2 neighbour = line[front ? 1 : line.size() - 2];
+      bool shared = false;
+      double best = tolerance;
+      const Point_2* vertex = nullptr;
+      std::pair<std::size_t, std::size_t> segment{lines.size(), 0};
+      for (long long a = cell(x(end)) - 1; a <= cell(x(end)) + 1; ++a)
+        for (long long b = cell(y(end)) - 1; b <= cell(y(end)) + 1; ++b) {
+          const auto it = grid.find(key(a, b));
+          if (it == grid.end()) continue;
+          for (const auto& [j, k] : it->second) {
+            if (j == i && k == own) continue;
+            const Point_2 &p = lines[j][k], &q = lines[j][k + 1];
+            shared = shared || p == end || q == end;
+            for (const Point_2* v : {&p, &q}) {
+              const double d = std::hypot(x(*v) - x(end), y(*v) - y(end));
+              if (d < best && *v != neighbour) best = d, vertex = v;
+            }
+            const double dx = x(q) - x(p), dy = y(q) - y(p), ll = dx * dx + dy * dy;
+            const double t = ((x(end) - x(p)) * dx + (y(end) - y(p)) * dy) / ll;
+            const double d = std::abs((x(end) - x(p)) * dy - (y(end) - y(p)) * dx) / std::sqrt(ll);
+            if (t > 0 && t < 1 && d < tolerance) segment = {j, k};
+          }
+        }
+      if (shared) continue;
+      if (vertex != nullptr) {
+        end = *vertex, moved = true;
+      } else if (segment.first < lines.size()) {
+        const Point_2& p = lines[segment.first][segment.second];
+        added[segment].push_back({std::hypot(x(end) - x(p), y(end) - y(p)), end});
+        moved = true;
+      }
+    }
+  }
+  for (auto it = added.rbegin(); it != added.rend(); ++it) {  // from the last: indices hold
+    auto& [at, points] = *it;
+    std::sort(points.begin(), points.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    auto& line = lines[at.first];
+    std::vector<Point_2> middle;
+    for (const auto& p : points) middle.push_back(p.second);
+    line.insert(line.begin() + std::ptrdiff_t(at.second + 1), middle.begin(), middle.end());
+  }
+  return moved;
+}
+
 template <class Point_2>
 struct Conforming_network {
   struct Step {
@@ -75,41 +152,53 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
 
   // The lines as constraints of a triangulation of their own: it finds the points they share
   // and splits a segment where another line's vertex lies on it (no point is constructed).
+  std::vector<std::vector<Point_2>> in = lines;
   CDT cdt;
   std::vector<Point_2> ends;
   std::vector<std::size_t> segment_line;
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    const auto& line = lines[i];
-    if (line.size() < 2)
-      throw std::invalid_argument(who + ": " + line_name(i) + " needs two points at least");
-    for (std::size_t k = 0; k + 1 < line.size(); ++k) {
-      const double length = distance(line[k], line[k + 1]);
-      if (!(length > 0))
-        throw std::invalid_argument(who + ": " + line_name(i) + " repeats the point " +
-                                    to_string(line[k]));
-      if (!(length / spacing < 1e8))
-        throw std::invalid_argument(who + ": the spacing " + number_to_string(spacing) +
-                                    " cuts a segment of length " + number_to_string(length) +
-                                    " into too many steps");
-      ends.push_back(line[k]);
-      ends.push_back(line[k + 1]);
-      segment_line.push_back(i);
+  const auto triangulate = [&] {
+    cdt.clear(), ends.clear(), segment_line.clear();
+    for (std::size_t i = 0; i < in.size(); ++i) {
+      const auto& line = in[i];
+      if (line.size() < 2)
+        throw std::invalid_argument(who + ": " + line_name(i) + " needs two points at least");
+      for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+        const double length = distance(line[k], line[k + 1]);
+        if (!(length > 0))
+          throw std::invalid_argument(who + ": " + line_name(i) + " repeats the point " +
+                                      to_string(line[k]));
+        if (!(length / spacing < 1e8))
+          throw std::invalid_argument(who + ": the spacing " + number_to_string(spacing) +
+                                      " cuts a segment of length " + number_to_string(length) +
+                                      " into too many steps");
+        ends.push_back(line[k]);
+        ends.push_back(line[k + 1]);
+        segment_line.push_back(i);
+      }
+      try {
+        cdt.insert_constraint(line.begin(), line.end());
+      } catch (const typename CDT::Intersection_of_constraints_exception&) {
+        std::vector<std::array<Point_2, 2>> earlier;
+        for (std::size_t j = 0; j < i; ++j) add_segments(in[j], false, earlier);
+        throw std::invalid_argument(who + ": " +
+                                    (in.size() == 1 ? "the line crosses itself"
+                                                    : "a line crosses itself or an earlier one") +
+                                    " where neither has a vertex" +
+                                    first_crossing(earlier, line, false) +
+                                    "; the crossing must be a vertex of both");
+      }
     }
-    try {
-      cdt.insert_constraint(line.begin(), line.end());
-    } catch (const typename CDT::Intersection_of_constraints_exception&) {
-      std::vector<std::array<Point_2, 2>> earlier;
-      for (std::size_t j = 0; j < i; ++j) add_segments(lines[j], false, earlier);
-      throw std::invalid_argument(who + ": " +
-                                  (lines.size() == 1 ? "the line crosses itself"
-                                                     : "a line crosses itself or an earlier one") +
-                                  " where neither has a vertex" +
-                                  first_crossing(earlier, line, false) +
-                                  "; the crossing must be a vertex of both");
-    }
-  }
+  };
+  for (const auto& line : in)  // before snap_ends() samples them
+    for (std::size_t k = 0; k + 1 < line.size(); ++k)
+      if (!(distance(line[k], line[k + 1]) / spacing < 1e8))
+        throw std::invalid_argument(
+            who + ": the spacing " + number_to_string(spacing) + " cuts a segment of length " +
+            number_to_string(distance(line[k], line[k + 1])) + " into too many steps");
+  snap_ends(in, spacing, spacing / 100);
+  triangulate();
   Conforming_network<Point_2> net;
-  if (lines.empty()) return net;
+  if (in.empty()) return net;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
     v->id() = int(net.nodes.size());
     net.nodes.push_back(v->point());
