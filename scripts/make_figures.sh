@@ -109,6 +109,12 @@ pngquant --force --output "$fig/resample.png" 64 resample.png
 /usr/bin/python3 "$root/scripts/plot_modflow_grid.py" aquifer_cells.geojson "$data" modflow_grid.png
 pngquant --force --output "$fig/modflow_grid.png" 64 modflow_grid.png
 
+"$build/tools/cvt2/cvt2" "$data/river_network.wkt" --cells 3000 --constraints conforming --quiet \
+  --geojson network.geojson --cells-on-constraints network.csv > /dev/null
+/usr/bin/python3 "$root/scripts/plot_conforming_network.py" network.geojson network.csv \
+  "$data/river_network.wkt" network.png
+pngquant --force --output "$fig/conforming_network.png" 64 network.png
+
 "$ex/crack_interpolation" crack.txt
 /usr/bin/python3 "$root/scripts/plot_crack_interpolation.py" crack.txt crack.png
 pngquant --force --output "$fig/crack_interpolation.png" 64 crack.png

@@ -448,14 +448,12 @@ def test_conforming_line_lies_on_faces_that_water_crosses(program, tmp_path):
     assert max(r[5] for r in connection_geometry(vertices, centers, connections(cells))) > 0.1
 
 
-def test_conforming_lines_that_meet_lie_on_faces_all_along(program, tmp_path):
+def test_conforming_lines_that_meet_lie_on_faces_all_along(program, data, tmp_path):
     """Conforming lines with corners and junctions (a V of 30 degrees, a tributary that ends on
     a river's segment, a rounding past it, two lines crossing at a vertex they share, three
     meeting at a Y): the rows of `--cells-on-constraints` cover each line from each side, all
     along (placed line by line, the cells at an apex straddled it: 3.35 of a line 4.47 long).
     Lines that cross where neither has a vertex are refused, the segments named."""
-    import subprocess
-
     c, s = np.cos(np.pi / 6), np.sin(np.pi / 6)
     # the tributary's end (7, 1.15) is on the river but for a rounding, past it: snapped
     lines = [[(4.5, 5), (1.5, 5), (1.5 + 3 * c, 5 + 3 * s)], [(5, 1), (9, 1.3)], [(7.2, 4), (7, 1.15)],
@@ -476,6 +474,15 @@ def test_conforming_lines_that_meet_lie_on_faces_all_along(program, tmp_path):
         # all along (the nodes' Voronoi vertices rounded), and past each end by less than a step
         # (a face goes on until a free cell closes it)
         assert (1 - 1e-7) * expected < covered < expected + 2 * h, (i, covered, expected)
+    # The manual's river network (examples/data/river_network.wkt): no generator in a circle.
+    import subprocess
+
+    p = subprocess.run([program, str(data / "river_network.wkt"), "--cells", "3000", "--constraints",
+                        "conforming", "--cells-on-constraints", str(csv)], capture_output=True, text=True,
+                       check=True)
+    assert "circles" not in p.stderr, p.stderr
+    item, _, length, _ = read_csv(csv)
+    assert length[item >= 2].sum() / 2 == pytest.approx(7855.2, abs=2)  # its lines' length
     crossing = tmp_path / "crossing.wkt"
     crossing.write_text("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0))\n"
                         "LINESTRING (2 5, 8 5)\nLINESTRING (5 2, 5 8)\n")
