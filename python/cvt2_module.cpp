@@ -1373,7 +1373,7 @@ std::shared_ptr<Optimization> optimize(
         out->notes.push_back(std::to_string(left_out) + " of " +
                              std::to_string(left_out + lineless->conforming_pairs.size()) +
                              " steps of the conforming lines have a generator outside the "
-                             "domain: left out");
+                             "domain or lie along a constraint: left out");
       out->domain = lineless;
     }
     // cells= or size= (cvt2 --cells, --size): as many more drawn as make that many cells, the

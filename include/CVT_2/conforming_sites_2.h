@@ -9,7 +9,9 @@
 #include <CVT_2/internal/conforming_network.h>
 #include <CVT_2/internal/to_string.h>
 
+#include <CGAL/Kernel/global_functions_2.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_2.h>
 
 #include <algorithm>
 #include <cmath>
@@ -182,10 +184,11 @@ struct Conforming_pair_2 {
 /// that line's vertex, or made a vertex of its segment. Adds the circles to `disks`;
 /// returns the pairs inserted, line after line (a part that lines share, once). A step whose
 /// two generators are not both strictly inside the domain (in a domain face, or on an edge that
-/// is no constraint) is left out, its generators not inserted and its circles not added unless
-/// a step kept shares them, and counted in `*left_out` if given. The generators are to stay
-/// fixed (`fixed_points`) and the circles free of others (`keep_out(disks)`).
-/// \throws std::invalid_argument as `conforming_sites_2()`, and if two lines cross at a point
+/// is no constraint), or that lies along a constraint (whose faces are there already), is left out,
+/// its generators not inserted and its circles not added unless a step kept shares them, and
+/// counted in `*left_out` if given. The generators are to stay fixed (`fixed_points`) and the
+/// circles free of others (`keep_out(disks)`). \throws std::invalid_argument as
+/// `conforming_sites_2()`, and if two lines cross at a point
 ///         that is a vertex of neither (the message names the segments).
 template <class CDT>
 std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
@@ -203,6 +206,28 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
     if (lt == CDT::EDGE) return !cdt.is_constrained({hint, li}) && hint->is_inside_domain();
     return lt == CDT::FACE && hint->is_inside_domain();
   };
+  // A step along a constraint (the line given as a barrier or slit too) has its faces already.
+  // (its nodes computed: within a rounding of a constrained edge of its midpoint's face, and of
+  // that edge's line, not across it)
+  const auto on_constraint = [&](const auto& step) {
+    const Point_2 &a = net.nodes[step.a], &b = net.nodes[step.b];
+    const Point_2 m = CGAL::midpoint(a, b);
+    typename CDT::Locate_type lt;
+    int li = 0;
+    hint = cdt.locate(m, lt, li, hint);
+    if (lt == CDT::EDGE && cdt.is_constrained({hint, li})) return true;
+    if (lt != CDT::FACE && lt != CDT::EDGE) return false;
+    const double rounding = 1e-9 * std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b)));
+    for (int i = 0; i < 3; ++i) {
+      if (!cdt.is_constrained({hint, i})) continue;
+      const typename CDT::Segment s = cdt.segment(hint, i);
+      const auto near = [&](const auto& x, const Point_2& p) {
+        return std::sqrt(CGAL::to_double(CGAL::squared_distance(x, p))) <= rounding;
+      };
+      if (near(s, m) && near(s.supporting_line(), a) && near(s.supporting_line(), b)) return true;
+    }
+    return false;
+  };
   // The circles of the nodes of the steps kept: one kept empty for a pair left out would only
   // keep the generators around from their centroids (a line along the boundary, all its steps
   // left out, never converged).
@@ -212,7 +237,7 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
     const auto& s = net.steps[k];
     if (s.repeat) continue;
     const Point_2 &left = net.sites[2 * k], &right = net.sites[2 * k + 1];
-    if (strictly_inside(left) && strictly_inside(right)) {
+    if (strictly_inside(left) && strictly_inside(right) && !on_constraint(s)) {
       sites.push_back(left);
       sites.push_back(right);
       pairs.push_back({left, right, s.line});

@@ -492,6 +492,26 @@ def test_conforming_lines_that_meet_lie_on_faces_all_along(program, data, tmp_pa
     assert "its segment (5, 2) - (5, 8) crosses (2, 5) - (8, 5)" in p.stderr, p.stderr
 
 
+def test_a_conforming_line_along_a_barrier_is_left_out(program, tmp_path):
+    """A line given twice, as a barrier and as a conforming line: the barrier's faces are there
+    already, so the pairs along it are left out, and cvt2 says so (they were inserted silently,
+    two generators mirrored across a wall)."""
+    import json
+    import subprocess
+
+    line = {"type": "LineString", "coordinates": [[2, 3], [8, 6]]}
+    domain = tmp_path / "twice.geojson"
+    domain.write_text(json.dumps({"type": "FeatureCollection", "features": [
+        {"type": "Feature", "properties": {},
+         "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [10, 0], [10, 10], [0, 10], [0, 0]]]}},
+        {"type": "Feature", "properties": {"kind": "barrier"}, "geometry": line},
+        {"type": "Feature", "properties": {"kind": "conforming"}, "geometry": line}]}))
+    p = subprocess.run([program, str(domain), "--cells", "500"], capture_output=True, text=True, check=True)
+    assert "steps of the conforming lines have a generator outside the domain or lie along a " \
+           "constraint: left out" in p.stderr, p.stderr
+    assert "circles" not in p.stderr
+
+
 def test_a_conforming_line_on_the_boundary_keeps_no_circles(program, tmp_path):
     """A line along the boundary has each pair's outer generator outside: its steps are left
     out, and so must their circles be (kept empty, they held the generators around away from

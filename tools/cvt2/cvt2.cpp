@@ -755,7 +755,8 @@ double background_size(const Options& o, std::size_t cells, const CDT& cdt) {
 }
 
 // --constraints conforming: the pairs of generators mirrored across each line, fixed, those of
-// a step whose pair is not both strictly inside the domain left out (noted).
+// a step whose pair is not both strictly inside the domain, or that lies along a constraint,
+// left out (noted).
 void insert_conforming_sites(const Options& o, std::size_t free_generators, CDT& cdt,
                              std::vector<Point_2>& fixed, Conforming& conforming,
                              CVT_2::Conforming_disks<Point_2>& disks) {
@@ -766,8 +767,10 @@ void insert_conforming_sites(const Options& o, std::size_t free_generators, CDT&
       cdt, conforming.lines, background_size(o, cells, cdt), disks, &left_out);
   for (const auto& p : conforming.pairs) fixed.push_back(p.left), fixed.push_back(p.right);
   if (left_out > 0 && !o.quiet)
-    std::cerr << "cvt2: note: " << left_out << " of " << left_out + conforming.pairs.size()
-              << " steps of the conforming lines have a generator outside the domain: left out\n";
+    std::cerr
+        << "cvt2: note: " << left_out << " of " << left_out + conforming.pairs.size()
+        << " steps of the conforming lines have a generator outside the domain or lie along a "
+           "constraint: left out\n";
 }
 
 // What can be checked of --top and --bottom before the work: their counts against each other,
