@@ -1400,6 +1400,9 @@ std::shared_ptr<Optimization> optimize(
     };
     // As cvt2 --redistribute: with a density, the free generators given replaced by as many
     // drawn from it, always or if they do not follow it.
+    if (redistribute == "always" && choice.kind == Density_choice::UNIFORM)
+      out->notes.push_back(
+          "redistribute=True: the density is uniform: the generators given are kept");
     if (redistribute != "never" && choice.kind != Density_choice::UNIFORM) {
       const bool always = redistribute == "always";
       const std::vector<CDT::Vertex_handle> given =

@@ -52,4 +52,5 @@ axes[0].set_title(f"{views[0][1]}: faces along all of their {sum(length):.0f} m 
                   f"({sum(covered):.0f} m of faces)", fontsize=10)
 fig.tight_layout()
 fig.savefig(out, dpi=100)
-print(f"{out}: {len(features)} cells, lines {sum(length):.1f} m, faces along them {sum(covered):.1f} m")
+print(f"{out}: {len(features)} cells, lines {sum(length):.1f} m, "
+      f"faces along them {sum(covered):.1f} m")

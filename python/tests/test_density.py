@@ -188,7 +188,9 @@ def test_points_that_do_not_follow_the_density_are_redistributed(rectangle, algo
     assert not cvt2.optimize(rectangle, drawn, density=step, max_iterations=0).redistributed
     assert cvt2.optimize(rectangle, drawn, density=step, max_iterations=0,
                          redistribute=True).redistributed
-    assert not cvt2.optimize(rectangle, uniform, max_iterations=0, redistribute=True).redistributed
+    kept = cvt2.optimize(rectangle, uniform, max_iterations=0, redistribute=True)
+    assert not kept.redistributed
+    assert "redistribute=True: the density is uniform: the generators given are kept" in kept.notes
     # Rows that were not replaced keep their index: one at a fixed point, one at a corner.
     given = np.vstack([uniform[:300], [[0.5, 0.5], [2.0, 0.0]]])
     kept_rows = cvt2.optimize(rectangle, given, density=step, max_iterations=0,

@@ -456,7 +456,8 @@ def test_conforming_lines_that_meet_lie_on_faces_all_along(program, data, tmp_pa
     Lines that cross where neither has a vertex are refused, the segments named."""
     c, s = np.cos(np.pi / 6), np.sin(np.pi / 6)
     # the tributary's end (7, 1.15) is on the river but for a rounding, past it: snapped
-    lines = [[(4.5, 5), (1.5, 5), (1.5 + 3 * c, 5 + 3 * s)], [(5, 1), (9, 1.3)], [(7.2, 4), (7, 1.15)],
+    lines = [[(4.5, 5), (1.5, 5), (1.5 + 3 * c, 5 + 3 * s)], [(5, 1), (9, 1.3)],
+             [(7.2, 4), (7, 1.15)],
              [(5.5, 6), (7, 7.5), (8.5, 9)], [(5.5, 9), (7, 7.5), (8.5, 6)],
              [(3, 8), (4.5, 8)], [(3, 8), (2, 9.5)], [(3, 8), (2, 6.5)]]
     domain = tmp_path / "network.wkt"
@@ -477,9 +478,9 @@ def test_conforming_lines_that_meet_lie_on_faces_all_along(program, data, tmp_pa
     # The manual's river network (examples/data/river_network.wkt): no generator in a circle.
     import subprocess
 
-    p = subprocess.run([program, str(data / "river_network.wkt"), "--cells", "3000", "--constraints",
-                        "conforming", "--cells-on-constraints", str(csv)], capture_output=True, text=True,
-                       check=True)
+    p = subprocess.run([program, str(data / "river_network.wkt"), "--cells", "3000",
+                        "--constraints", "conforming", "--cells-on-constraints", str(csv)],
+                       capture_output=True, text=True, check=True)
     assert "circles" not in p.stderr, p.stderr
     item, _, length, _ = read_csv(csv)
     assert length[item >= 2].sum() / 2 == pytest.approx(7855.2, abs=2)  # its lines' length
@@ -503,10 +504,12 @@ def test_a_conforming_line_along_a_barrier_is_left_out(program, tmp_path):
     domain = tmp_path / "twice.geojson"
     domain.write_text(json.dumps({"type": "FeatureCollection", "features": [
         {"type": "Feature", "properties": {},
-         "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [10, 0], [10, 10], [0, 10], [0, 0]]]}},
+         "geometry": {"type": "Polygon",
+                      "coordinates": [[[0, 0], [10, 0], [10, 10], [0, 10], [0, 0]]]}},
         {"type": "Feature", "properties": {"kind": "barrier"}, "geometry": line},
         {"type": "Feature", "properties": {"kind": "conforming"}, "geometry": line}]}))
-    p = subprocess.run([program, str(domain), "--cells", "500"], capture_output=True, text=True, check=True)
+    p = subprocess.run([program, str(domain), "--cells", "500"], capture_output=True, text=True,
+                       check=True)
     assert "steps of the conforming lines have a generator outside the domain or lie along a " \
            "constraint: left out" in p.stderr, p.stderr
     assert "circles" not in p.stderr

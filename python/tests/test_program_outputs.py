@@ -139,3 +139,13 @@ def test_random_points_merged_where_coordinates_are_coarse_are_counted(program, 
     merged = int(p.stderr.split("cvt2: note: ")[1].split(" of the 296 random points fell on")[0])
     generators = int(dict(f.split("=", 1) for f in p.stdout.split())["generators"])
     assert merged > 0 and generators + merged == 300, (p.stderr, generators)
+
+
+def test_redistribute_always_without_a_density_says_the_points_are_kept(program, data, tmp_path):
+    # (it was taken silently: with a uniform density there is nothing to redistribute by)
+    p = subprocess.run([os.path.abspath(program), str(data / "four_clusters.poly"),
+                        "--redistribute", "always", "--iterations", "2"],
+                       capture_output=True, text=True, cwd=tmp_path)
+    assert p.returncode == 0
+    assert "--redistribute always: the density is uniform (no --density lipschitz, no --refine): " \
+           "the generators given are kept" in p.stderr, p.stderr

@@ -438,6 +438,9 @@ void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& 
 // many, to draw as many from the density.
 std::size_t redistribute(const Options& o, const Sizing_choice& sizing,
                          const std::vector<Point_2>& fixed, CDT& cdt) {
+  if (o.redistribute == "always" && !sizing.lipschitz && !sizing.refinement && !o.quiet)
+    std::cerr << "cvt2: note: --redistribute always: the density is uniform (no --density "
+                 "lipschitz, no --refine): the generators given are kept\n";
   if (o.redistribute == "never" || (!sizing.lipschitz && !sizing.refinement)) return 0;
   const bool always = o.redistribute == "always";
   const auto to_replace = [&](const auto& mu) {
