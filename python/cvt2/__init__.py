@@ -609,7 +609,10 @@ def conforming_sites(line, spacing) -> dict:
     and 2k + 1 (right); ``nodes`` (k + 1, 2), the line's vertices and points between, the
     Voronoi vertices between the pairs; ``radii`` (k + 1,), the circles' radii. A river in
     Python: the domain without the line, the sites inside the domain as ``fixed_points`` of
-    :func:`optimize`, random points drawn outside the circles."""
+    :func:`optimize`, random points drawn outside the circles. One line: lines that meet (a
+    tributary, a crossing at a shared vertex) are placed together by ``optimize(...,
+    constraints="conforming")``, which gives them shared nodes at their junctions; placed one
+    by one, their pairs would fall out of order or into each other's circles there."""
     return _cvt2.conforming_sites(line, float(spacing))
 
 
