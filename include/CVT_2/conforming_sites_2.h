@@ -17,8 +17,11 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -94,8 +97,9 @@ class Conforming_disks {
     for (std::size_t i = 0; i < m_disks.size(); ++i)
       m_buckets.emplace(key(cell(m_disks[i].x), cell(m_disks[i].y)), i);
   }
-  /// whether `p` lies inside a circle by more than a rounding (1e-9 of its radius: the
-  /// generators of `Conforming_sites` lie on the circles)
+  /// whether `p` lies inside a circle by more than a rounding (1e-9 of its radius, and 16 units
+  /// in the last place of its centre's coordinates: the generators of `Conforming_sites` lie on
+  /// the circles)
   bool contains(const Point_2& p) const {
     return containing(CGAL::to_double(p.x()), CGAL::to_double(p.y())) != nullptr;
   }
@@ -134,7 +138,8 @@ class Conforming_disks {
         const auto range = m_buckets.equal_range(key(a, b));
         for (auto it = range.first; it != range.second; ++it) {
           const Disk& d = m_disks[it->second];
-          if (std::hypot(x - d.x, y - d.y) < d.r * (1 - 1e-9)) return &d;
+          if (std::hypot(x - d.x, y - d.y) < d.r - internal::circle_rounding(d.x, d.y, d.r))
+            return &d;
         }
       }
     return nullptr;
@@ -181,14 +186,16 @@ struct Conforming_pair_2 {
 /// pairs around a node where three or more lines meet placed as at a sharp corner, and the steps
 /// halved where one line's pairs would fall in another's circles. An end of a line within
 /// `spacing` / 100 of another line (digitized onto it, a rounding short or past) is moved onto
-/// that line's vertex, or made a vertex of its segment. Adds the circles to `disks`;
-/// returns the pairs inserted, line after line (a part that lines share, once). A step whose
-/// two generators are not both strictly inside the domain (in a domain face, or on an edge that
-/// is no constraint), or that lies along a constraint (whose faces are there already), is left out,
+/// that line's vertex, or made a vertex of its segment. Adds the circles to `disks`; returns
+/// the pairs, line after line: a part that lines share is inserted once and listed for each
+/// (`Conforming_pair_2::line`). A generator already where a pair goes (a free one, strictly
+/// inside: the points of an earlier run) becomes that pair's. A step whose two generators are
+/// not both strictly inside the domain (in a domain face, or on an edge that is no
+/// constraint), or that lies along a constraint (whose faces are there already), is left out,
 /// its generators not inserted and its circles not added unless a step kept shares them, and
 /// counted in `*left_out` if given. The generators are to stay fixed (`fixed_points`) and the
-/// circles free of others (`keep_out(disks)`). \throws std::invalid_argument as
-/// `conforming_sites_2()`, and if two lines cross at a point
+/// circles free of others (`keep_out(disks)`).
+/// \throws std::invalid_argument as `conforming_sites_2()`, and if two lines cross at a point
 ///         that is a vertex of neither (the message names the segments).
 template <class CDT>
 std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
@@ -203,6 +210,9 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
     typename CDT::Locate_type lt;
     int li = 0;
     hint = cdt.locate(p, lt, li, hint);
+    if (lt == CDT::VERTEX)
+      return !cdt.are_there_incident_constraints(hint->vertex(li)) &&
+             internal::has_domain_face(cdt, hint->vertex(li));
     if (lt == CDT::EDGE) return !cdt.is_constrained({hint, li}) && hint->is_inside_domain();
     return lt == CDT::FACE && hint->is_inside_domain();
   };
@@ -217,7 +227,9 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
     hint = cdt.locate(m, lt, li, hint);
     if (lt == CDT::EDGE && cdt.is_constrained({hint, li})) return true;
     if (lt != CDT::FACE && lt != CDT::EDGE) return false;
-    const double rounding = 1e-9 * std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b)));
+    const double rounding =
+        internal::circle_rounding(CGAL::to_double(m.x()), CGAL::to_double(m.y()),
+                                  std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b))));
     for (int i = 0; i < 3; ++i) {
       if (!cdt.is_constrained({hint, i})) continue;
       const typename CDT::Segment s = cdt.segment(hint, i);
@@ -233,18 +245,25 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
   // left out, never converged).
   std::vector<bool> used(net.nodes.size(), false);
   std::size_t out = 0;
+  std::map<std::pair<std::size_t, std::size_t>, bool> kept_step;       // by its nodes
+  std::set<std::tuple<std::size_t, std::size_t, std::size_t>> listed;  // nodes, line
   for (std::size_t k = 0; k < net.steps.size(); ++k) {
     const auto& s = net.steps[k];
-    if (s.repeat) continue;
     const Point_2 &left = net.sites[2 * k], &right = net.sites[2 * k + 1];
-    if (strictly_inside(left) && strictly_inside(right) && !on_constraint(s)) {
-      sites.push_back(left);
-      sites.push_back(right);
-      pairs.push_back({left, right, s.line});
-      used[s.a] = used[s.b] = true;
-    } else {
-      ++out;
+    const auto nodes = std::minmax(s.a, s.b);
+    if (!s.repeat) {
+      const bool keep = strictly_inside(left) && strictly_inside(right) && !on_constraint(s);
+      kept_step[nodes] = keep;
+      if (keep) {
+        sites.push_back(left);
+        sites.push_back(right);
+        used[s.a] = used[s.b] = true;
+      } else {
+        ++out;
+      }
     }
+    if (kept_step[nodes] && listed.insert({nodes.first, nodes.second, s.line}).second)
+      pairs.push_back({left, right, s.line});
   }
   Conforming_sites<Point_2> kept;
   for (std::size_t v = 0; v < net.nodes.size(); ++v)

@@ -484,6 +484,12 @@ def test_conforming_lines_that_meet_lie_on_faces_all_along(program, data, tmp_pa
     assert "circles" not in p.stderr, p.stderr
     item, _, length, _ = read_csv(csv)
     assert length[item >= 2].sum() / 2 == pytest.approx(7855.2, abs=2)  # its lines' length
+    # A vertex of one line on the other but for a rounding (1.8e-15) is no crossing.
+    rounded = tmp_path / "rounded.wkt"
+    rounded.write_text("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0))\n"
+                       "LINESTRING (1 1, 7 9)\nLINESTRING (2 6, 4.6 5.8, 7 3)\n")
+    subprocess.run([program, str(rounded), "--constraints", "conforming", "--quiet"], check=True,
+                   capture_output=True)
     crossing = tmp_path / "crossing.wkt"
     crossing.write_text("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0))\n"
                         "LINESTRING (2 5, 8 5)\nLINESTRING (5 2, 5 8)\n")
@@ -491,6 +497,61 @@ def test_conforming_lines_that_meet_lie_on_faces_all_along(program, data, tmp_pa
                        text=True)
     assert p.returncode != 0
     assert "its segment (5, 2) - (5, 8) crosses (2, 5) - (8, 5)" in p.stderr, p.stderr
+
+
+def test_conforming_lines_sharing_a_part_each_get_its_rows(program, tmp_path):
+    """Two zones' borders as rings that share a side, and a line given twice: the shared faces
+    are listed under each line (the second line got none of them)."""
+    domain = tmp_path / "zones.wkt"
+    domain.write_text("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0))\n"
+                      "LINESTRING (2 2, 5 2, 5 8, 2 8, 2 2)\nLINESTRING (5 2, 8 2, 8 8, 5 8, 5 2)\n"
+                      "LINESTRING (1 9, 9 9.5)\nLINESTRING (1 9, 9 9.5)\n")
+    csv = tmp_path / "zones.csv"
+    run_program(program, domain, tmp_path, "--cells", 600, "--constraints", "conforming",
+                "--cells-on-constraints", csv)
+    item, _, length, _ = read_csv(csv)
+    for i, expected in ((2, 18), (3, 18), (4, np.hypot(8, 0.5)), (5, np.hypot(8, 0.5))):
+        assert (1 - 1e-7) * expected < length[item == i].sum() / 2 < expected + 0.2, i
+
+
+def test_a_run_fed_its_own_points_keeps_its_conforming_lines(program, data, tmp_path):
+    """--points-out then --points-in: the pairs come back as free points where the pairs go;
+    they become the pairs again (all the steps were left out, "outside the domain")."""
+    import subprocess
+
+    points = tmp_path / "points.txt"
+    csv = tmp_path / "cells.csv"
+    domain = data / "river_network.wkt"
+    subprocess.run([program, str(domain), "--cells", "1500", "--constraints", "conforming",
+                    "--points-out", str(points), "--quiet"], check=True, capture_output=True)
+    p = subprocess.run([program, str(domain), "--points-in", str(points), "--constraints",
+                        "conforming", "--cells-on-constraints", str(csv), "--quiet"],
+                       check=True, capture_output=True, text=True)
+    assert "left out" not in p.stderr and "circles" not in p.stderr, p.stderr
+    item, _, length, _ = read_csv(csv)
+    assert 7855.2 < length[item >= 2].sum() / 2 < 7855.2 + 100  # past some ends, as in any run
+
+
+def test_conforming_lines_far_from_the_origin(program, data, tmp_path):
+    """The river network a hundredth of its size, at UTM-like coordinates (5e5, 5e6): its pairs
+    lie on their circles to the coordinates' rounding, 3e-9 of the radius; counted as inside
+    at 1e-9, 76 generators were noted "inside the circles" where every face was on its line."""
+    import re
+
+    text = (data / "river_network.wkt").read_text()
+    moved = re.sub(r"(-?[0-9.]+) (-?[0-9.]+)",
+                   lambda m: f"{500000 + float(m[1]) / 100!r} {5000000 + float(m[2]) / 100!r}", text)
+    domain = tmp_path / "utm.wkt"
+    domain.write_text(moved)
+    csv = tmp_path / "utm.csv"
+    import subprocess
+
+    p = subprocess.run([program, str(domain), "--cells", "3000", "--constraints", "conforming",
+                        "--cells-on-constraints", str(csv)], check=True, capture_output=True,
+                       text=True)
+    assert "circles" not in p.stderr, p.stderr
+    item, _, length, _ = read_csv(csv)
+    assert length[item >= 2].sum() / 2 == pytest.approx(78.552, abs=0.03)
 
 
 def test_a_conforming_line_along_a_barrier_is_left_out(program, tmp_path):

@@ -167,7 +167,7 @@ void print_help(std::ostream& os) {
         "      --points-out FILE  one 'x y c' per generator, c = 1 if constrained\n"
         "      --svg FILE         picture: domain, cells, constraints, generators\n"
         "Other:\n"
-        "      --quiet            no progress on standard error\n"
+        "      --quiet            no progress on standard error (notes and errors still)\n"
         "  -h, --help             this help\n"
         "      --version          the version\n\n"
         "Prints one summary line on standard output: algorithm= iterations= evaluations=\n"
@@ -438,7 +438,7 @@ void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& 
 // many, to draw as many from the density.
 std::size_t redistribute(const Options& o, const Sizing_choice& sizing,
                          const std::vector<Point_2>& fixed, CDT& cdt) {
-  if (o.redistribute == "always" && !sizing.lipschitz && !sizing.refinement && !o.quiet)
+  if (o.redistribute == "always" && !sizing.lipschitz && !sizing.refinement)
     std::cerr << "cvt2: note: --redistribute always: the density is uniform (no --density "
                  "lipschitz, no --refine): the generators given are kept\n";
   if (o.redistribute == "never" || (!sizing.lipschitz && !sizing.refinement)) return 0;
@@ -451,12 +451,11 @@ std::size_t redistribute(const Options& o, const Sizing_choice& sizing,
       sizing.lipschitz ? to_replace(*sizing.lipschitz) : to_replace(*sizing.refinement);
   if (given.empty()) return 0;
   CVT_2::remove_generators_2(cdt, given);
-  if (!o.quiet)
-    std::cerr << "cvt2: note: the " << given.size() << " generators given "
-              << (o.redistribute == "auto" ? "do not follow the density (their cells' areas do "
-                                             "not shrink as it grows)"
-                                           : "are redistributed (--redistribute always)")
-              << ": replaced by as many drawn from it (--redistribute never keeps them)\n";
+  std::cerr << "cvt2: note: the " << given.size() << " generators given "
+            << (o.redistribute == "auto" ? "do not follow the density (their cells' areas do "
+                                           "not shrink as it grows)"
+                                         : "are redistributed (--redistribute always)")
+            << ": replaced by as many drawn from it (--redistribute never keeps them)\n";
   return given.size();
 }
 
@@ -769,7 +768,7 @@ void insert_conforming_sites(const Options& o, std::size_t free_generators, CDT&
   conforming.pairs = CVT_2::insert_conforming_sites_2(
       cdt, conforming.lines, background_size(o, cells, cdt), disks, &left_out);
   for (const auto& p : conforming.pairs) fixed.push_back(p.left), fixed.push_back(p.right);
-  if (left_out > 0 && !o.quiet)
+  if (left_out > 0)
     std::cerr
         << "cvt2: note: " << left_out << " of " << left_out + conforming.pairs.size()
         << " steps of the conforming lines have a generator outside the domain or lie along a "
@@ -885,7 +884,7 @@ int run(const Options& o) {
     if (!std::ifstream(o.points_in))
       throw std::runtime_error("cannot open the points file '" + o.points_in + "'");
     const auto points = CVT_2::IO::read_points<Point_2>(o.points_in);
-    if (points.constrained_skipped > 0 && !o.quiet)
+    if (points.constrained_skipped > 0)
       std::cerr << "cvt2: note: " << o.points_in << ": " << points.constrained_skipped
                 << " constrained generators ('x y 1') skipped: the domain gives them\n";
     std::vector<std::string> notes;
@@ -933,11 +932,19 @@ int run(const Options& o) {
   std::size_t n = default_n;
   if (counted) {
     const double wanted = cells_wanted();
+    // (the conforming lines' generators: two a step, a step for each of their segments at least)
+    const std::size_t paired = 2 * conforming.pairs.size();
     if (wanted < double(present))
-      throw Usage_error(std::string(o.cells ? "--cells" : "--size") + " asks for " +
-                        std::to_string(static_cast<long long>(wanted)) + " cells, fewer than the " +
-                        std::to_string(present) + " vertices of the domain and the points" +
-                        (o.resample ? "" : " (--boundary resample spaces the domain's vertices)"));
+      throw Usage_error(
+          std::string(o.cells ? "--cells" : "--size") + " asks for " +
+          std::to_string(static_cast<long long>(wanted)) + " cells, fewer than the " +
+          std::to_string(present) + " vertices of the domain and the points" +
+          (paired > present / 2
+               ? " (" + std::to_string(paired) +
+                     " of them the conforming lines' pairs, two for each of their segments at "
+                     "least: simplify the lines for fewer)"
+           : o.resample ? ""
+                        : " (--boundary resample spaces the domain's vertices)"));
     n = static_cast<std::size_t>(wanted) - present;
   }
   if (!o.resample && own > (present - own + n) / 10 && own > 100)
@@ -973,7 +980,7 @@ int run(const Options& o) {
   if (o.slide) slid_domain(o, cdt, runs, *slid, segments, domain_alone, metadata);
   // what breaks the faces on the lines, if any
   const std::string inside = CVT_2::internal::conforming_disks_note(cdt, disks);
-  if (!inside.empty() && !o.quiet) std::cerr << "cvt2: note: " << inside << '\n';
+  if (!inside.empty()) std::cerr << "cvt2: note: " << inside << '\n';
   const BVD bvd(cdt);
   write_outputs(o, cdt, bvd, metadata, domain_alone, segments, kinds, conforming, top, bottom);
   print_summary(o, r, bvd, domain_area(cdt));

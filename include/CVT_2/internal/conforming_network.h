@@ -26,13 +26,24 @@
 namespace CVT_2 {
 namespace internal {
 
+// How far inside a circle of centre (x, y) and radius r a point must be to count as inside: the
+// pairs lie on the circles, computed in doubles, so a rounding of the radius and of the
+// coordinates' magnitude (at (5e5, 5e6) a unit in the last place is 1e-9, the radius of a
+// cell of half a metre 3e-10 of it).
+inline double circle_rounding(double x, double y, double r) {
+  return 1e-9 * r + std::ldexp(std::max(std::abs(x), std::abs(y)), -48);
+}
+
 // Ends of lines drawn to meet another line but off it by a rounding (a tributary's end
 // digitized onto a river's segment, a hair short of it or past it): an end of one of `lines`
 // that no other segment shares, within `tolerance` of a vertex of another segment, moves onto
-// it; one within `tolerance` of a segment's interior becomes a vertex of that segment. Segments
-// are found through a grid of cells `spacing` wide. Returns whether any end did.
+// it; one within `tolerance` of a segment's interior becomes a vertex of that segment. With
+// `every`, each vertex of a line does so, not only its ends (lines that cross at a vertex of one
+// that lies on the other but for a rounding). Segments are found through a grid of cells
+// `spacing` wide. Returns whether any point did.
 template <class Point_2>
-bool snap_ends(std::vector<std::vector<Point_2>>& lines, double spacing, double tolerance) {
+bool snap_ends(std::vector<std::vector<Point_2>>& lines, double spacing, double tolerance,
+               bool every = false) {
   const auto x = [](const Point_2& p) { return CGAL::to_double(p.x()); };
   const auto y = [](const Point_2& p) { return CGAL::to_double(p.y()); };
   const auto cell = [&](double c) { return (long long)std::floor(c / spacing); };
@@ -52,13 +63,19 @@ bool snap_ends(std::vector<std::vector<Point_2>>& lines, double spacing, double 
     }
   std::map<std::pair<std::size_t, std::size_t>, std::vector<std::pair<double, Point_2>>> added;
   bool moved = false;
+  constexpr std::size_t none = std::size_t(-1);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     auto& line = lines[i];
-    if (line.size() < 2 || line.front() == line.back()) continue;  // a ring
-    for (const bool front : {true, false}) {
-      Point_2& end = front ? line.front() : line.back();
-      const std::size_t own = front ? 0 : line.size() - 2;  // its segment
-      const Point_2 neighbour = line[front ? 1 : line.size() - 2];
+    const std::size_t m = line.size();
+    const bool ring = m > 2 && line.front() == line.back();
+    if (m < 2 || (ring && !every)) continue;
+    for (std::size_t k = 0; k + (ring ? 1 : 0) < m; ++k) {
+      if (!every && k != 0 && k + 1 != m) continue;
+      Point_2& end = line[k];
+      // its own segments and neighbours on its line
+      const std::size_t before = k > 0 ? k - 1 : ring ? m - 2 : none, after = k + 1 < m ? k : none;
+      const Point_2 previous = before != none ? line[before] : end;
+      const Point_2 next = after != none ? line[k + 1] : end;
       bool shared = false;
       double best = tolerance;
       const Point_2* vertex = nullptr;
@@ -68,12 +85,12 @@ bool snap_ends(std::vector<std::vector<Point_2>>& lines, double spacing, double 
           const auto it = grid.find(key(a, b));
           if (it == grid.end()) continue;
           for (const auto& [j, k] : it->second) {
-            if (j == i && k == own) continue;
+            if (j == i && (k == before || k == after)) continue;
             const Point_2 &p = lines[j][k], &q = lines[j][k + 1];
             shared = shared || p == end || q == end;
             for (const Point_2* v : {&p, &q}) {
               const double d = std::hypot(x(*v) - x(end), y(*v) - y(end));
-              if (d < best && *v != neighbour) best = d, vertex = v;
+              if (d < best && *v != previous && *v != next) best = d, vertex = v;
             }
             const double dx = x(q) - x(p), dy = y(q) - y(p), ll = dx * dx + dy * dy;
             const double t = ((x(end) - x(p)) * dx + (y(end) - y(p)) * dy) / ll;
@@ -84,6 +101,7 @@ bool snap_ends(std::vector<std::vector<Point_2>>& lines, double spacing, double 
       if (shared) continue;
       if (vertex != nullptr) {
         end = *vertex, moved = true;
+        if (ring && k == 0) line.back() = end;
       } else if (segment.first < lines.size()) {
         const Point_2& p = lines[segment.first][segment.second];
         added[segment].push_back({std::hypot(x(end) - x(p), y(end) - y(p)), end});
@@ -158,6 +176,17 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
   std::vector<std::size_t> segment_line;
   const auto triangulate = [&] {
     cdt.clear(), ends.clear(), segment_line.clear();
+    // Three points far around the lines first: a triangulation of collinear points is one of
+    // dimension 1, where CGAL locates each new point by a walk along all of them.
+    double lo_x = HUGE_VAL, lo_y = HUGE_VAL, hi_x = -HUGE_VAL, hi_y = -HUGE_VAL;
+    for (const auto& line : in)
+      for (const Point_2& p : line)
+        lo_x = std::min(lo_x, x(p)), hi_x = std::max(hi_x, x(p)), lo_y = std::min(lo_y, y(p)),
+        hi_y = std::max(hi_y, y(p));
+    const double size = std::max({hi_x - lo_x, hi_y - lo_y, std::abs(lo_x), std::abs(lo_y), 1.0});
+    cdt.insert(Point_2(lo_x - 8 * size, lo_y - 8 * size));
+    cdt.insert(Point_2(hi_x + 8 * size, lo_y - 8 * size));
+    cdt.insert(Point_2((lo_x + hi_x) / 2, hi_y + 8 * size));
     for (std::size_t i = 0; i < in.size(); ++i) {
       const auto& line = in[i];
       if (line.size() < 2)
@@ -172,7 +201,10 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
         segment_line.push_back(i);
       }
       try {
-        cdt.insert_constraint(line.begin(), line.end());
+        std::vector<Vertex_handle> at;  // each point located from the one before
+        for (const Point_2& p : line)
+          at.push_back(cdt.insert(p, at.empty() ? typename CDT::Face_handle() : at.back()->face()));
+        for (std::size_t k = 0; k + 1 < at.size(); ++k) cdt.insert_constraint(at[k], at[k + 1]);
       } catch (const typename CDT::Intersection_of_constraints_exception&) {
         std::vector<std::array<Point_2, 2>> earlier;
         for (std::size_t j = 0; j < i; ++j) add_segments(in[j], false, earlier);
@@ -181,7 +213,7 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
                                                     : "a line crosses itself or an earlier one") +
                                     " where neither has a vertex" +
                                     first_crossing(earlier, line, false) +
-                                    "; the crossing must be a vertex of both");
+                                    "; give the crossing point as a vertex of both lines");
       }
     }
   };
@@ -192,10 +224,16 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
             who + ": the spacing " + number_to_string(spacing) + " cuts a segment of length " +
             number_to_string(distance(line[k], line[k + 1])) + " into too many steps");
   snap_ends(in, spacing, spacing / 100);
-  triangulate();
+  try {
+    triangulate();
+  } catch (const std::invalid_argument&) {  // a vertex of one a rounding off the other?
+    if (!snap_ends(in, spacing, spacing / 100, true)) throw;
+    triangulate();
+  }
   Conforming_network<Point_2> net;
   if (in.empty()) return net;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    if (!cdt.are_there_incident_constraints(v)) continue;  // one of the three far points
     v->id() = int(net.nodes.size());
     net.nodes.push_back(v->point());
   }
@@ -339,13 +377,21 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
     // another circle, and the steps of that circle's node.
     net.sites.assign(2 * steps.size(), Point_2());
     std::vector<bool> halve(steps.size(), false), crossing(steps.size(), false);
-    double largest = 0;
-    for (std::size_t v = 0; v < n; ++v) largest = std::max(largest, r[v]);
-    const auto cell = [&](double c) { return (long long)std::floor(c / largest); };
-    std::unordered_multimap<long long, std::size_t> buckets;
+    // The circles in grids by size, each circle in the grid of cells as wide as the smallest
+    // power of two (times the spacing) at least its radius: a site meets the circles of few
+    // cells in each, however many tiny circles crowd a place.
+    const auto size_class = [&](double radius) {
+      return std::clamp(int(std::ceil(std::log2(radius / spacing))), -60, 4);
+    };
+    std::map<int, std::unordered_multimap<long long, std::size_t>> grids;
     const auto key = [](long long i, long long j) { return i * 1000003LL + j; };
-    for (std::size_t v = 0; v < n; ++v)
-      buckets.emplace(key(cell(x(net.nodes[v])), cell(y(net.nodes[v]))), v);
+    const auto cell = [&](double c, int size) {
+      return (long long)std::floor(c / std::ldexp(spacing, size));
+    };
+    for (std::size_t v = 0; v < n; ++v) {
+      const int c = size_class(r[v]);
+      grids[c].emplace(key(cell(x(net.nodes[v]), c), cell(y(net.nodes[v]), c)), v);
+    }
     bool clean = true;
     for (std::size_t k = 0; k < steps.size(); ++k) {
       const Step_at& s = steps[k];
@@ -361,19 +407,21 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
       if (!(h > 0.01 * d) && !at_prescribed(s)) halve[k] = crossing[k] = true, clean = false;
       for (int side = 0; side < 2; ++side) {
         const double sx = x(net.sites[2 * k + side]), sy = y(net.sites[2 * k + side]);
-        for (long long i = cell(sx) - 1; i <= cell(sx) + 1; ++i)
-          for (long long j = cell(sy) - 1; j <= cell(sy) + 1; ++j) {
-            const auto range = buckets.equal_range(key(i, j));
-            for (auto it = range.first; it != range.second; ++it) {
-              const std::size_t v = it->second;
-              if (v == s.p || v == s.q ||
-                  !(std::hypot(sx - x(net.nodes[v]), sy - y(net.nodes[v])) < r[v] * (1 - 1e-9)))
-                continue;
-              clean = false;
-              halve[k] = true;
-              for (const std::size_t t : steps_at[v]) halve[t] = true;
+        for (const auto& [size, buckets] : grids)
+          for (long long i = cell(sx, size) - 1; i <= cell(sx, size) + 1; ++i)
+            for (long long j = cell(sy, size) - 1; j <= cell(sy, size) + 1; ++j) {
+              const auto range = buckets.equal_range(key(i, j));
+              for (auto it = range.first; it != range.second; ++it) {
+                const std::size_t v = it->second;
+                const double vx = x(net.nodes[v]), vy = y(net.nodes[v]);
+                if (v == s.p || v == s.q ||
+                    !(std::hypot(sx - vx, sy - vy) < r[v] - circle_rounding(vx, vy, r[v])))
+                  continue;
+                clean = false;
+                halve[k] = true;
+                for (const std::size_t t : steps_at[v]) halve[t] = true;
+              }
             }
-          }
       }
     }
     if (clean || round == 24) break;
