@@ -189,7 +189,9 @@ struct Conforming_pair_2 {
 /// that line's vertex, or made a vertex of its segment. Adds the circles to `disks`; returns
 /// the pairs, line after line: a part that lines share is inserted once and listed for each
 /// (`Conforming_pair_2::line`). A generator already where a pair goes (a free one, strictly
-/// inside: the points of an earlier run) becomes that pair's. A step whose two generators are
+/// inside: the points of an earlier run) becomes that pair's. A step inside the domain whose
+/// pair is not (a line near the boundary) is halved, down to `spacing` / 16, so that its pair,
+/// nearer the line, fits. A step whose two generators are still
 /// not both strictly inside the domain (in a domain face, or on an edge that is no
 /// constraint), or that lies along a constraint (whose faces are there already), is left out,
 /// its generators not inserted and its circles not added unless a step kept shares them, and
@@ -202,9 +204,6 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
     CDT& cdt, const std::vector<std::vector<typename CDT::Point_2>>& lines, double spacing,
     Conforming_disks<typename CDT::Point_2>& disks, std::size_t* left_out = nullptr) {
   using Point_2 = typename CDT::Point_2;
-  const auto net = internal::conforming_network(lines, spacing, "conforming lines");
-  std::vector<Conforming_pair_2<Point_2>> pairs;
-  std::vector<Point_2> sites;
   typename CDT::Face_handle hint;
   const auto strictly_inside = [&](const Point_2& p) {
     typename CDT::Locate_type lt;
@@ -216,6 +215,10 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
     if (lt == CDT::EDGE) return !cdt.is_constrained({hint, li}) && hint->is_inside_domain();
     return lt == CDT::FACE && hint->is_inside_domain();
   };
+  const auto net =
+      internal::conforming_network(lines, spacing, "conforming lines", strictly_inside);
+  std::vector<Conforming_pair_2<Point_2>> pairs;
+  std::vector<Point_2> sites;
   // A step along a constraint (the line given as a barrier or slit too) has its faces already.
   // (its nodes computed: within a rounding of a constrained edge of its midpoint's face, and of
   // that edge's line, not across it)

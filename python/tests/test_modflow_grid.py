@@ -554,6 +554,22 @@ def test_conforming_lines_far_from_the_origin(program, data, tmp_path):
     assert length[item >= 2].sum() / 2 == pytest.approx(78.552, abs=0.03)
 
 
+def test_a_conforming_line_near_the_boundary_gets_shorter_steps(program, tmp_path):
+    """A river a seventh of a cell from the boundary: the pairs of cell-long steps reach out of
+    the domain, so the steps there are halved until they fit (all 24 were left out)."""
+    import subprocess
+
+    domain = tmp_path / "near.wkt"
+    domain.write_text("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0))\nLINESTRING (1 0.05, 9 0.05)\n")
+    csv = tmp_path / "near.csv"
+    p = subprocess.run([program, str(domain), "--cells", "1000", "--constraints", "conforming",
+                        "--cells-on-constraints", str(csv)], check=True, capture_output=True,
+                       text=True)
+    assert "left out" not in p.stderr and "circles" not in p.stderr, p.stderr
+    item, _, length, _ = read_csv(csv)
+    assert 8 * (1 - 1e-7) < length[item == 2].sum() / 2 < 8.5
+
+
 def test_a_conforming_line_along_a_barrier_is_left_out(program, tmp_path):
     """A line given twice, as a barrier and as a conforming line: the barrier's faces are there
     already, so the pairs along it are left out, and cvt2 says so (they were inserted silently,

@@ -19,6 +19,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -145,13 +146,16 @@ struct Conforming_network {
 // together) is halved, with the steps of that node, down to spacing / 16; one whose circles do
 // not cross, with no floor; the steps beside a halved one are kept within twice its length. Up
 // to 24 rounds; a pair still inside a circle after that is left (the callers count the
-// generators inside circles). `who` opens the messages.
+// generators inside circles). With `inside` (a predicate on points), a step whose midpoint is
+// inside and a generator of whose pair is not (a line near the boundary) is halved too, down to
+// spacing / 16, which brings its pair nearer the line. `who` opens the messages.
 // \throws std::invalid_argument if `spacing` is not positive and finite, a line has fewer than
 //         two points, repeats a point, is cut into too many steps, or two lines (or a line and
 //         itself) cross at a point that is a vertex of neither.
-template <class Point_2>
+template <class Point_2, class Inside = std::nullptr_t>
 Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Point_2>>& lines,
-                                               double spacing, const std::string& who) {
+                                               double spacing, const std::string& who,
+                                               const Inside& inside = Inside()) {
   using K = typename CGAL::Kernel_traits<Point_2>::Kernel;
   using CDT = Cvt_triangulation_2<K>;
   using Vertex_handle = typename CDT::Vertex_handle;
@@ -183,7 +187,7 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
       for (const Point_2& p : line)
         lo_x = std::min(lo_x, x(p)), hi_x = std::max(hi_x, x(p)), lo_y = std::min(lo_y, y(p)),
         hi_y = std::max(hi_y, y(p));
-    const double size = std::max({hi_x - lo_x, hi_y - lo_y, std::abs(lo_x), std::abs(lo_y), 1.0});
+    const double size = std::max(hi_x - lo_x, hi_y - lo_y);  // > 0: two points differ
     cdt.insert(Point_2(lo_x - 8 * size, lo_y - 8 * size));
     cdt.insert(Point_2(hi_x + 8 * size, lo_y - 8 * size));
     cdt.insert(Point_2((lo_x + hi_x) / 2, hi_y + 8 * size));
@@ -405,6 +409,12 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
       net.sites[2 * k + 1] = Point_2(mx + h * uy, my - h * ux);
       // (a prescribed pair is as close to its step as its sector is narrow)
       if (!(h > 0.01 * d) && !at_prescribed(s)) halve[k] = crossing[k] = true, clean = false;
+      if constexpr (!std::is_same_v<Inside, std::nullptr_t>) {
+        // a step inside whose pair is not (the line near the boundary): lower pairs
+        const Point_2 m((x(a) + x(b)) / 2, (y(a) + y(b)) / 2);
+        if (inside(m) && !(inside(net.sites[2 * k]) && inside(net.sites[2 * k + 1])))
+          halve[k] = true, clean = false;
+      }
       for (int side = 0; side < 2; ++side) {
         const double sx = x(net.sites[2 * k + side]), sy = y(net.sites[2 * k + side]);
         for (const auto& [size, buckets] : grids)
