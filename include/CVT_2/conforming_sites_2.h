@@ -104,6 +104,16 @@ class Conforming_disks {
     return containing(CGAL::to_double(p.x()), CGAL::to_double(p.y())) != nullptr;
   }
   bool empty() const { return m_disks.empty(); }  ///< whether there is no circle
+  /// whether `p` is the centre of a circle: a node of a line (a vertex of the domain where a
+  /// line ends on the boundary, say)
+  bool is_node(const Point_2& p) const {
+    if (m_disks.empty()) return false;
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
+    const auto range = m_buckets.equal_range(key(cell(x), cell(y)));
+    for (auto it = range.first; it != range.second; ++it)
+      if (m_disks[it->second].x == x && m_disks[it->second].y == y) return true;
+    return false;
+  }
 
   /// Where a free generator that moves from `from` toward `to` may go, so that none enters a
   /// circle (the optimizers' named parameter `keep_out`): `to` if it lies in no circle, else
@@ -280,18 +290,25 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
 namespace internal {
 
 // The note on the generators of `cdt` inside the circles of conforming lines (after an
-// optimization: those that keep_out could not keep away), empty if none is.
+// optimization: those that keep_out could not keep away, and those at nodes, as a vertex of
+// the domain where a line ends on the boundary), empty if none is.
 template <class CDT>
 std::string conforming_disks_note(const CDT& cdt,
                                   const Conforming_disks<typename CDT::Point_2>& disks) {
   if (disks.empty()) return {};
-  std::size_t inside = 0;
+  std::size_t inside = 0, on_nodes = 0;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-    inside += disks.contains(v->point()) ? 1 : 0;
-  if (inside == 0) return {};
-  return std::to_string(inside) +
-         " generators lie inside the circles of the conforming lines: the faces near them are "
-         "not on the lines";
+    if (disks.contains(v->point())) ++(disks.is_node(v->point()) ? on_nodes : inside);
+  std::string note;
+  if (inside > 0)
+    note = std::to_string(inside) +
+           " generators lie inside the circles of the conforming lines: the faces near them are "
+           "not on the lines";
+  if (on_nodes > 0)
+    note += (note.empty() ? "" : "; ") + std::to_string(on_nodes) +
+            " generators sit on nodes of the conforming lines (vertices of the domain where a "
+            "line ends or passes): their cells hold the lines within about half a step of them";
+  return note;
 }
 
 }  // namespace internal

@@ -570,6 +570,18 @@ def test_a_conforming_line_near_the_boundary_gets_shorter_steps(program, tmp_pat
     assert 8 * (1 - 1e-7) < length[item == 2].sum() / 2 < 8.5
 
 
+def test_vertices_of_the_domain_on_a_line_are_told_apart(program, data):
+    """The aquifer's river ends on two vertices of the boundary: generators at nodes of the line,
+    whose cells hold its last half-steps. The note says so, not that generators strayed into
+    the circles (which is what it said)."""
+    import subprocess
+
+    p = subprocess.run([program, str(data / "aquifer.geojson"), "--cells", "1500"], check=True,
+                       capture_output=True, text=True)
+    assert "2 generators sit on nodes of the conforming lines" in p.stderr, p.stderr
+    assert "inside the circles" not in p.stderr, p.stderr
+
+
 def test_a_conforming_line_along_a_barrier_is_left_out(program, tmp_path):
     """A line given twice, as a barrier and as a conforming line: the barrier's faces are there
     already, so the pairs along it are left out, and cvt2 says so (they were inserted silently,
