@@ -201,11 +201,10 @@ struct Conforming_pair_2 {
 /// (`Conforming_pair_2::line`). A generator already where a pair goes (a free one, strictly
 /// inside: the points of an earlier run) becomes that pair's. A step inside the domain whose
 /// pair is not (a line near the boundary) is halved, down to `spacing` / 16, so that its pair,
-/// nearer the line, fits. A step whose two generators are still
-/// not both strictly inside the domain (in a domain face, or on an edge that is no
-/// constraint), or that lies along a constraint (whose faces are there already), is left out,
-/// its generators not inserted and its circles not added unless a step kept shares them, and
-/// counted in `*left_out` if given. The generators are to stay fixed (`fixed_points`) and the
+/// nearer the line, fits. A step whose two generators are still not both strictly inside the
+/// domain (in a domain face, or on an edge that is no constraint), or that lies along a
+/// constraint (whose faces are there already), is left out, its generators not inserted and
+/// its circles not added unless a step kept shares them, and counted in `*left_out` if given. The generators are to stay fixed (`fixed_points`) and the
 /// circles free of others (`keep_out(disks)`).
 /// \throws std::invalid_argument as `conforming_sites_2()`, and if two lines cross at a point
 ///         that is a vertex of neither (the message names the segments).
