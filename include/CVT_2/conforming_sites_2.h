@@ -204,8 +204,9 @@ struct Conforming_pair_2 {
 /// nearer the line, fits. A step whose two generators are still not both strictly inside the
 /// domain (in a domain face, or on an edge that is no constraint), or that lies along a
 /// constraint (whose faces are there already), is left out, its generators not inserted and
-/// its circles not added unless a step kept shares them, and counted in `*left_out` if given. The generators are to stay fixed (`fixed_points`) and the
-/// circles free of others (`keep_out(disks)`).
+/// its circles not added unless a step kept shares them, and counted in `*left_out` if given.
+/// The generators are to stay fixed (`fixed_points`) and the circles free of others
+/// (`keep_out(disks)`).
 /// \throws std::invalid_argument as `conforming_sites_2()`, and if two lines cross at a point
 ///         that is a vertex of neither (the message names the segments).
 template <class CDT>
