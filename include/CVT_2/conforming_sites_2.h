@@ -93,9 +93,14 @@ class Conforming_disks {
           {CGAL::to_double(c.nodes[k].x()), CGAL::to_double(c.nodes[k].y()), c.radii[k]});
       m_cell = std::max(m_cell, c.radii[k]);
     }
-    m_buckets.clear();  // the buckets' size may have grown: all again
-    for (std::size_t i = 0; i < m_disks.size(); ++i)
-      m_buckets.emplace(key(cell(m_disks[i].x), cell(m_disks[i].y)), i);
+    // Grids by size, each circle in that of cells as wide as the smallest power of two of the
+    // largest radius at least its own: a point meets few circles in each, however many tiny
+    // ones crowd a place. (The largest may have grown: all again.)
+    m_grids.clear();
+    for (std::size_t i = 0; i < m_disks.size(); ++i) {
+      const int size = std::clamp(int(std::ceil(std::log2(m_disks[i].r / m_cell))), -60, 0);
+      m_grids[size].emplace(key(cell(m_disks[i].x, size), cell(m_disks[i].y, size)), i);
+    }
   }
   /// whether `p` lies inside a circle by more than a rounding (1e-9 of its radius, and 16 units
   /// in the last place of its centre's coordinates: the generators of `Conforming_sites` lie on
@@ -109,9 +114,11 @@ class Conforming_disks {
   bool is_node(const Point_2& p) const {
     if (m_disks.empty()) return false;
     const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
-    const auto range = m_buckets.equal_range(key(cell(x), cell(y)));
-    for (auto it = range.first; it != range.second; ++it)
-      if (m_disks[it->second].x == x && m_disks[it->second].y == y) return true;
+    for (const auto& [size, buckets] : m_grids) {
+      const auto range = buckets.equal_range(key(cell(x, size), cell(y, size)));
+      for (auto it = range.first; it != range.second; ++it)
+        if (m_disks[it->second].x == x && m_disks[it->second].y == y) return true;
+    }
     return false;
   }
 
@@ -141,24 +148,28 @@ class Conforming_disks {
     double x, y, r;
   };
   const Disk* containing(double x, double y) const {
-    if (m_disks.empty()) return nullptr;
-    const long long i = cell(x), j = cell(y);
-    for (long long a = i - 1; a <= i + 1; ++a)
-      for (long long b = j - 1; b <= j + 1; ++b) {
-        const auto range = m_buckets.equal_range(key(a, b));
-        for (auto it = range.first; it != range.second; ++it) {
-          const Disk& d = m_disks[it->second];
-          if (std::hypot(x - d.x, y - d.y) < d.r - internal::circle_rounding(d.x, d.y, d.r))
-            return &d;
+    for (auto grid = m_grids.rbegin(); grid != m_grids.rend(); ++grid) {  // largest first
+      const auto& [size, buckets] = *grid;
+      const long long i = cell(x, size), j = cell(y, size);
+      for (long long a = i - 1; a <= i + 1; ++a)
+        for (long long b = j - 1; b <= j + 1; ++b) {
+          const auto range = buckets.equal_range(key(a, b));
+          for (auto it = range.first; it != range.second; ++it) {
+            const Disk& d = m_disks[it->second];
+            if (std::hypot(x - d.x, y - d.y) < d.r - internal::circle_rounding(d.x, d.y, d.r))
+              return &d;
+          }
         }
-      }
+    }
     return nullptr;
   }
-  long long cell(double v) const { return static_cast<long long>(std::floor(v / m_cell)); }
+  long long cell(double v, int size) const {
+    return static_cast<long long>(std::floor(v / std::ldexp(m_cell, size)));
+  }
   static long long key(long long a, long long b) { return a * 1000003LL + b; }
   std::vector<Disk> m_disks;
-  double m_cell = 0;
-  std::unordered_multimap<long long, std::size_t> m_buckets;
+  double m_cell = 0;  // the largest radius
+  std::map<int, std::unordered_multimap<long long, std::size_t>> m_grids;
 };
 
 /// \ingroup PkgCvt2Ref

@@ -556,7 +556,8 @@ def test_conforming_lines_far_from_the_origin(program, data, tmp_path):
 
 def test_a_conforming_line_near_the_boundary_gets_shorter_steps(program, tmp_path):
     """A river a seventh of a cell from the boundary: the pairs of cell-long steps reach out of
-    the domain, so the steps there are halved until they fit (all 24 were left out)."""
+    the domain, so the steps there are halved until they fit (all 24 were left out). So are the
+    steps across the boundary of a line through it."""
     import subprocess
 
     domain = tmp_path / "near.wkt"
@@ -568,6 +569,16 @@ def test_a_conforming_line_near_the_boundary_gets_shorter_steps(program, tmp_pat
     assert "left out" not in p.stderr and "circles" not in p.stderr, p.stderr
     item, _, length, _ = read_csv(csv)
     assert 8 * (1 - 1e-7) < length[item == 2].sum() / 2 < 8.5
+    # Lines through the boundary and through a hole: the steps across it are halved too, so the
+    # faces reach it (9.9 of 10 inside, and 5.76 of 6).
+    square = "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0)"
+    for wkt, inside in ((square + ")\nLINESTRING (5 -2.9, 5 13.1)\n", 10),
+                        (square + ", (4 4, 4 6, 6 6, 6 4, 4 4))\nLINESTRING (5 1, 5 9)\n", 6)):
+        domain.write_text(wkt)
+        subprocess.run([program, str(domain), "--cells", "1000", "--constraints", "conforming",
+                        "--cells-on-constraints", str(csv)], check=True, capture_output=True)
+        item, _, length, _ = read_csv(csv)
+        assert inside * (1 - 1e-7) < length[item == 2].sum() / 2 < inside + 0.5, wkt
 
 
 def test_vertices_of_the_domain_on_a_line_are_told_apart(program, data):

@@ -146,10 +146,11 @@ struct Conforming_network {
 // together) is halved, with the steps of that node, down to spacing / 16; one whose circles do
 // not cross, with no floor; the steps beside a halved one are kept within twice its length. Up
 // to 24 rounds; a pair still inside a circle after that is left (the callers count the
-// generators inside circles). With `inside` (a predicate on points), a step whose midpoint is
-// inside and a generator of whose pair is not (a line near the boundary) is halved too, down to
-// spacing / 16, which brings its pair nearer the line. `who` opens the messages.
-// \throws std::invalid_argument if `spacing` is not positive and finite, a line has fewer than
+// generators inside circles). With `inside` (a predicate on points), a step whose midpoint or an
+// end is inside and a generator of whose pair is not (a line near the boundary or through it)
+// is halved too, down to spacing / 16, which brings its pair nearer the line. `who` opens the
+// messages. \throws std::invalid_argument if `spacing` is not positive and finite, a line has fewer
+// than
 //         two points, repeats a point, is cut into too many steps, or two lines (or a line and
 //         itself) cross at a point that is a vertex of neither.
 template <class Point_2, class Inside = std::nullptr_t>
@@ -410,9 +411,11 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
       // (a prescribed pair is as close to its step as its sector is narrow)
       if (!(h > 0.01 * d) && !at_prescribed(s)) halve[k] = crossing[k] = true, clean = false;
       if constexpr (!std::is_same_v<Inside, std::nullptr_t>) {
-        // a step inside whose pair is not (the line near the boundary): lower pairs
+        // a step inside, or across the boundary, whose pair is not inside (the line near the
+        // boundary, or through it): lower pairs, nearer the line
         const Point_2 m((x(a) + x(b)) / 2, (y(a) + y(b)) / 2);
-        if (inside(m) && !(inside(net.sites[2 * k]) && inside(net.sites[2 * k + 1])))
+        if ((inside(m) || inside(a) || inside(b)) &&
+            !(inside(net.sites[2 * k]) && inside(net.sites[2 * k + 1])))
           halve[k] = true, clean = false;
       }
       for (int side = 0; side < 2; ++side) {
