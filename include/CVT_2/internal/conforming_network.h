@@ -39,9 +39,9 @@ inline double circle_rounding(double x, double y, double r) {
 // digitized onto a river's segment, a hair short of it or past it): an end of one of `lines`
 // that no other segment shares, within `tolerance` of a vertex of another segment, moves onto
 // it; one within `tolerance` of a segment's interior becomes a vertex of that segment. With
-// `every`, each vertex of a line does so, not only its ends (lines that cross at a vertex of one
-// that lies on the other but for a rounding). Segments are found through a grid of cells
-// `spacing` wide. Returns whether any point did.
+// `every`, each vertex of a line does so, not only its ends (lines that cross, or meet, at a
+// vertex of one that lies on the other but for a rounding). Segments are found through a grid of
+// cells `spacing` wide. Returns whether any point did.
 template <class Point_2>
 bool snap_ends(std::vector<std::vector<Point_2>>& lines, double spacing, double tolerance,
                bool every = false) {
@@ -228,9 +228,35 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
         throw std::invalid_argument(
             who + ": the spacing " + number_to_string(spacing) + " cuts a segment of length " +
             number_to_string(distance(line[k], line[k + 1])) + " into too many steps");
+  // Vertices of two lines a rounding apart (one line through the other's vertex, or beside it),
+  // seen as a short edge between vertices of different lines.
+  const auto vertices_apart = [&] {
+    int n = 0;
+    for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) v->id() = n++;
+    std::vector<std::size_t> line_of(std::size_t(n), in.size());
+    typename CDT::Face_handle hint;
+    for (std::size_t i = 0; i < in.size(); ++i)
+      for (const Point_2& p : in[i]) {
+        typename CDT::Locate_type lt;
+        int li;
+        hint = cdt.locate(p, lt, li, hint);
+        if (lt == CDT::VERTEX && line_of[std::size_t(hint->vertex(li)->id())] == in.size())
+          line_of[std::size_t(hint->vertex(li)->id())] = i;
+      }
+    for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e) {
+      const auto u = e->first->vertex(CDT::ccw(e->second)),
+                 w = e->first->vertex(CDT::cw(e->second));
+      const std::size_t a = line_of[std::size_t(u->id())], b = line_of[std::size_t(w->id())];
+      if (a != b && a < in.size() && b < in.size() &&
+          distance(u->point(), w->point()) < spacing / 100)
+        return true;
+    }
+    return false;
+  };
   snap_ends(in, spacing, spacing / 100);
   try {
     triangulate();
+    if (vertices_apart() && snap_ends(in, spacing, spacing / 100, true)) triangulate();
   } catch (const std::invalid_argument&) {  // a vertex of one a rounding off the other?
     if (!snap_ends(in, spacing, spacing / 100, true)) throw;
     triangulate();
