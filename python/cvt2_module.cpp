@@ -1369,11 +1369,9 @@ std::shared_ptr<Optimization> optimize(
       lineless->conforming_items = line_items;
       for (const auto& p : lineless->conforming_pairs)
         fixed.push_back(p.left), fixed.push_back(p.right);
-      if (left_out > 0)
-        out->notes.push_back(std::to_string(left_out) + " of " +
-                             std::to_string(left_out + lineless->conforming_pairs.size()) +
-                             " steps of the conforming lines have a generator outside the "
-                             "domain or lie along a constraint: left out");
+      const std::string note = CVT_2::internal::conforming_left_out_note(
+          left_out, lineless->conforming_pairs, line_items);
+      if (!note.empty()) out->notes.push_back(note);
       out->domain = lineless;
     }
     // cells= or size= (cvt2 --cells, --size): as many more drawn as make that many cells, the

@@ -300,6 +300,26 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
 
 namespace internal {
 
+// The note on the steps of conforming lines left out (`left_out` of insert_conforming_sites_2(),
+// which returned `pairs`), naming by `items` (one a line) the lines that kept none; empty if
+// none was left out.
+template <class Point_2>
+std::string conforming_left_out_note(std::size_t left_out,
+                                     const std::vector<Conforming_pair_2<Point_2>>& pairs,
+                                     const std::vector<std::int64_t>& items) {
+  if (left_out == 0) return {};
+  std::vector<bool> kept(items.size(), false);
+  for (const auto& p : pairs)
+    if (p.line < kept.size()) kept[p.line] = true;
+  std::string lost;
+  for (std::size_t i = 0; i < items.size(); ++i)
+    if (!kept[i]) lost += (lost.empty() ? "" : ", ") + std::to_string(items[i]);
+  return std::to_string(left_out) + " of " + std::to_string(left_out + pairs.size()) +
+         " steps of the conforming lines have a generator outside the domain or lie along a "
+         "constraint: left out" +
+         (lost.empty() ? "" : "; the lines of items " + lost + " lost all theirs");
+}
+
 // The note on the generators of `cdt` inside the circles of conforming lines (after an
 // optimization: those that keep_out could not keep away, and those at nodes, as a vertex of
 // the domain where a line ends on the boundary), empty if none is.

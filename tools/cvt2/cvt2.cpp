@@ -768,11 +768,9 @@ void insert_conforming_sites(const Options& o, std::size_t free_generators, CDT&
   conforming.pairs = CVT_2::insert_conforming_sites_2(
       cdt, conforming.lines, background_size(o, cells, cdt), disks, &left_out);
   for (const auto& p : conforming.pairs) fixed.push_back(p.left), fixed.push_back(p.right);
-  if (left_out > 0)
-    std::cerr
-        << "cvt2: note: " << left_out << " of " << left_out + conforming.pairs.size()
-        << " steps of the conforming lines have a generator outside the domain or lie along a "
-           "constraint: left out\n";
+  const std::string note =
+      CVT_2::internal::conforming_left_out_note(left_out, conforming.pairs, conforming.items);
+  if (!note.empty()) std::cerr << "cvt2: note: " << note << '\n';
 }
 
 // What can be checked of --top and --bottom before the work: their counts against each other,
