@@ -236,8 +236,11 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
     if (lt == CDT::EDGE) return !cdt.is_constrained({hint, li}) && hint->is_inside_domain();
     return lt == CDT::FACE && hint->is_inside_domain();
   };
+  std::vector<Point_2> fixed;  // the domain's vertices: generators that cannot move away
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    if (cdt.are_there_incident_constraints(v)) fixed.push_back(v->point());
   const auto net =
-      internal::conforming_network(lines, spacing, "conforming lines", strictly_inside);
+      internal::conforming_network(lines, spacing, "conforming lines", strictly_inside, fixed);
   std::vector<Conforming_pair_2<Point_2>> pairs;
   std::vector<Point_2> sites;
   // A step along a constraint (the line given as a barrier or slit too) has its faces already.

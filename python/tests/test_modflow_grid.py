@@ -582,12 +582,18 @@ def test_a_conforming_line_near_the_boundary_gets_shorter_steps(program, tmp_pat
     assert 8 * (1 - 1e-7) < length[item == 2].sum() / 2 < 8.5
     # Lines through the boundary and through a hole: the steps across it are halved too, so the
     # faces reach it (9.9 of 10 inside, and 5.76 of 6).
+    # And a line 0.2 of a cell from a hole's corners: the steps whose circles held a corner (a
+    # generator that cannot move) are halved (2 generators were in circles, 3.975 of 4 on faces).
     square = "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0)"
+    hole = ", (4 4, 4 6, 6 6, 6 4, 4 4))\n"
     for wkt, inside in ((square + ")\nLINESTRING (5 -2.9, 5 13.1)\n", 10),
-                        (square + ", (4 4, 4 6, 6 6, 6 4, 4 4))\nLINESTRING (5 1, 5 9)\n", 6)):
+                        (square + hole + "LINESTRING (5 1, 5 9)\n", 6),
+                        (square + hole + "LINESTRING (3 6.2, 7 6.2)\n", 4)):
         domain.write_text(wkt)
-        subprocess.run([program, str(domain), "--cells", "1000", "--constraints", "conforming",
-                        "--cells-on-constraints", str(csv)], check=True, capture_output=True)
+        p = subprocess.run([program, str(domain), "--cells", "1000", "--constraints", "conforming",
+                            "--cells-on-constraints", str(csv)], check=True, capture_output=True,
+                           text=True)
+        assert "circles" not in p.stderr, (wkt, p.stderr)
         item, _, length, _ = read_csv(csv)
         assert inside * (1 - 1e-7) < length[item == 2].sum() / 2 < inside + 0.5, wkt
 

@@ -148,15 +148,17 @@ struct Conforming_network {
 // to 24 rounds; a pair still inside a circle after that is left (the callers count the
 // generators inside circles). With `inside` (a predicate on points), a step whose midpoint or an
 // end is inside and a generator of whose pair is not (a line near the boundary or through it)
-// is halved too, down to spacing / 16, which brings its pair nearer the line. `who` opens the
-// messages. \throws std::invalid_argument if `spacing` is not positive and finite, a line has fewer
-// than
+// is halved too, down to spacing / 16, which brings its pair nearer the line; so are the steps
+// of a node whose circle holds one of `obstacles` (the domain's vertices, which cannot move)
+// elsewhere than at its centre. `who` opens the messages. \throws std::invalid_argument if
+// `spacing` is not positive and finite, a line has fewer than
 //         two points, repeats a point, is cut into too many steps, or two lines (or a line and
 //         itself) cross at a point that is a vertex of neither.
 template <class Point_2, class Inside = std::nullptr_t>
 Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Point_2>>& lines,
                                                double spacing, const std::string& who,
-                                               const Inside& inside = Inside()) {
+                                               const Inside& inside = Inside(),
+                                               const std::vector<Point_2>& obstacles = {}) {
   using K = typename CGAL::Kernel_traits<Point_2>::Kernel;
   using CDT = Cvt_triangulation_2<K>;
   using Vertex_handle = typename CDT::Vertex_handle;
@@ -462,6 +464,25 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
               }
             }
       }
+    }
+    // Fixed generators (the domain's vertices) inside a node's circle, not at its centre: the
+    // node's steps halved, which shrinks its circle.
+    for (const Point_2& f : obstacles) {
+      const double fx = x(f), fy = y(f);
+      for (const auto& [size, buckets] : grids)
+        for (long long i = cell(fx, size) - 1; i <= cell(fx, size) + 1; ++i)
+          for (long long j = cell(fy, size) - 1; j <= cell(fy, size) + 1; ++j) {
+            const auto range = buckets.equal_range(key(i, j));
+            for (auto it = range.first; it != range.second; ++it) {
+              const std::size_t v = it->second;
+              const double vx = x(net.nodes[v]), vy = y(net.nodes[v]);
+              if ((vx == fx && vy == fy) ||
+                  !(std::hypot(fx - vx, fy - vy) < r[v] - circle_rounding(vx, vy, r[v])))
+                continue;
+              clean = false;
+              for (const std::size_t t : steps_at[v]) halve[t] = true;
+            }
+          }
     }
     if (clean || round == 24) break;
     // A step no shorter than `spacing` / 16 after halving for a pair in a circle: lines closer
