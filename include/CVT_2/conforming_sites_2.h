@@ -22,7 +22,6 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
-#include <unordered_map>
 #include <vector>
 
 namespace CVT_2 {
@@ -88,19 +87,11 @@ class Conforming_disks {
  public:
   /// adds the circles of `c`
   void add(const Conforming_sites<Point_2>& c) {
-    for (std::size_t k = 0; k < c.nodes.size(); ++k) {
-      m_disks.push_back(
+    auto circles = m_grid.circles();
+    for (std::size_t k = 0; k < c.nodes.size(); ++k)
+      circles.push_back(
           {CGAL::to_double(c.nodes[k].x()), CGAL::to_double(c.nodes[k].y()), c.radii[k]});
-      m_cell = std::max(m_cell, c.radii[k]);
-    }
-    // Grids by size, each circle in that of cells as wide as the smallest power of two of the
-    // largest radius at least its own: a point meets few circles in each, however many tiny
-    // ones crowd a place. (The largest may have grown: all again.)
-    m_grids.clear();
-    for (std::size_t i = 0; i < m_disks.size(); ++i) {
-      const int size = std::clamp(int(std::ceil(std::log2(m_disks[i].r / m_cell))), -60, 0);
-      m_grids[size].emplace(key(cell(m_disks[i].x, size), cell(m_disks[i].y, size)), i);
-    }
+    m_grid.assign(std::move(circles));  // the largest radius may have grown: all again
   }
   /// whether `p` lies inside a circle by more than a rounding (1e-9 of its radius, and 16 units
   /// in the last place of its centre's coordinates: the generators of `Conforming_sites` lie on
@@ -108,18 +99,14 @@ class Conforming_disks {
   bool contains(const Point_2& p) const {
     return containing(CGAL::to_double(p.x()), CGAL::to_double(p.y())) != nullptr;
   }
-  bool empty() const { return m_disks.empty(); }  ///< whether there is no circle
+  bool empty() const { return m_grid.circles().empty(); }  ///< whether there is no circle
   /// whether `p` is the centre of a circle: a node of a line (a vertex of the domain where a
   /// line ends on the boundary, say)
   bool is_node(const Point_2& p) const {
-    if (m_disks.empty()) return false;
     const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
-    for (const auto& [size, buckets] : m_grids) {
-      const auto range = buckets.equal_range(key(cell(x, size), cell(y, size)));
-      for (auto it = range.first; it != range.second; ++it)
-        if (m_disks[it->second].x == x && m_disks[it->second].y == y) return true;
-    }
-    return false;
+    return m_grid.any_holding(x, y, [&](std::size_t i) {
+      return m_grid.circles()[i].x == x && m_grid.circles()[i].y == y;
+    });
   }
 
   /// Where a free generator that moves from `from` toward `to` may go, so that none enters a
@@ -144,32 +131,17 @@ class Conforming_disks {
   }
 
  private:
-  struct Disk {
-    double x, y, r;
-  };
+  using Disk = internal::Circle_grid::Circle;
+  // the first circle that holds (x, y), the largest first, or null
   const Disk* containing(double x, double y) const {
-    for (auto grid = m_grids.rbegin(); grid != m_grids.rend(); ++grid) {  // largest first
-      const auto& [size, buckets] = *grid;
-      const long long i = cell(x, size), j = cell(y, size);
-      for (long long a = i - 1; a <= i + 1; ++a)
-        for (long long b = j - 1; b <= j + 1; ++b) {
-          const auto range = buckets.equal_range(key(a, b));
-          for (auto it = range.first; it != range.second; ++it) {
-            const Disk& d = m_disks[it->second];
-            if (std::hypot(x - d.x, y - d.y) < d.r - internal::circle_rounding(d.x, d.y, d.r))
-              return &d;
-          }
-        }
-    }
-    return nullptr;
+    const Disk* found = nullptr;
+    m_grid.any_holding(x, y, [&](std::size_t i) {
+      found = &m_grid.circles()[i];
+      return true;
+    });
+    return found;
   }
-  long long cell(double v, int size) const {
-    return static_cast<long long>(std::floor(v / std::ldexp(m_cell, size)));
-  }
-  static long long key(long long a, long long b) { return a * 1000003LL + b; }
-  std::vector<Disk> m_disks;
-  double m_cell = 0;  // the largest radius
-  std::map<int, std::unordered_multimap<long long, std::size_t>> m_grids;
+  internal::Circle_grid m_grid;
 };
 
 /// \ingroup PkgCvt2Ref

@@ -35,6 +35,58 @@ inline double circle_rounding(double x, double y, double r) {
   return 1e-9 * r + std::ldexp(std::max(std::abs(x), std::abs(y)), -48);
 }
 
+// Circles found by the points they hold by more than circle_rounding(): in grids by size, each
+// circle in that of cells as wide as the smallest power of two of the largest radius at least
+// its own, so that a point meets few circles in each, however many tiny ones crowd a place.
+class Circle_grid {
+ public:
+  struct Circle {
+    double x, y, r;
+  };
+  // Holds `circles` (any before gone: the largest radius sets the cells).
+  void assign(std::vector<Circle> circles) {
+    m_circles = std::move(circles);
+    m_largest = 0;
+    for (const Circle& c : m_circles) m_largest = std::max(m_largest, c.r);
+    m_grids.clear();
+    for (std::size_t i = 0; i < m_circles.size(); ++i) {
+      const Circle& c = m_circles[i];
+      const int size = std::clamp(int(std::ceil(std::log2(c.r / m_largest))), -60, 0);
+      m_grids[size].emplace(key(cell(c.x, size), cell(c.y, size)), i);
+    }
+  }
+  const std::vector<Circle>& circles() const { return m_circles; }
+  // Calls f(i) for each circle i that holds (x, y), the largest grids first, until f returns
+  // true; returns whether one did.
+  template <class F>
+  bool any_holding(double x, double y, F f) const {
+    for (auto grid = m_grids.rbegin(); grid != m_grids.rend(); ++grid) {
+      const auto& [size, buckets] = *grid;
+      const long long i = cell(x, size), j = cell(y, size);
+      for (long long a = i - 1; a <= i + 1; ++a)
+        for (long long b = j - 1; b <= j + 1; ++b) {
+          const auto range = buckets.equal_range(key(a, b));
+          for (auto it = range.first; it != range.second; ++it) {
+            const Circle& c = m_circles[it->second];
+            if (std::hypot(x - c.x, y - c.y) < c.r - circle_rounding(c.x, c.y, c.r) &&
+                f(it->second))
+              return true;
+          }
+        }
+    }
+    return false;
+  }
+
+ private:
+  long long cell(double v, int size) const {
+    return static_cast<long long>(std::floor(v / std::ldexp(m_largest, size)));
+  }
+  static long long key(long long a, long long b) { return a * 1000003LL + b; }
+  std::vector<Circle> m_circles;
+  double m_largest = 0;
+  std::map<int, std::unordered_multimap<long long, std::size_t>> m_grids;
+};
+
 // Ends of lines drawn to meet another line but off it by a rounding (a tributary's end
 // digitized onto a river's segment, a hair short of it or past it): an end of one of `lines`
 // that no other segment shares, within `tolerance` of a vertex of another segment, moves onto
@@ -410,21 +462,10 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
     // another circle, and the steps of that circle's node.
     net.sites.assign(2 * steps.size(), Point_2());
     std::vector<bool> halve(steps.size(), false), crossing(steps.size(), false);
-    // The circles in grids by size, each circle in the grid of cells as wide as the smallest
-    // power of two (times the spacing) at least its radius: a site meets the circles of few
-    // cells in each, however many tiny circles crowd a place.
-    const auto size_class = [&](double radius) {
-      return std::clamp(int(std::ceil(std::log2(radius / spacing))), -60, 4);
-    };
-    std::map<int, std::unordered_multimap<long long, std::size_t>> grids;
-    const auto key = [](long long i, long long j) { return i * 1000003LL + j; };
-    const auto cell = [&](double c, int size) {
-      return (long long)std::floor(c / std::ldexp(spacing, size));
-    };
-    for (std::size_t v = 0; v < n; ++v) {
-      const int c = size_class(r[v]);
-      grids[c].emplace(key(cell(x(net.nodes[v]), c), cell(y(net.nodes[v]), c)), v);
-    }
+    std::vector<Circle_grid::Circle> circles;
+    for (std::size_t v = 0; v < n; ++v) circles.push_back({x(net.nodes[v]), y(net.nodes[v]), r[v]});
+    Circle_grid grid;
+    grid.assign(std::move(circles));
     bool clean = true;
     for (std::size_t k = 0; k < steps.size(); ++k) {
       const Step_at& s = steps[k];
@@ -446,44 +487,26 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
             !(inside(net.sites[2 * k]) && inside(net.sites[2 * k + 1])))
           halve[k] = true, clean = false;
       }
-      for (int side = 0; side < 2; ++side) {
-        const double sx = x(net.sites[2 * k + side]), sy = y(net.sites[2 * k + side]);
-        for (const auto& [size, buckets] : grids)
-          for (long long i = cell(sx, size) - 1; i <= cell(sx, size) + 1; ++i)
-            for (long long j = cell(sy, size) - 1; j <= cell(sy, size) + 1; ++j) {
-              const auto range = buckets.equal_range(key(i, j));
-              for (auto it = range.first; it != range.second; ++it) {
-                const std::size_t v = it->second;
-                const double vx = x(net.nodes[v]), vy = y(net.nodes[v]);
-                if (v == s.p || v == s.q ||
-                    !(std::hypot(sx - vx, sy - vy) < r[v] - circle_rounding(vx, vy, r[v])))
-                  continue;
-                clean = false;
-                halve[k] = true;
-                for (const std::size_t t : steps_at[v]) halve[t] = true;
-              }
-            }
-      }
+      for (int side = 0; side < 2; ++side)
+        grid.any_holding(x(net.sites[2 * k + side]), y(net.sites[2 * k + side]), [&](auto v) {
+          if (v != s.p && v != s.q) {
+            clean = false;
+            halve[k] = true;
+            for (const std::size_t t : steps_at[v]) halve[t] = true;
+          }
+          return false;
+        });
     }
     // Fixed generators (the domain's vertices) inside a node's circle, not at its centre: the
     // node's steps halved, which shrinks its circle.
-    for (const Point_2& f : obstacles) {
-      const double fx = x(f), fy = y(f);
-      for (const auto& [size, buckets] : grids)
-        for (long long i = cell(fx, size) - 1; i <= cell(fx, size) + 1; ++i)
-          for (long long j = cell(fy, size) - 1; j <= cell(fy, size) + 1; ++j) {
-            const auto range = buckets.equal_range(key(i, j));
-            for (auto it = range.first; it != range.second; ++it) {
-              const std::size_t v = it->second;
-              const double vx = x(net.nodes[v]), vy = y(net.nodes[v]);
-              if ((vx == fx && vy == fy) ||
-                  !(std::hypot(fx - vx, fy - vy) < r[v] - circle_rounding(vx, vy, r[v])))
-                continue;
-              clean = false;
-              for (const std::size_t t : steps_at[v]) halve[t] = true;
-            }
-          }
-    }
+    for (const Point_2& f : obstacles)
+      grid.any_holding(x(f), y(f), [&](auto v) {
+        if (net.nodes[v] != f) {
+          clean = false;
+          for (const std::size_t t : steps_at[v]) halve[t] = true;
+        }
+        return false;
+      });
     if (clean || round == 24) break;
     // A step no shorter than `spacing` / 16 after halving for a pair in a circle: lines closer
     // than that, or a corner that sharp near its apex, keep their pairs inside circles (the
