@@ -275,6 +275,15 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
 
 namespace internal {
 
+// The steps among `pairs` (those of insert_conforming_sites_2(), which lists a part that lines
+// share for each): each pair of generators once.
+template <class Point_2>
+std::size_t number_of_steps(const std::vector<Conforming_pair_2<Point_2>>& pairs) {
+  std::set<std::pair<Point_2, Point_2>> steps;
+  for (const auto& p : pairs) steps.insert(std::minmax(p.left, p.right));
+  return steps.size();
+}
+
 // The note on the steps of conforming lines left out (`left_out` of insert_conforming_sites_2(),
 // which returned `pairs`), naming by `items` (one a line) the lines that kept none; empty if
 // none was left out.
@@ -289,7 +298,7 @@ std::string conforming_left_out_note(std::size_t left_out,
   std::string lost;
   for (std::size_t i = 0; i < items.size(); ++i)
     if (!kept[i]) lost += (lost.empty() ? "" : ", ") + std::to_string(items[i]);
-  return std::to_string(left_out) + " of " + std::to_string(left_out + pairs.size()) +
+  return std::to_string(left_out) + " of " + std::to_string(left_out + number_of_steps(pairs)) +
          " steps of the conforming lines have a generator outside the domain or lie along a "
          "constraint: left out" +
          (lost.empty() ? "" : "; the lines of items " + lost + " lost all theirs");

@@ -931,7 +931,7 @@ int run(const Options& o) {
   if (counted) {
     const double wanted = cells_wanted();
     // (the conforming lines' generators: two a step, a step for each of their segments at least)
-    const std::size_t paired = 2 * conforming.pairs.size();
+    const std::size_t paired = 2 * CVT_2::internal::number_of_steps(conforming.pairs);
     if (wanted < double(present))
       throw Usage_error(
           std::string(o.cells ? "--cells" : "--size") + " asks for " +
