@@ -483,8 +483,8 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
         // a step inside, or across the boundary, whose pair is not inside (the line near the
         // boundary, or through it): lower pairs, nearer the line
         const Point_2 m((x(a) + x(b)) / 2, (y(a) + y(b)) / 2);
-        if ((inside(m) || inside(a) || inside(b)) &&
-            !(inside(net.sites[2 * k]) && inside(net.sites[2 * k + 1])))
+        if (!(inside(net.sites[2 * k]) && inside(net.sites[2 * k + 1])) &&
+            (inside(m) || inside(a) || inside(b)))
           halve[k] = true, clean = false;
       }
       for (int side = 0; side < 2; ++side)
