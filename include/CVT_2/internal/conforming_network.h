@@ -95,8 +95,8 @@ class Circle_grid {
 // vertex of one that lies on the other but for a rounding). Segments are found through a grid of
 // cells `spacing` wide. Returns whether any point did.
 template <class Point_2>
-bool snap_ends(std::vector<std::vector<Point_2>>& lines, double spacing, double tolerance,
-               bool every = false) {
+bool snap_to_other_lines(std::vector<std::vector<Point_2>>& lines, double spacing, double tolerance,
+                         bool every = false) {
   const auto x = [](const Point_2& p) { return CGAL::to_double(p.x()); };
   const auto y = [](const Point_2& p) { return CGAL::to_double(p.y()); };
   const auto cell = [&](double c) { return (long long)std::floor(c / spacing); };
@@ -276,7 +276,8 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
       }
     }
   };
-  for (const auto& line : in)  // before snap_ends() samples them (it only shortens segments)
+  for (const auto& line :
+       in)  // before snap_to_other_lines() samples them (it only shortens segments)
     for (std::size_t k = 0; k + 1 < line.size(); ++k)
       if (!(distance(line[k], line[k + 1]) / spacing < 1e8))
         throw std::invalid_argument(
@@ -307,12 +308,12 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
     }
     return false;
   };
-  snap_ends(in, spacing, spacing / 100);
+  snap_to_other_lines(in, spacing, spacing / 100);
   try {
     triangulate();
-    if (vertices_apart() && snap_ends(in, spacing, spacing / 100, true)) triangulate();
+    if (vertices_apart() && snap_to_other_lines(in, spacing, spacing / 100, true)) triangulate();
   } catch (const std::invalid_argument&) {  // a vertex of one a rounding off the other?
-    if (!snap_ends(in, spacing, spacing / 100, true)) throw;
+    if (!snap_to_other_lines(in, spacing, spacing / 100, true)) throw;
     triangulate();
   }
   Conforming_network<Point_2> net;
