@@ -27,6 +27,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -119,7 +120,7 @@ int count(const std::string& option, const std::string& text) {
 int main(int argc, char* argv[]) {
   std::vector<std::string> files;
   std::string cells_out;
-  int rings = -1, iterations = 0;
+  int rings = -1, iterations = -1;  // -1: not given
   bool verify = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -148,6 +149,27 @@ int main(int argc, char* argv[]) {
     std::cerr << "usage: bvd_edit DOMAIN POINTS EDITS [--cells-out FILE] [--relax-rings K "
                  "--relax-iterations M] [--verify]\n";
     return EXIT_FAILURE;
+  }
+  if ((rings >= 0) != (iterations >= 0)) {
+    std::cerr << "bvd_edit: --relax-rings and --relax-iterations go together\n";
+    return EXIT_FAILURE;
+  }
+  if (!cells_out.empty()) {  // what would stop the output, found before the work
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const fs::path out(cells_out);
+    const fs::path folder = out.has_parent_path() ? out.parent_path() : fs::path(".");
+    std::string problem;
+    for (const std::string& input : files)
+      if (fs::equivalent(out, input, error)) problem = "is the input " + input;
+    if (fs::is_directory(out, error))
+      problem = "is a directory";
+    else if (!fs::is_directory(folder, error))
+      problem = "is in no directory";
+    if (!problem.empty()) {
+      std::cerr << "bvd_edit: --cells-out " << cells_out << ' ' << problem << '\n';
+      return EXIT_FAILURE;
+    }
   }
   try {
     const std::vector<Edit> edits = read_edits(files[2]);  // a bad line fails before any work
@@ -191,7 +213,7 @@ int main(int argc, char* argv[]) {
                   << ": the tags after this edit are not those of a rebuild\n";
         return EXIT_FAILURE;
       }
-      if (rings >= 0 && iterations > 0) {  // a local relaxation: the tags stay current
+      if (iterations > 0) {  // a local relaxation: the tags stay current
         std::vector<Point> changed;
         for (const auto v : report.changed_cells) changed.push_back(v->point());
         CVT_2::lloyd_optimize_2(cdt, CVT_2::parameters::number_of_iterations(iterations)

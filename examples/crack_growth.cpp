@@ -22,6 +22,8 @@
 #include <CVT_2/natural_neighbor_coordinates_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 
+#include "example_arguments.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
@@ -71,9 +73,10 @@ struct Opening {
 
 int main(int argc, char* argv[]) {
   try {
-    const std::size_t n = argc > 1 ? std::stoul(argv[1]) : 100000;
-    const int steps = argc > 2 ? std::stoi(argv[2]) : 60;
-    const std::string out = argc > 3 ? argv[3] : "crack_growth.txt";
+    const Example_arguments args(argc, argv, "crack_growth [N] [STEPS] [OUT.txt]", 3);
+    const std::size_t n = args.count(0, "N", 100000);
+    const int steps = int(args.count(1, "STEPS", 60));
+    const std::string out = args.text(2, "crack_growth.txt");
     CVT_2::IO::Poly_data<Point> poly;
     poly.vertices = {Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1)};
     poly.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
