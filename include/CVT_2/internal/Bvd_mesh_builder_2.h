@@ -196,14 +196,31 @@ Bvd_mesh_builder_2<Diagram>::Bvd_mesh_builder_2(Mesh& mesh, const Diagram& bvd, 
   pair_constraint_sides();
   // Cells a few ulps of their coordinates wide (a small domain far from the origin), or whose
   // squared lengths overflow (coordinates beyond about 1e154), can round to fewer than three
-  // vertices: an empty polygon in every file, which no reader takes.
+  // vertices: an empty polygon in every file, which no reader takes. A cell on a constraint
+  // can keep three and lose a lobe: its polygons then cover less than its area, leaving a gap.
+  const auto cannot_hold = [&](std::size_t k, const std::string& what) {
+    return Domain_error("the cell of generator " + to_string(m_generators[k]->point()) + " " +
+                        what +
+                        ": double precision cannot hold the cells at their "
+                        "coordinates (cells a few ulps wide: move the domain nearer the origin "
+                        "or use fewer cells; squared lengths beyond 1e308: scale it down)");
+  };
   for (std::size_t k = 0; k < m_generators.size(); ++k)
     if (m_offsets[k + 1] - m_offsets[k] < 3)
-      throw Domain_error("the cell of generator " + to_string(m_generators[k]->point()) +
-                         " rounds to " + std::to_string(m_offsets[k + 1] - m_offsets[k]) +
-                         " vertices: double precision cannot hold the cells at their "
-                         "coordinates (cells a few ulps wide: move the domain nearer the origin "
-                         "or use fewer cells; squared lengths beyond 1e308: scale it down)");
+      throw cannot_hold(
+          k, "rounds to " + std::to_string(m_offsets[k + 1] - m_offsets[k]) + " vertices");
+  for (std::size_t k = 0; k < m_generators.size(); ++k) {
+    if (!m_constrained[k]) continue;  // polygons() keeps one ring's area: it drops no lobe
+    FT lobes = 0, scale = 0;          // (a fan's rounding: some 2^-52 of the sum of its parts)
+    for (const auto& ring : m_mesh.polygons(k))
+      for (std::size_t j = 1; j + 1 < ring.size(); ++j) {
+        const FT part = CGAL::area(m_points[ring[0]], m_points[ring[j]], m_points[ring[j + 1]]);
+        lobes += part, scale += CGAL::abs(part);
+      }
+    const FT area = m_mesh.area(k);
+    if (CGAL::abs(lobes - area) > CGAL::abs(area) * 0x1.0p-20 + scale * 0x1.0p-40)
+      throw cannot_hold(k, "loses a part to rounding");
+  }
 }
 
 // Cells are numbered in the order the cells pass visits them, circumcenters of the faces that
