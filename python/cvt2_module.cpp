@@ -775,6 +775,42 @@ Array random_points(const Domain& domain, std::int64_t n, std::uint64_t seed,
 
 // --- the diagram -------------------------------------------------------------------------------
 
+// The input segments of a domain whose vertices a ConstraintEditor moves, as pieces. Outputs
+// name a segment by walking from one end to the other along the constrained edges on it
+// (internal::for_each_edge_on_input_segments()); a move of an end, or of a vertex inserted on
+// it (a crack's end, a generator a moved wall passed through), bends it there, and the walk
+// would stop. So before a move the pieces through p or ending at p are cut at the vertices on
+// them, and each piece's ends then follow the moves.
+struct Segment_pieces {
+  std::vector<Point_2> ends;          // two a piece
+  std::vector<std::int64_t> segment;  // the input segment of each piece
+
+  explicit Segment_pieces(const std::vector<Point_2>& segment_ends) : ends(segment_ends) {
+    for (std::size_t i = 0; i < ends.size() / 2; ++i) segment.push_back(std::int64_t(i));
+  }
+
+  void split_at(const CDT& cdt, const Point_2& p) {
+    std::vector<Point_2> cut;
+    std::vector<std::int64_t> of;
+    for (std::size_t k = 0; k < segment.size(); ++k) {
+      const Point_2 a = ends[2 * k], b = ends[2 * k + 1];
+      std::vector<Point_2> chain{a};
+      if (a == p || b == p ||
+          (CGAL::collinear(a, b, p) && CGAL::collinear_are_strictly_ordered_along_line(a, p, b)))
+        CVT_2::internal::for_each_edge_on_input_segments(
+            cdt, std::vector<Point_2>{a, b},
+            [&](CDT::Vertex_handle, CDT::Vertex_handle w, std::size_t) {
+              chain.push_back(w->point());
+            });
+      if (chain.back() != b) chain.assign({a, b});  // not walked to its end: left as it is
+      for (std::size_t j = 0; j + 1 < chain.size(); ++j)
+        cut.push_back(chain[j]), cut.push_back(chain[j + 1]), of.push_back(segment[k]);
+    }
+    ends.swap(cut);
+    segment.swap(of);
+  }
+};
+
 // A bounded Voronoi diagram as a mesh, with the arrays Python reads, computed once. It keeps
 // the triangulation, which the writers read through the mesh's generators.
 struct Diagram {
@@ -788,14 +824,17 @@ struct Diagram {
   std::vector<std::int64_t> ridge_edit_constraint;  // a ConstraintEditor's snapshots only
   std::vector<std::string> notes;                   // the points moved onto the boundary
   std::optional<std::vector<Point_2>> given;  // the points of bounded_voronoi(), in their order
-  // The input segments' ends where they are: the domain's, or as a ConstraintEditor moved them.
+  // The input segments' ends where they are: the domain's; or, as a ConstraintEditor moved
+  // them, the ends of their pieces (Segment_pieces) and the segment of each.
   std::vector<Point_2> segment_ends;
+  std::vector<std::int64_t> segment_of_piece;  // empty: the pieces are the segments
 
   Diagram(std::shared_ptr<CDT> t, std::shared_ptr<const Domain> d, unsigned threads,
-          const std::vector<Point_2>* moved_ends = nullptr)
+          const Segment_pieces* moved = nullptr)
       : cdt(std::move(t)),
         domain(std::move(d)),
-        segment_ends(moved_ends ? *moved_ends : domain->segment_ends) {
+        segment_ends(moved ? moved->ends : domain->segment_ends),
+        segment_of_piece(moved ? moved->segment : std::vector<std::int64_t>()) {
     bvd = std::make_unique<BVD>(*cdt);
     mesh = std::make_unique<Mesh>(*bvd, threads);
     const std::vector<std::int64_t> input = input_segments();
@@ -862,14 +901,18 @@ struct Diagram {
 
   // For each constraint of the mesh, the input segment it lies on, and that segment's item.
   std::vector<std::int64_t> input_segments() const {
-    return CVT_2::internal::input_segments_of_constraints(*cdt, *mesh, segment_ends);
+    std::vector<std::int64_t> input =
+        CVT_2::internal::input_segments_of_constraints(*cdt, *mesh, segment_ends);
+    if (!segment_of_piece.empty())
+      for (std::int64_t& i : input)
+        if (i >= 0) i = segment_of_piece[std::size_t(i)];
+    return input;
   }
   std::vector<std::int64_t> input_items() const {
-    const struct {
-      const std::vector<Point_2>& ends;
-      const std::vector<std::int64_t>& items;
-    } segments{segment_ends, domain->segment_items};
-    return CVT_2::IO::constraint_items(*cdt, *mesh, segments);
+    std::vector<std::int64_t> items = input_segments();
+    for (std::int64_t& i : items)
+      if (i >= 0) i = domain->segment_items[std::size_t(i)];
+    return items;
   }
 
   // The mesh as a simulation grid: inner constraints barriers or slits, by the writer's choice
@@ -981,13 +1024,13 @@ struct Editing {
   std::shared_ptr<CDT> cdt;
   std::unique_ptr<BVD> bvd;
   std::unique_ptr<CVT_2::Constraint_editor_2<CDT>> editor;
-  std::vector<Point_2> given;         // where the points given are, as relax() and move() move them
-  std::vector<Point_2> segment_ends;  // the domain's input segments', as move() moves them
+  std::vector<Point_2> given;  // where the points given are, as relax() and move() move them
+  Segment_pieces segments;     // the domain's input segments, as move() moves them
   std::vector<std::string> notes;
 
   Editing(const std::shared_ptr<const Domain>& d, py::handle points_object,
           std::optional<double> boundary_tolerance)
-      : domain(d), segment_ends(d->segment_ends) {
+      : domain(d), segments(d->segment_ends) {
     cdt = domain->triangulation();
     notes = insert_points(*cdt, to_points(points_object, "points"), "points", boundary_tolerance,
                           &given);
@@ -1100,10 +1143,11 @@ struct Editing {
     if (lt != CDT::VERTEX)
       throw CVT_2::Domain_error("move_constrained_vertex: no vertex at " +
                                 CVT_2::internal::to_string(p));
+    segments.split_at(*cdt, p);  // a segment bends at p, or at a vertex inserted on it
     // the vertex where it went (a new one if it was removed and inserted there)
     const Point_2 now = editor->move_constrained_vertex(f->vertex(li), q)->point();
     follow(given, {p}, {now});
-    follow(segment_ends, {p}, {now});
+    follow(segments.ends, {p}, {now});
     return report();
   }
   py::dict remove(std::int64_t c) {
@@ -1119,8 +1163,9 @@ struct Editing {
   std::shared_ptr<Diagram> diagram(std::int64_t threads) const {
     const unsigned t = unsigned(checked_count(threads, "threads"));
     auto copy = std::make_shared<CDT>(*cdt);
-    auto d = std::make_shared<Diagram>(std::move(copy), domain, t, &segment_ends);
+    auto d = std::make_shared<Diagram>(std::move(copy), domain, t, &segments);
     d->given = given;
+    d->notes = notes;  // the points moved onto the boundary, as bounded_voronoi() says
     // the constraints inserted here by their ids, walked as the input segments are
     std::vector<Point_2> ends;
     std::vector<std::int64_t> ids;
@@ -1418,12 +1463,14 @@ std::shared_ptr<Optimization> optimize(
           CVT_2::insert_generators_2(*cdt,
                                      CVT_2::draw_outside_disks_2(disks, given.size(), seed, draw));
         out->redistributed = true;
-        out->notes.push_back("the " + std::to_string(given.size()) + " generators given " +
+        out->notes.push_back("the " + std::to_string(given.size()) +
+                             " free generators (the points given and the domain's own) " +
                              (redistribute == "auto"
                                   ? "do not follow the density (their cells' areas do not "
                                     "shrink as it grows)"
                                   : "are redistributed (redistribute=True)") +
-                             ": replaced by as many drawn from it (redistribute=False keeps them)");
+                             ": replaced by as many drawn from the density (redistribute=False "
+                             "keeps them)");
       }
     }
     if (to_draw > 0)
@@ -1462,13 +1509,9 @@ std::shared_ptr<Optimization> optimize(
       const auto it = row.find(&*v);
       out->input_index.push_back(it == row.end() ? -1 : it->second);
     });
-    if (choice.kind == Density_choice::LIPSCHITZ)
-      out->density_response =
-          CVT_2::density_response_2(bvd, CVT_2::make_sizing_field_density_2<K>(*sizing));
-    else if (choice.kind == Density_choice::CALLABLE)
-      out->density_response =
-          CVT_2::density_response_2(bvd, Python_density{choice.function, false});
-    const std::string note = CVT_2::internal::density_response_note(out->density_response);
+    out->density_response = out->result.density_response.slope;
+    const std::string note = CVT_2::internal::density_response_note(
+        out->result.density_response, out->redistributed || points.empty());
     if (!note.empty()) out->notes.push_back(note);
     const std::string inside = CVT_2::internal::conforming_disks_note(*cdt, disks);
     if (!inside.empty()) out->notes.push_back(inside);  // as cvt2 says it

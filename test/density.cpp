@@ -7,6 +7,8 @@
 #include <CVT_2/Uniform_density_2.h>
 #include <CVT_2/density_response_2.h>
 #include <CVT_2/insert_generators_2.h>
+#include <CVT_2/lbfgs_optimize_2.h>
+#include <CVT_2/lloyd_optimize_2.h>
 
 #include <algorithm>
 #include <array>
@@ -572,46 +574,59 @@ TEST_CASE("the boundary sizing rejects a bad k or size, no segment, degenerate s
   CHECK_THROWS_AS(Sizing(not_finite, 0.1, 1.0), CVT_2::Domain_error);
 }
 
+namespace {
+
+// Generators on grids of the unit square, whose free cells' areas are known: squares of side
+// 1/m, and of side 1/(2m) on the right half if `finer_right`.
+std::vector<Point> square_grid(int m, bool finer_right) {
+  std::vector<Point> p;
+  for (int i = 0; i < 2 * m; ++i)
+    for (int j = 0; j < 2 * m; ++j) {
+      const double x = (i + 0.5) / (2 * m), y = (j + 0.5) / (2 * m);
+      if (x > 0.5 && finer_right)
+        p.emplace_back(x, y);  // a fine cell
+      else if (i % 2 == 0 && j % 2 == 0)
+        p.emplace_back(x + 0.25 / m, y + 0.25 / m);  // a coarse one, of four fine ones' place
+    }
+  return p;
+}
+
+}  // namespace
+
 TEST_CASE("the density response is the slope of log(area) on log(density): 0, -1/2, NaN, errors",
           "[density]") {
-  // Generators on grids of the unit square, whose free cells' areas are known: squares of
-  // side 1/m, and of side 1/(2m) on the right half.
-  const auto grid = [](int m, bool finer_right) {
-    std::vector<Point> p;
-    for (int i = 0; i < 2 * m; ++i)
-      for (int j = 0; j < 2 * m; ++j) {
-        const double x = (i + 0.5) / (2 * m), y = (j + 0.5) / (2 * m);
-        if (x > 0.5 && finer_right)
-          p.emplace_back(x, y);  // a fine cell
-        else if (i % 2 == 0 && j % 2 == 0)
-          p.emplace_back(x + 0.25 / m, y + 0.25 / m);  // a coarse one, of four fine ones' place
-      }
-    return p;
-  };
   const auto response = [](const std::vector<Point>& points, const auto& rho) {
     Domain d;
     load_square(d);
     CVT_2::insert_generators_2(d.cdt, points);
-    return CVT_2::density_response_2(Bvd(d.cdt), rho);
+    return CVT_2::density_response_2(Bvd(d.cdt), rho).slope;
   };
   const auto step = [](const Point& p) { return p.x() > 0.5 ? 16.0 : 1.0; };
   // Cells of one size: no response, whatever the density.
-  CHECK(std::abs(response(grid(10, false), step)) < 0.02);
-  CHECK(std::abs(response(grid(10, false), [](const Point& p) { return std::exp(3 * p.x()); })) <
-        0.02);
+  CHECK(std::abs(response(square_grid(10, false), step)) < 0.02);
+  CHECK(std::abs(response(square_grid(10, false),
+                          [](const Point& p) { return std::exp(3 * p.x()); })) < 0.02);
   // A quarter of the area where the density is 16 times larger: -1/2, a CVT's response (to
   // the cells along the seam, which are neither: about 1/m of them).
-  CHECK(response(grid(20, true), step) == Approx(-0.5).margin(0.02));
+  CHECK(response(square_grid(20, true), step) == Approx(-0.5).margin(0.02));
   // The batch member is used, and gives the same.
-  CHECK(response(grid(20, true), CVT_2::make_sizing_field_density_2<K>([](const Point& p) {
+  CHECK(response(square_grid(20, true), CVT_2::make_sizing_field_density_2<K>([](const Point& p) {
                    return p.x() > 0.5 ? 0.5 : 1.0;
                  })) == Approx(-0.5).margin(0.02));
   // Too little variation, or too few cells, to measure.
-  CHECK(std::isnan(response(grid(10, true), [](const Point& p) { return 1 + 0.5 * p.x(); })));
+  CHECK(
+      std::isnan(response(square_grid(10, true), [](const Point& p) { return 1 + 0.5 * p.x(); })));
   CHECK(std::isnan(response({Point(0.3, 0.3), Point(0.6, 0.6)}, step)));
+  // A bump narrower than the cells, on a generator: the cells of one size are its optimum's
+  // (the bump's mass sits at a generator), and only the cells over which the density is about
+  // constant take part, so there is nothing to measure (counting the generator's cell gave 0).
+  const auto bump = [](const Point& p) {
+    return 1 + 1e4 * std::exp(-CGAL::squared_distance(p, Point(0.45, 0.45)) / 1e-4);
+  };
+  CHECK(std::isnan(response(square_grid(10, false), bump)));
   // A bad value names its point.
   CHECK_THROWS_WITH(
-      response(grid(2, false), [](const Point& p) { return p.x() > 0.5 ? -1.0 : 1.0; }),
+      response(square_grid(4, false), [](const Point& p) { return p.x() > 0.5 ? -1.0 : 1.0; }),
       Catch::Contains("the density is -1") && Catch::Contains("at ("));
   // Points follow the density for a start when the response is at most -1/4, or not defined.
   const auto follows = [](const std::vector<Point>& points, const auto& rho) {
@@ -620,9 +635,11 @@ TEST_CASE("the density response is the slope of log(area) on log(density): 0, -1
     CVT_2::insert_generators_2(d.cdt, points);
     return CVT_2::follows_density_2(Bvd(d.cdt), rho);
   };
-  CHECK_FALSE(follows(grid(10, false), step));
-  CHECK(follows(grid(20, true), step));
-  CHECK(follows(grid(10, true), [](const Point& p) { return 1 + 0.5 * p.x(); }));
+  CHECK_FALSE(follows(square_grid(20, false), step));  // 324 cells unclipped
+  CHECK(follows(square_grid(10, false), step));        // 64: too few to judge
+  CHECK(follows(square_grid(20, true), step));
+  CHECK(follows(square_grid(10, true), [](const Point& p) { return 1 + 0.5 * p.x(); }));
+  CHECK(follows(square_grid(10, false), bump));
   // What a redistribution replaces: every free generator but the fixed ones, if they do not
   // follow the density or always; none if they do; a fixed point that is not a generator named.
   const auto to_redistribute = [&step](const std::vector<Point>& points,
@@ -636,7 +653,7 @@ TEST_CASE("the density response is the slope of log(area) on log(density): 0, -1
     CHECK(out.size() == given.size());
     return out;
   };
-  const std::vector<Point> uniform = grid(10, false), drawn = grid(20, true);
+  const std::vector<Point> uniform = square_grid(20, false), drawn = square_grid(20, true);
   const std::vector<Point> fixed{uniform[7], uniform[42]};
   const std::set<Point> replaced = to_redistribute(uniform, fixed, false);
   CHECK(replaced.size() == uniform.size() - 2);
@@ -647,9 +664,55 @@ TEST_CASE("the density response is the slope of log(area) on log(density): 0, -1
   CHECK(to_redistribute(uniform, {Point(0, 0)}, false).size() == uniform.size());  // a corner
   CHECK_THROWS_WITH(to_redistribute(uniform, {Point(0.123, 0.5)}, true),
                     Catch::Contains("fixed_points") && Catch::Contains("(0.123, 0.5)"));
-  // The note speaks up only for a response above -1/4.
-  CHECK(CVT_2::internal::density_response_note(-0.3).empty());
-  CHECK(CVT_2::internal::density_response_note(not_a_number).empty());
-  CHECK_THAT(CVT_2::internal::density_response_note(-0.03),
-             Catch::Contains("density^-0.03") && Catch::Contains("do not follow the density"));
+  // The note speaks up only for a response above -1/4 by two standard errors.
+  const auto note = [](double slope, double error) {
+    CVT_2::Density_response r;
+    r.slope = slope, r.standard_error = error, r.cells = 500;
+    return CVT_2::internal::density_response_note(r, false);
+  };
+  CHECK(note(-0.3, 0.01).empty());
+  CHECK(note(not_a_number, not_a_number).empty());
+  CHECK(note(-0.03, 0.2).empty());
+  CHECK_THAT(note(-0.03, 0.1), Catch::Contains("density^-0.03") &&
+                                   Catch::Contains("do not follow the density") &&
+                                   Catch::Contains("started far"));
+  CVT_2::Density_response far;
+  far.slope = -0.03, far.standard_error = 0.01, far.cells = 500;
+  CHECK_THAT(CVT_2::internal::density_response_note(far, true),
+             Catch::Contains("were drawn from the density") && !Catch::Contains("started far"));
+  far.cells = 99;  // too few cells to judge
+  CHECK(CVT_2::internal::density_response_note(far, true).empty());
+}
+
+TEST_CASE("a stop whose cells do not follow the density is STALLED, not CONVERGED", "[density]") {
+  // Cells of one size on the unit square under a step density (16 on the right half): every
+  // move ratio is 0 from the start (each cell's density is constant, its centroid its centre),
+  // and the cells have the sizes of the start, far from the optimum (4 times smaller on the
+  // right). Cells 4 times smaller on the right follow it: CONVERGED.
+  const auto step = [](const Point& p) { return p.x() > 0.5 ? 16.0 : 1.0; };
+  const auto run = [](const std::vector<Point>& points, bool lbfgs, const auto& np) {
+    Domain d;
+    load_square(d);
+    CVT_2::insert_generators_2(d.cdt, points);
+    return lbfgs ? CVT_2::lbfgs_optimize_2(d.cdt, np) : CVT_2::lloyd_optimize_2(d.cdt, np);
+  };
+  for (const bool lbfgs : {false, true}) {
+    INFO((lbfgs ? "L-BFGS" : "Lloyd"));
+    const auto density = CVT_2::parameters::density(step).number_of_iterations(5);
+    const auto stalled = run(square_grid(20, false), lbfgs, density);
+    CHECK(stalled.stop_reason == CVT_2::STALLED);
+    CHECK(std::string(CVT_2::to_string(stalled.stop_reason)) == "stalled");
+    CHECK(stalled.density_response.slope == Approx(0).margin(0.02));
+    const auto converged = run(square_grid(20, true), lbfgs, density.number_of_iterations(100));
+    CHECK(converged.stop_reason == CVT_2::CONVERGED);
+    CHECK(converged.density_response.slope == Approx(-0.5).margin(0.02));
+    // Uniform density: nothing to measure. Another limit stays what it was.
+    const auto uniform =
+        run(square_grid(20, false), lbfgs, CVT_2::parameters::number_of_iterations(5));
+    CHECK(uniform.stop_reason == CVT_2::CONVERGED);
+    CHECK(std::isnan(uniform.density_response.slope));
+    const auto limit = run(square_grid(20, false), lbfgs, density.move_ratio_bound(0));
+    CHECK(limit.stop_reason == CVT_2::MAX_ITERATIONS_REACHED);
+    CHECK(limit.density_response.slope == Approx(0).margin(0.02));
+  }
 }

@@ -72,8 +72,10 @@ class Constraint_editor_2 {
   struct Edit_report {
     /// the vertices whose cell changed (the rows a solver assembles again), new ones included
     std::vector<Vertex_handle> changed_cells;
-    std::vector<Vertex_handle> new_vertices;  ///< the vertices the edit inserted, in order
-    std::size_t retagged_faces = 0;           ///< the faces whose blind tag was computed again
+    /// the vertices an insertion or an extension inserted, in order (a move inserts none: the
+    /// vertex it returns is the one moved, under a new handle if it was removed and inserted)
+    std::vector<Vertex_handle> new_vertices;
+    std::size_t retagged_faces = 0;  ///< the faces whose blind tag was computed again
     /// With `carry_weights(true)`, for each vertex an insertion or an extension inserted (in
     /// the order of `new_vertices`): its Sibson coordinates in the diagram before the edit,
     /// normalized, which carry a field over to it (empty outside the closed domain), from
@@ -97,7 +99,8 @@ class Constraint_editor_2 {
   void carry_weights(bool b) { m_carry = b; }
 
   /// Inserts the polyline through `points` (at least two distinct points; a repeated point in a
-  /// row counts once) as a new constraint and returns its id.
+  /// row counts once; a last point equal to the first closes it) as a new constraint and
+  /// returns its id.
   /// \throws Domain_error if a point lies outside the domain, or a segment leaves the domain,
   ///         crosses or overlaps another constraint or the polyline itself.
   template <class PointRange>
@@ -329,7 +332,10 @@ class Constraint_editor_2 {
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
       internal::check_segment(m_cdt, path[i], path[i + 1], name, what, Vertex_handle(), true, hint);
       for (std::size_t j = 0; j < i; ++j)
-        if (internal::pieces_meet(path[j], path[j + 1], path[i], path[i + 1], j + 1 == i))
+        if (j + 1 == i ? internal::pieces_meet(path[j], path[j + 1], path[i], path[i + 1], true)
+            : j == 0 && i + 2 == path.size() && path[0] == path[i + 1]  // a closed polyline
+                ? internal::pieces_meet(path[i], path[i + 1], path[0], path[1], true)
+                : internal::pieces_meet(path[j], path[j + 1], path[i], path[i + 1], false))
           throw Domain_error(what() + " crosses itself: " + internal::to_string(path[j]) + " - " +
                              internal::to_string(path[j + 1]) + " and " +
                              internal::to_string(path[i]) + " - " +
@@ -538,7 +544,7 @@ class Constraint_editor_2 {
           return m_edge_owner.count(key(f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i)))) != 0;
         },
         [&](Face_handle f) { return kept.contains(f) && !made.contains(f); });
-    m_report.new_vertices.assign(1, w);
+    m_report.new_vertices.clear();  // w is v moved, not a vertex the edit inserted
     return w;
   }
 

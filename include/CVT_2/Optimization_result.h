@@ -4,6 +4,7 @@
 #define CVT_2_OPTIMIZATION_RESULT_H
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace CVT_2 {
@@ -11,7 +12,12 @@ namespace CVT_2 {
 /// \ingroup PkgCvt2Ref
 /// Why an optimization stopped.
 enum Stop_reason {
-  CONVERGED,                ///< every free generator's move ratio is below the bound
+  CONVERGED,  ///< every free generator's move ratio is below the bound (and `STALLED` is not)
+  /// every move ratio is below the bound, but the cells do not follow the density
+  /// (`Density_response::follows()` false): the generators are still on their
+  /// way across the domain, far from the optimum (points that do not follow the density, given
+  /// under one, stop so; `random_points_in_domain_2()` draws points that do)
+  STALLED,
   MAX_ITERATIONS_REACHED,   ///< `number_of_iterations` moves were done
   TIME_LIMIT_REACHED,       ///< `maximum_running_time` passed
   CALLBACK_REQUESTED_STOP,  ///< the callback returned `false`
@@ -23,12 +29,14 @@ enum Stop_reason {
 using Lloyd_stop_reason = Stop_reason;
 
 /// \ingroup PkgCvt2Ref
-/// A short name of `reason` for messages and logs: `converged`, `max_iterations`,
+/// A short name of `reason` for messages and logs: `converged`, `stalled`, `max_iterations`,
 /// `time_limit`, `callback` or `no_free_generator`.
 inline const char* to_string(Stop_reason reason) {
   switch (reason) {
     case CONVERGED:
       return "converged";
+    case STALLED:
+      return "stalled";
     case MAX_ITERATIONS_REACHED:
       return "max_iterations";
     case TIME_LIMIT_REACHED:
@@ -40,6 +48,24 @@ inline const char* to_string(Stop_reason reason) {
   }
   return "unknown";
 }
+
+/// \ingroup PkgCvt2Ref
+/// How cells follow a density (`density_response_2()`): the least-squares slope of log(cell
+/// area) against log(density), about -1/2 for a centroidal tessellation, 0 for cells of one
+/// size, and its standard error (from the cells' scatter about the line; large where few cells
+/// take part). NaN where it cannot be measured.
+struct Density_response {
+  double slope = std::numeric_limits<double>::quiet_NaN();           ///< the slope
+  double standard_error = std::numeric_limits<double>::quiet_NaN();  ///< the slope's
+  std::size_t cells = 0;                                             ///< the cells measured
+  /// Whether the cells follow the density as a start for (or the result of) an optimization
+  /// must: unless the slope is above -1/4, half way from cells of one size to a centroidal
+  /// tessellation's, by two standard errors, over 100 cells or more. True if it cannot be
+  /// measured, or over fewer cells: the law is asymptotic, and a few large cells follow the
+  /// domain's shape as much as the density (optimal tessellations of 60 to 120 cells on a
+  /// figure-shaped domain have slopes up to +0.2; of 300 to 1 000, -0.34 to -0.56).
+  bool follows() const { return cells < 100 || !(slope - 2 * standard_error > -0.25); }
+};
 
 /// \ingroup PkgCvt2Ref
 /// What an optimization (`lloyd_optimize_2()`, `lbfgs_optimize_2()`) did. The figures describe
@@ -55,6 +81,9 @@ struct Optimization_result {
   double energy = 0;           ///< \f$E = \sum_i \int_{V_i} \rho(y)\|y - x_i\|^2 dy\f$, all cells
   double max_move_ratio = 0;   ///< \f$\max_i mr(x_i)\f$ over free generators
   double mean_move_ratio = 0;  ///< the mean of \f$mr(x_i)\f$ over free generators
+  /// how the final cells follow a density that is not uniform (`density_response_2()`); not
+  /// measured (NaN) with a uniform density or in a `region`
+  Density_response density_response;
   std::vector<double> energy_history;           ///< one per evaluation, the first before any move
   std::vector<double> max_move_ratio_history;   ///< likewise
   std::vector<double> mean_move_ratio_history;  ///< likewise

@@ -6,6 +6,8 @@
 
 #include <CVT_2/Bounded_voronoi_diagram_2.h>
 #include <CVT_2/Concepts/DensityFunction_2.h>
+#include <CVT_2/Optimization_result.h>
+#include <CVT_2/Uniform_density_2.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/internal/density_evaluation.h>
 
@@ -18,56 +20,81 @@
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CVT_2 {
 
 /// \ingroup PkgCvt2Ref
 /// How the cells of the free generators of `bvd` follow the density `rho`: the least-squares
-/// slope of log(area of the cell) against log(rho at its generator). The cells of a centroidal
-/// Voronoi tessellation of a density have areas proportional to \f$\rho^{-1/2}\f$ (Gersho's
-/// asymptotics, exact in 2D: their size scales as \f$\rho^{-1/4}\f$), so its slope is about
-/// -1/2; cells of one size have 0. Lloyd iteration and L-BFGS move points across the domain
-/// slowly: from points that do not follow the density (uniform ones under a density of range
-/// 16, say), every move ratio falls below 1% long before the cells have the sizes the density
-/// asks for, and the slope says so. `random_points_in_domain_2()` draws points that follow it.
+/// slope of log(area of the cell) against log(rho at its generator), and its standard error. The
+/// cells of a centroidal Voronoi tessellation of a density have areas proportional to
+/// \f$\rho^{-1/2}\f$ (Gersho's asymptotics, exact in 2D: their size scales as \f$\rho^{-1/4}\f$),
+/// so its slope is about -1/2; cells of one size have 0. Lloyd iteration and L-BFGS move points
+/// across the domain slowly: from points that do not follow the density (uniform ones under a
+/// density of range 16, say), every move ratio falls below 1% long before the cells have the sizes
+/// the density asks for, and the slope says so. `random_points_in_domain_2()` draws points that
+/// follow it.
 ///
-/// Returns NaN if fewer than 3 free generators have a cell, or if rho varies by less than a
-/// factor 2 over them (too little to measure). \throws Domain_error if a value of rho is not
-/// positive and finite, naming the point.
+/// Only Voronoi cells over which rho is about constant take part: no constraint clips them (a
+/// clipped cell has the area the clip leaves), and rho at each vertex of the cell is within a
+/// factor 2 of rho at its generator (where rho varies within a cell, a feature smaller than the
+/// cells or a step, the law does not hold even at the optimum, and such a cell would say
+/// nothing of where its generator is). The slope is NaN if fewer than 3 cells take part, or if
+/// rho varies by less than a factor 2 over them (too little to measure). \throws Domain_error
+/// if a value of rho is not positive and finite, naming the point.
 /// \tparam Diagram a `Bounded_voronoi_diagram_2`.
 /// \tparam Density a model of `DensityFunction_2` (one with the batch member is called once).
 template <class Diagram, class Density>
-double density_response_2(const Diagram& bvd, const Density& rho) {
+Density_response density_response_2(const Diagram& bvd, const Density& rho) {
   using K = typename Diagram::Triangulation::Geom_traits;
   using Point_2 = typename K::Point_2;
   using FT = typename K::FT;
-  std::vector<Point_2> generators;
+  // each cell's generator, then its vertices; `first[k]` where cell k's start
+  std::vector<Point_2> points;
+  std::vector<std::size_t> first;
   std::vector<double> log_areas;
   bvd.for_each_cell([&](auto v, const auto& cell) {
     if (!bvd.is_free(v)) return;
+    for (const auto& c : cell)  // a cell clipped by a constraint has the area the clip left
+      if (c.type != Diagram::Cell_vertex::CIRCUMCENTER) return;
     // the fan from the generator, as Bvd_mesh_2::area(): no cancellation far from the origin
     double area = 0;
     for (std::size_t i = 0; i < cell.size(); ++i)
       area +=
           CGAL::to_double(CGAL::area(v->point(), cell[i].point, cell[(i + 1) % cell.size()].point));
     if (!(area > 0)) return;  // a cell that underflows says nothing
-    generators.push_back(v->point());
+    first.push_back(points.size());
+    points.push_back(v->point());
+    for (const auto& c : cell) points.push_back(c.point);
     log_areas.push_back(std::log(area));
   });
-  const double none = std::numeric_limits<double>::quiet_NaN();
-  if (generators.size() < 3) return none;
+  Density_response out;
+  if (log_areas.size() < 3) return out;
+  first.push_back(points.size());
   std::vector<FT> values;
   if constexpr (has_batch_evaluation_v<Density, K>) {
-    internal::evaluate_in_batch(rho, generators, values);
+    internal::evaluate_in_batch(rho, points, values);
   } else {
     const internal::Checked_density<Density, Point_2> checked{rho};
-    for (const Point_2& p : generators) values.push_back(checked(p));
+    for (const Point_2& p : points) values.push_back(checked(p));
   }
-  std::vector<double> log_rho(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i) log_rho[i] = std::log(CGAL::to_double(values[i]));
+  std::vector<double> log_rho;
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k + 1 < first.size(); ++k) {
+    const double at_generator = std::log(CGAL::to_double(values[first[k]]));
+    bool constant = true;
+    for (std::size_t j = first[k] + 1; j < first[k + 1] && constant; ++j)
+      constant = std::abs(std::log(CGAL::to_double(values[j])) - at_generator) <= std::log(2.0);
+    if (!constant) continue;
+    log_rho.push_back(at_generator);
+    log_areas[kept++] = log_areas[k];
+  }
+  log_areas.resize(kept);
+  out.cells = kept;
+  if (kept < 3) return out;
   const auto [lo, hi] = std::minmax_element(log_rho.begin(), log_rho.end());
-  if (*hi - *lo < std::log(2.0)) return none;
+  if (*hi - *lo < std::log(2.0)) return out;
   const double n = double(log_rho.size());
   double mean_x = 0, mean_y = 0;
   for (std::size_t i = 0; i < log_rho.size(); ++i) mean_x += log_rho[i], mean_y += log_areas[i];
@@ -77,18 +104,21 @@ double density_response_2(const Diagram& bvd, const Density& rho) {
     sxy += (log_rho[i] - mean_x) * (log_areas[i] - mean_y);
     sxx += (log_rho[i] - mean_x) * (log_rho[i] - mean_x);
   }
-  return sxy / sxx;
+  out.slope = sxy / sxx;
+  double residuals = 0;
+  for (std::size_t i = 0; i < log_rho.size(); ++i) {
+    const double r = log_areas[i] - mean_y - out.slope * (log_rho[i] - mean_x);
+    residuals += r * r;
+  }
+  out.standard_error = std::sqrt(residuals / (n - 2) / sxx);
+  return out;
 }
-
-namespace internal {
-// Half way from cells of one size (0) to a centroidal tessellation's (-1/2).
-inline constexpr double density_response_bound = -0.25;
-}  // namespace internal
 
 /// \ingroup PkgCvt2Ref
 /// Whether the free generators of `bvd` are spread as a start for a centroidal tessellation of
-/// `rho` must be: `density_response_2()` at most -1/4, half way from cells of one size to a
-/// centroidal tessellation's, or not defined (rho varies by less than a factor 2). Points that
+/// `rho` must be: `density_response_2()` not above -1/4, half way from cells of one size to a
+/// centroidal tessellation's, by two standard errors, or not defined (`Density_response::
+/// follows()`). Points that
 /// do not follow the density (uniform ones under a density that varies) take the optimizers
 /// hundreds of iterations to move across the domain, and the move ratios fall below 1% long
 /// before they arrive; points drawn by `random_points_in_domain_2()` follow it, and
@@ -98,7 +128,7 @@ inline constexpr double density_response_bound = -0.25;
 /// \tparam Density a model of `DensityFunction_2`.
 template <class Diagram, class Density>
 bool follows_density_2(const Diagram& bvd, const Density& rho) {
-  return !(density_response_2(bvd, rho) > internal::density_response_bound);
+  return density_response_2(bvd, rho).follows();
 }
 
 /// \ingroup PkgCvt2Ref
@@ -128,17 +158,35 @@ std::vector<typename CDT::Vertex_handle> generators_to_redistribute_2(const CDT&
 
 namespace internal {
 
-// A note for a result whose cells do not follow the density (a slope of density_response_2()
-// above density_response_bound), empty otherwise.
-inline std::string density_response_note(double slope) {
-  if (!(slope > density_response_bound)) return {};
+// After a run over the whole domain under rho: the final cells' density response into `r`, and
+// a CONVERGED stop whose cells do not follow rho made STALLED, a stop far from the optimum. A
+// uniform density has no response to measure.
+template <class CDT, class Traits, class Density>
+void judge_density_response(const CDT& cdt, const Traits& traits, const Density& rho,
+                            Optimization_result& r) {
+  if constexpr (!std::is_same_v<Density, Uniform_density_2<typename CDT::Geom_traits>>) {
+    r.density_response =
+        density_response_2(Bounded_voronoi_diagram_2<CDT, Traits>(cdt, traits), rho);
+    if (r.stop_reason == CONVERGED && !r.density_response.follows()) r.stop_reason = STALLED;
+  }
+}
+
+// A note for a result whose cells do not follow the density, empty otherwise; `drawn`: the
+// free generators were drawn from the density (or redistributed), so a start far from its
+// distribution is not the reason.
+inline std::string density_response_note(const Density_response& response, bool drawn) {
+  if (response.follows()) return {};
   char s[32];
-  std::snprintf(s, sizeof s, "%.2f", slope);
+  std::snprintf(s, sizeof s, "%.2f", response.slope);
   return std::string("the cells do not follow the density: their areas scale as density^") + s +
-         ", a centroidal tessellation's as density^-0.50. The points started far from the "
-         "density's distribution and the iteration moves them across the domain slowly; start "
-         "from points drawn from the density (random points with the same density), as "
-         "redistribute='auto' (cvt2 --redistribute auto), the default, does";
+         ", a centroidal tessellation's as density^-0.50: far from the optimum. " +
+         (drawn ? "The points were drawn from the density: it varies faster than this many "
+                  "cells can follow, or the iteration stopped early (a smaller move ratio "
+                  "bound, more iterations)"
+                : "The points started far from the density's distribution and the iteration "
+                  "moves them across the domain slowly; start from points drawn from the "
+                  "density (random points with the same density), as redistribute='auto' "
+                  "(cvt2 --redistribute auto), the default, does");
 }
 
 }  // namespace internal

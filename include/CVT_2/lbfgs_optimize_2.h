@@ -5,6 +5,7 @@
 
 #include <CVT_2/Lbfgs_optimizer_2.h>
 #include <CVT_2/Optimization_result.h>
+#include <CVT_2/density_response_2.h>
 #include <CVT_2/internal/run_optimization.h>
 #include <CVT_2/parameters.h>
 
@@ -26,7 +27,8 @@ namespace CVT_2 {
 /// its line search included; `energy_history` and the move ratio histories have one entry a
 /// step (the point it accepted), the first before any move. A step costs one evaluation when
 /// its first trial point is accepted, which is the rule; `number_of_evaluations` counts them,
-/// line-search trials included.
+/// line-search trials included. Under a density that is not uniform, a stop whose cells do not
+/// follow it is `STALLED`, as for `lloyd_optimize_2()`.
 ///
 /// \param cdt a constrained Delaunay triangulation with its domain marked (see
 ///        `Bounded_voronoi_diagram_2`); its free vertices are moved in place. If
@@ -62,7 +64,9 @@ Optimization_result lbfgs_optimize_2(CDT& cdt, const NP& np = parameters::defaul
   if (region) lbfgs.set_region(*region);
   internal::set_keep_out(lbfgs, np);
   internal::set_sliding_runs(lbfgs, np);
-  return internal::run_optimization(lbfgs, options, "lbfgs");
+  Optimization_result r = internal::run_optimization(lbfgs, options, "lbfgs");
+  if (!region) internal::judge_density_response(cdt, Policies::traits(np), density, r);
+  return r;
 }
 
 }  // namespace CVT_2

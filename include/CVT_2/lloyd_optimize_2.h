@@ -5,6 +5,7 @@
 
 #include <CVT_2/Lloyd_optimizer_2.h>
 #include <CVT_2/Optimization_result.h>
+#include <CVT_2/density_response_2.h>
 #include <CVT_2/internal/run_optimization.h>
 #include <CVT_2/parameters.h>
 
@@ -16,7 +17,11 @@ namespace CVT_2 {
 /// \f$mr(x) = \|x - x^*\|/\mathrm{diameter}(V)\f$ is below `move_ratio_bound`, or another
 /// limit is met. Constrained vertices stay (but for those of `sliding_runs`); a free generator
 /// never crosses a constraint.
-/// The result describes the generators as they are at the end (`Optimization_result`).
+/// The result describes the generators as they are at the end (`Optimization_result`). Under a
+/// density that is not uniform, a run over the whole domain measures how the final cells follow
+/// it (`density_response_2()`): a stop with every move ratio below the bound whose cells do not
+/// is `STALLED`, not `CONVERGED` (the move ratios see local moves only, and from points that do
+/// not follow the density they fall below 1% long before the cells have the sizes it asks for).
 ///
 /// \param cdt a constrained Delaunay triangulation with its domain marked (see
 ///        `Bounded_voronoi_diagram_2`); its free vertices are moved in place. If
@@ -82,7 +87,10 @@ Optimization_result lloyd_optimize_2(CDT& cdt, const NP& np = parameters::defaul
   if (region) lloyd.set_region(*region);
   internal::set_keep_out(lloyd, np);
   internal::set_sliding_runs(lloyd, np);
-  return internal::run_optimization(internal::Lloyd_steps<Optimizer>{lloyd}, options, "lloyd");
+  Optimization_result r =
+      internal::run_optimization(internal::Lloyd_steps<Optimizer>{lloyd}, options, "lloyd");
+  if (!region) internal::judge_density_response(cdt, Policies::traits(np), density, r);
+  return r;
 }
 
 }  // namespace CVT_2

@@ -84,7 +84,9 @@ Domain_triangles<typename CDT::Point_2> domain_triangles(const CDT& cdt) {
 }
 
 // The triangles of `d` cut by longest-edge bisection until each has an area of at most
-// `small`; `face_of` gets the triangle each piece was cut from.
+// `small`, or its longest edge's midpoint rounds to an end (a domain a few units in the last
+// place wide, which cuts would not shrink); `face_of` gets the triangle each piece was cut
+// from.
 template <class Point_2>
 std::vector<std::array<Point_2, 3>> bisect_triangles(const Domain_triangles<Point_2>& d,
                                                      double small,
@@ -97,13 +99,13 @@ std::vector<std::array<Point_2, 3>> bisect_triangles(const Domain_triangles<Poin
       poll_interrupt_sometimes();
       const Triangle u = stack.back();
       stack.pop_back();
-      if (d.area(u) <= small) {
+      const int k = d.opposite_longest_edge(u);
+      const Point_2 m = CGAL::midpoint(u[(k + 1) % 3], u[(k + 2) % 3]);
+      if (d.area(u) <= small || m == u[(k + 1) % 3] || m == u[(k + 2) % 3]) {
         pieces.push_back(u);
         face_of.push_back(f);
         continue;
       }
-      const int k = d.opposite_longest_edge(u);
-      const Point_2 m = CGAL::midpoint(u[(k + 1) % 3], u[(k + 2) % 3]);
       stack.push_back({u[k], u[(k + 1) % 3], m});
       stack.push_back({u[k], m, u[(k + 2) % 3]});
     }

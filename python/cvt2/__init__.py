@@ -783,6 +783,12 @@ class ConstraintEditor:
     def is_removed(self, id) -> bool:
         return self._impl.is_removed(_count(id, "id"))
 
+    @property
+    def notes(self) -> list:
+        """The points given that went onto the boundary (``boundary_tolerance``), as
+        :func:`bounded_voronoi` notes them; its snapshots' ``notes`` say them too."""
+        return list(self._impl.notes)
+
     def bounded_voronoi(self, threads=0) -> "BoundedVoronoi":
         """The diagram as it is now, as :func:`bounded_voronoi` returns it."""
         return BoundedVoronoi(self._impl.diagram(_count(threads, "threads")), self._domain)
@@ -848,8 +854,10 @@ class OptimizeResult:
     - ``normalized_energy``: energy * N / area^2 over the hexagonal tiling's (uniform density:
       1 is the optimum for large N), as ``cvt2`` prints it;
     - ``iterations``, ``evaluations``: moves done, and diagrams evaluated;
-    - ``stop_reason``: ``"converged"``, ``"max_iterations"``, ``"time_limit"``, ``"callback"``
-      or ``"no_free_generator"``;
+    - ``stop_reason``: ``"converged"``, ``"stalled"`` (every move ratio below the stop, but
+      the cells do not follow the density: ``density_response`` above -0.25, far from the
+      optimum), ``"max_iterations"``, ``"time_limit"``, ``"callback"`` or
+      ``"no_free_generator"``;
     - ``energy_history``, ``max_move_ratio_history``, ``mean_move_ratio_history``: one value an
       iteration, the first before any move; ``max_move_ratio``, ``mean_move_ratio``: the last;
     - ``seconds``: the optimization's time, measured as ``cvt2`` prints ``seconds=``;
@@ -857,10 +865,12 @@ class OptimizeResult:
       them, and, with a density, a note if the cells do not follow it (``density_response``
       above -0.25): a list of strings, empty if none;
     - ``density_response``: with a density, the least-squares slope of log(cell area) against
-      log(density at the generator) over the free generators: about -0.5 for a centroidal
-      tessellation of the density (cell size ~ density**-1/4), 0 for cells of one size, as a
-      uniform start keeps them long after every move ratio is below 1%; NaN without a density
-      or where it varies by less than a factor 2;
+      log(density at the generator) over the free generators whose cells the density is about
+      constant over (within a factor 2): about -0.5 for a centroidal tessellation of the
+      density (cell size ~ density**-1/4), 0 for cells of one size, as a uniform start keeps
+      them long after every move ratio is below 1%; NaN without a density, or where it varies
+      by less than a factor 2 over those cells (or within most cells: a feature smaller than
+      them);
     - ``input_index``: int (N,), for each generator, the row of the ``points`` given that it
       started from (the first of rows merged as duplicates), or -1 for a generator of the
       domain's own or one drawn in their place: ``points[input_index == i]`` is where input row

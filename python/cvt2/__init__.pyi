@@ -135,7 +135,9 @@ class OptimizeResult:
     energy: float
     iterations: int
     evaluations: int
-    stop_reason: Literal["converged", "max_iterations", "time_limit", "callback", "no_free_generator"]
+    stop_reason: Literal[
+        "converged", "stalled", "max_iterations", "time_limit", "callback", "no_free_generator"
+    ]
     energy_history: np.ndarray
     max_move_ratio: float
     mean_move_ratio: float

@@ -45,9 +45,10 @@ def test_the_density_is_called_with_batches(data):
     # One call a chunk of cells an evaluation (up to 1024 faces under a quadrature rule): tens of
     # calls, each with the quadrature points of hundreds of cells (about 42 a cell: 7 a fan
     # triangle, 6 fan triangles a cell on average), the last chunk's fewer; and one at the
-    # free generators before (whether they follow the density: redistribute="auto") and after
-    # (the density response).
-    assert rho.sizes[0] == rho.sizes[-1] == np.count_nonzero(~result.constrained)
+    # free generators and their cells' vertices before (whether they follow the density:
+    # redistribute="auto") and after (the density response): 7 points a cell on average.
+    free = np.count_nonzero(~result.constrained)
+    assert 6 * free < rho.sizes[0] < 8 * free and 6 * free < rho.sizes[-1] < 8 * free
     calls_per_evaluation = (len(rho.sizes) - 2) / result.evaluations
     assert calls_per_evaluation == int(calls_per_evaluation) and 10 <= calls_per_evaluation <= 100
     assert sorted(rho.sizes)[len(rho.sizes) // 2] >= 30 * 400
@@ -131,10 +132,10 @@ def rectangle():
 def test_cells_that_do_not_follow_the_density_say_so(rectangle):
     # From uniform points, every move ratio falls below 1% long before the right half has its
     # share (about 4 times as many cells as the left at a CVT: areas ~ density^-1/2): the
-    # result says "converged", and its density response and a note say what it is.
+    # result says "stalled", not "converged", and its density response and a note say why.
     uniform = cvt2.random_points(rectangle, 600, seed=4)
     result = cvt2.optimize(rectangle, uniform, density=step, redistribute=False)
-    assert result.stop_reason == "converged"
+    assert result.stop_reason == "stalled"
     assert not result.redistributed
     assert result.density_response > -0.25
     assert any("do not follow the density" in note for note in result.notes)
@@ -166,7 +167,7 @@ def cell_area_ratio(result):
 def test_points_that_do_not_follow_the_density_are_redistributed(rectangle, algorithm):
     # The issue's case, 2 000 uniform points: by default they are replaced by points drawn from
     # the density, and the result is what those give: cell areas 4 times larger on the left
-    # (16^1/2), the energy of the run from drawn points within 1%. Kept, they stop "converged"
+    # (16^1/2), the energy of the run from drawn points within 1%. Kept, they stop "stalled"
     # with areas about 1.3 times larger and 20% more energy.
     uniform = cvt2.random_points(rectangle, 2000, seed=4)
     drawn = cvt2.random_points(rectangle, 2000, seed=1, density=step)
@@ -180,6 +181,7 @@ def test_points_that_do_not_follow_the_density_are_redistributed(rectangle, algo
     assert cell_area_ratio(reference) == pytest.approx(4, rel=0.1)
     assert auto.energy == pytest.approx(reference.energy, rel=0.01)
     assert cell_area_ratio(kept) < 2 and kept.energy > 1.1 * reference.energy
+    assert kept.stop_reason == "stalled" and reference.stop_reason == "converged"
     # The rows given are gone: no generator comes from one, and a note says why.
     assert (auto.input_index == -1).all()
     assert any("do not follow the density" in n and "replaced" in n for n in auto.notes)
@@ -226,3 +228,36 @@ def test_a_steep_lipschitz_sizing_does_not_stop_the_run(data, algorithm):
         r = cvt2.optimize(domain, points, density="lipschitz", lipschitz_k=k, max_iterations=30,
                           algorithm=algorithm)
         assert np.isfinite(r.energy) and r.energy > 0
+
+
+def test_a_bump_narrower_than_the_cells_is_no_reason_to_redistribute():
+    # A density whose feature is narrower than the cells: at the optimum one generator sits on
+    # the bump and the cells keep about one size, so cell areas cannot follow the density at the
+    # generators. Its converged tessellation, given back, is kept (auto) and gets no note; the
+    # response counted the bump's cell and called it not following (slope -0.17), replaced the
+    # points given and said they started far from the density.
+    square = cvt2.Domain([[0, 0], [1, 0], [1, 1], [0, 1]], [[0, 1], [1, 2], [2, 3], [3, 0]])
+
+    def bump(xy):
+        return 1 + 1e4 * np.exp(-((xy[:, 0] - 0.5) ** 2 + (xy[:, 1] - 0.5) ** 2) / 0.01**2)
+
+    first = cvt2.optimize(square, cvt2.random_points(square, 100, seed=1), density=bump,
+                          redistribute=True)
+    again = cvt2.optimize(square, first.points[~first.constrained], density=bump)
+    assert first.stop_reason == "converged" and again.stop_reason == "converged"
+    assert not again.redistributed
+    assert np.isnan(again.density_response)
+    assert not any("do not follow" in note for note in first.notes + again.notes)
+
+
+def test_points_drawn_from_a_density_on_a_domain_a_few_ulps_wide():
+    # A 1e-6 square at 1e9 is 8 units in the last place wide: longest-edge bisection of its
+    # triangles met a midpoint that rounds to an end, cut the same triangle forever and filled
+    # memory (3 GB, then "not enough memory for n = 1 points"). The pieces now stop there.
+    o, s = 1e9, 1e-6
+    square = cvt2.Domain([[o, o], [o + s, o], [o + s, o + s], [o, o + s]],
+                         [[0, 1], [1, 2], [2, 3], [3, 0]])
+    for density in (lambda xy: np.ones(len(xy)), "lipschitz"):
+        p = cvt2.random_points(square, 3, seed=2, density=density)
+        assert p.shape == (3, 2)
+        assert ((p >= o) & (p <= o + s)).all()

@@ -242,3 +242,69 @@ def test_ridges_name_the_constraints_the_editor_inserted_and_moved():
     wall = np.hypot(4.1 - 2, 2.9 - 2) + np.hypot(6 - 4.1, 2 - 2.9)
     assert length[(rows == 4) | (rows == 5)].sum() == pytest.approx(wall)
     assert cvt2.bounded_voronoi(cvt2.Domain(vertices, segments), [[1, 1]]).ridge_edit_constraint is None
+
+
+def test_a_domain_segment_split_then_bent_keeps_its_name():
+    # A crack ending on a hole's edge splits it at (6, 5); the hole's corner (6, 6) then moves:
+    # the edge runs (6, 4) - (6, 5) - (6.1, 6.1), and its ridges still name segment 5 (the walk
+    # from one end to the other along the segment stopped at the bend: none named it). A wall
+    # through a free generator that a move made a vertex of it, then its other end moved, too.
+    v = np.array([[0, 0], [10, 0], [10, 10], [0, 10], [4, 4], [6, 4], [6, 6], [4, 6]], float)
+    s = np.vstack([RING, [[4, 5], [5, 6], [6, 7], [7, 4]]])
+    editor = cvt2.ConstraintEditor(cvt2.Domain(v, s, holes=[[5, 5]]),
+                                   [[1, 1], [9, 9], [1, 9], [9, 1]])
+    editor.insert_constraint([[6, 5], [8, 5]])
+    editor.move_constrained_vertex([6, 6], [6.1, 6.1])
+    d = editor.bounded_voronoi()
+    ends = d.vertices[d.ridge_vertices]
+    length = np.hypot(*(ends[:, 1] - ends[:, 0]).T)
+    assert length[d.ridge_constraint == 5].sum() == pytest.approx(1 + np.hypot(0.1, 1.1))
+    assert length[d.ridge_constraint == 6].sum() == pytest.approx(np.hypot(2.1, 0.1))
+    wall = cvt2.ConstraintEditor(
+        cvt2.Domain(np.vstack([SQUARE, [[1.5, 5.5], [3, 8.5]]]), np.vstack([RING, [[4, 5]]])),
+        [[2, 7], [8, 8], [8, 2]])
+    wall.move_constrained_vertex([3, 8.5], [2.5, 8.5])  # now through the generator at (2, 7)
+    wall.move_constrained_vertex([1.5, 5.5], [1, 5.5])
+    d = wall.bounded_voronoi()
+    ends = d.vertices[d.ridge_vertices]
+    length = np.hypot(*(ends[:, 1] - ends[:, 0]).T)
+    expected = np.hypot(1, 1.5) + np.hypot(0.5, 1.5)
+    assert length[d.ridge_constraint == 4].sum() == pytest.approx(expected)
+
+
+def test_a_move_reports_no_new_vertex_and_weights_rows_match():
+    # A move that removes the vertex and inserts it again reported it as a new vertex with no
+    # row of weights (indptr [0] for one vertex); a move inserts none, whichever way it goes.
+    editor = cvt2.ConstraintEditor(cvt2.Domain(SQUARE, RING),
+                                   [[5, 5], [2, 2], [8, 8], [2, 8], [8, 2]])
+    editor.insert_constraint([[3, 4], [4, 4]])
+    for to in ([6, 6], [6.2, 6.1]):  # over the generator at (5, 5): reinserted; then a slide
+        report = editor.move_constrained_vertex(editor.constraint_vertices(0)[1], to)
+        assert len(report["new_vertices"]) == 0
+        assert len(report["weights_indptr"]) == len(report["new_vertices"]) + 1
+        assert len(report["changed_cells"]) > 0
+
+
+def test_a_closed_polyline_is_inserted_as_extend_closes_one():
+    ring = [[7, 1], [9, 1], [9, 3], [7, 1]]
+    points = np.random.default_rng(2).uniform(0, 10, (300, 2))
+    closed = cvt2.ConstraintEditor(cvt2.Domain(SQUARE, RING), points)
+    c = closed.insert_constraint(ring)
+    assert len(closed.constraint_vertices(c)) == 4
+    grown = cvt2.ConstraintEditor(cvt2.Domain(SQUARE, RING), points)
+    g = grown.insert_constraint(ring[:3])
+    grown.extend_constraint(g, ring[3])
+    for x, y in zip(cells_by_generator(closed.bounded_voronoi()),
+                    cells_by_generator(grown.bounded_voronoi())):
+        assert np.array_equal(x, y)
+    # Folding back at the closing point, or through the ring, is still refused.
+    for bad in ([[7, 5], [9, 5], [8, 5], [7, 5]], [[7, 6], [9, 6], [9, 8], [8, 6], [7, 6]]):
+        with pytest.raises(cvt2.DomainError, match="crosses itself"):
+            closed.insert_constraint(bad)
+
+
+def test_points_moved_onto_the_boundary_are_noted():
+    editor = cvt2.ConstraintEditor(cvt2.Domain(SQUARE, RING), [[1, 1], [10.5, 2]],
+                                   boundary_tolerance=1.0)
+    assert any("(10, 2)" in note for note in editor.notes)
+    assert editor.bounded_voronoi().notes == editor.notes

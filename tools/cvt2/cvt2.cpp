@@ -451,11 +451,12 @@ std::size_t redistribute(const Options& o, const Sizing_choice& sizing,
       sizing.lipschitz ? to_replace(*sizing.lipschitz) : to_replace(*sizing.refinement);
   if (given.empty()) return 0;
   CVT_2::remove_generators_2(cdt, given);
-  std::cerr << "cvt2: note: the " << given.size() << " generators given "
+  std::cerr << "cvt2: note: the " << given.size()
+            << " free generators (--points-in's and the domain's own) "
             << (o.redistribute == "auto" ? "do not follow the density (their cells' areas do "
                                            "not shrink as it grows)"
                                          : "are redistributed (--redistribute always)")
-            << ": replaced by as many drawn from it (--redistribute never keeps them)\n";
+            << ": replaced by as many drawn from the density (--redistribute never keeps them)\n";
   return given.size();
 }
 
@@ -959,7 +960,9 @@ int run(const Options& o) {
       sizing.refinement->add_point(Point_2(x, y), std::min(size, background), radius);
     }
   }
-  n += redistribute(o, sizing, fixed, cdt);
+  const std::size_t redistributed = redistribute(o, sizing, fixed, cdt);
+  n += redistributed;
+  const bool drawn = redistributed > 0 || o.points_in.empty();  // for the density's note
   const std::size_t before = cdt.number_of_vertices();
   insert_random_points(n, o, sizing, cdt, disks);
   // Where the coordinates are coarse for the domain (a double near 1e15 is an eighth), drawn
@@ -979,6 +982,9 @@ int run(const Options& o) {
   // what breaks the faces on the lines, if any
   const std::string inside = CVT_2::internal::conforming_disks_note(cdt, disks);
   if (!inside.empty()) std::cerr << "cvt2: note: " << inside << '\n';
+  // a stop far from the optimum: stop=stalled
+  const std::string far = CVT_2::internal::density_response_note(r.density_response, drawn);
+  if (!far.empty()) std::cerr << "cvt2: note: " << far << '\n';
   const BVD bvd(cdt);
   write_outputs(o, cdt, bvd, metadata, domain_alone, segments, kinds, conforming, top, bottom);
   print_summary(o, r, bvd, domain_area(cdt));
