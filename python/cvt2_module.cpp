@@ -1281,6 +1281,7 @@ struct Optimization {
   CVT_2::Optimization_result result;
   std::vector<Point_2> points;
   std::vector<std::uint8_t> constrained;
+  std::vector<std::uint8_t> fixed;        // fixed_points and the conforming lines' pairs
   std::vector<std::int64_t> input_index;  // of each generator: its first input row, or -1
   std::vector<std::string> notes;         // the points moved onto the boundary, ...
   double density_response = std::numeric_limits<double>::quiet_NaN();  // density_response_2()
@@ -1315,7 +1316,8 @@ std::shared_ptr<Optimization> optimize(
   if (redistribute != "auto" && redistribute != "always" && redistribute != "never")
     throw py::value_error("redistribute must be 'auto', True or False, not '" + redistribute + "'");
   if (!(move_ratio >= 0) || !std::isfinite(move_ratio))
-    throw py::value_error("move_ratio must be >= 0, not " + std::to_string(move_ratio));
+    throw py::value_error("move_ratio must be a finite number >= 0, not " +
+                          CVT_2::internal::number_to_string(move_ratio));
   if (!(time_limit >= 0) || std::isnan(time_limit))
     throw py::value_error("time_limit must be >= 0 seconds, not " + std::to_string(time_limit));
   const std::size_t iterations = checked_count(max_iterations, "max_iterations");
@@ -1503,9 +1505,11 @@ std::shared_ptr<Optimization> optimize(
       out->result = run(np);
     // Every generator in the order of cvt2's --points-out.
     const BVD bvd(*cdt);
+    const std::set<Point_2> held(fixed.begin(), fixed.end());  // where they are, and stay
     bvd.for_each_cell([&](CDT::Vertex_handle v, const auto&) {
       out->points.push_back(v->point());
       out->constrained.push_back(bvd.is_free(v) ? 0 : 1);
+      out->fixed.push_back(held.count(v->point()) != 0 ? 1 : 0);
       const auto it = row.find(&*v);
       out->input_index.push_back(it == row.end() ? -1 : it->second);
     });
@@ -1677,6 +1681,8 @@ PYBIND11_MODULE(_cvt2, m) {
       .def_property_readonly(
           "constrained",
           [](const Optimization& o) { return to_array(o.constrained).attr("astype")("bool"); })
+      .def_property_readonly(
+          "fixed", [](const Optimization& o) { return to_array(o.fixed).attr("astype")("bool"); })
       .def_property_readonly("energy", [](const Optimization& o) { return o.result.energy; })
       .def_property_readonly("iterations",
                              [](const Optimization& o) { return o.result.number_of_iterations; })

@@ -389,7 +389,7 @@ def random_points(
         n,
         _seed(seed),
         density,
-        float(lipschitz_k),
+        _number(lipschitz_k, "lipschitz_k"),
         _optional_number(boundary_size, "boundary_size"),
         by_region=cells is not None,
     )
@@ -526,12 +526,12 @@ def optimize(
         points,
         str(algorithm),
         density,
-        float(move_ratio),
+        _number(move_ratio, "move_ratio"),
         _count(max_iterations, "max_iterations"),
-        float(time_limit),
+        _number(time_limit, "time_limit"),
         _count(threads, "threads"),
         callback,
-        float(lipschitz_k),
+        _number(lipschitz_k, "lipschitz_k"),
         _optional_number(boundary_size, "boundary_size"),
         _optional_number(boundary_tolerance, "boundary_tolerance"),
         fixed_points,
@@ -591,13 +591,19 @@ def _barriers(constraints):
     return constraints == "barrier"
 
 
-def _optional_number(value, name):
-    """None, or a number as a float (bool and strings refused)."""
-    if value is None:
+def _number(value, name, or_none=False):
+    """A number as a float (bool and strings refused); None too with ``or_none``."""
+    if value is None and or_none:
         return None
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
-        raise TypeError(f"{name} must be None or a number, not {type(value).__name__}")
+        what = "None or a number" if or_none else "a number"
+        raise TypeError(f"{name} must be {what}, not {type(value).__name__}")
     return float(value)
+
+
+def _optional_number(value, name):
+    """None, or a number as a float (bool and strings refused)."""
+    return _number(value, name, or_none=True)
 
 
 def conforming_sites(line, spacing) -> dict:
@@ -850,6 +856,8 @@ class OptimizeResult:
     - ``points``: float (N, 2), every generator, constrained ones included, in the order
       ``cvt2 --points-out`` writes them (the cells' order of :meth:`bounded_voronoi`);
     - ``constrained``: bool (N,), whether each is a constrained vertex (which never moves);
+    - ``fixed``: bool (N,), whether each is a free generator held where it is: one of
+      ``fixed_points``, or of a conforming line's pairs;
     - ``energy``: the CVT energy, sum over cells of the integral of density * |y - x|^2;
     - ``normalized_energy``: energy * N / area^2 over the hexagonal tiling's (uniform density:
       1 is the optimum for large N), as ``cvt2`` prints it;
@@ -884,6 +892,7 @@ class OptimizeResult:
         self.domain = domain
         self.points = impl.points
         self.constrained = impl.constrained
+        self.fixed = impl.fixed
         self.energy = impl.energy
         self.iterations = impl.iterations
         self.evaluations = impl.evaluations

@@ -132,6 +132,7 @@ class OptimizeResult:
     domain: Domain
     points: np.ndarray  # float (N, 2), every generator, in cvt2 --points-out order
     constrained: np.ndarray  # bool (N,)
+    fixed: np.ndarray  # bool (N,): fixed_points and conforming pairs
     energy: float
     iterations: int
     evaluations: int

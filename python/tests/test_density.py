@@ -204,6 +204,8 @@ def test_points_that_do_not_follow_the_density_are_redistributed(rectangle, algo
     fixed = cvt2.optimize(rectangle, uniform, density=step, max_iterations=0, fixed_points=[well])
     assert fixed.redistributed and len(fixed.points) == len(auto.points) + 1
     assert (fixed.points == well).all(axis=1).sum() == 1
+    assert np.array_equal(fixed.points[fixed.fixed], [well])  # named: not constrained, index -1
+    assert not fixed.constrained[fixed.fixed].any() and not auto.fixed.any()
 
 
 def test_redistribute_takes_auto_true_or_false(rectangle):

@@ -92,8 +92,14 @@ def test_bad_options(square):
     points = cvt2.random_points(square, 50, seed=1)
     with pytest.raises(ValueError, match="algorithm must be 'lbfgs' or 'lloyd', not 'newton'"):
         cvt2.optimize(square, points, algorithm="newton")
-    with pytest.raises(ValueError, match="move_ratio must be >= 0"):
+    with pytest.raises(ValueError, match="move_ratio must be a finite number >= 0, not -1"):
         cvt2.optimize(square, points, move_ratio=-1)
+    with pytest.raises(ValueError, match="move_ratio must be a finite number >= 0, not inf"):
+        cvt2.optimize(square, points, move_ratio=np.inf)  # said ">= 0, not inf"
+    for name in ("move_ratio", "time_limit", "lipschitz_k"):  # float() took "1" and True
+        for bad in ("1", True):
+            with pytest.raises(TypeError, match=f"{name} must be a number, not"):
+                cvt2.optimize(square, points, **{name: bad})
     with pytest.raises(ValueError, match="max_iterations must be >= 0"):
         cvt2.optimize(square, points, max_iterations=-5)
     with pytest.raises(TypeError, match="max_iterations must be an integer"):
