@@ -10,8 +10,6 @@
 #include <CVT_2/IO/write_cells.h>
 #include <CVT_2/IO/write_svg.h>
 
-#include "example_arguments.h"
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cstdlib>
@@ -23,17 +21,15 @@ using CDT = CVT_2::Cvt_triangulation_2<K>;  // CGAL's CDT with Bvd_face_base_2 f
 using BVD = CVT_2::Bounded_voronoi_diagram_2<CDT>;
 
 int main(int argc, char* argv[]) {
+  const std::string domain = argc > 1 ? argv[1] : CVT_2_DATA_DIR "/four_clusters.poly";
+  const std::string svg = argc > 3 ? argv[3] : "bvd_cells.svg";
   try {
-    const Example_arguments args(argc, argv, "bvd_cells DOMAIN [POINTS] [OUT.svg]", 3);
-    const std::string domain = args.text(0, CVT_2_DATA_DIR "/four_clusters.poly");
-    const std::string svg = args.text(2, "bvd_cells.svg");
     CDT cdt;
     const auto file = CVT_2::IO::read_domain(domain, cdt);  // .poly, .wkt or .geojson
     if (!file.repeated.empty())
       std::cerr << "bvd_cells: note: " << file.repeated[0] << " (" << file.repeated.size()
                 << " repeated points in all): merged\n";
-    const std::string points = args.text(1, "");
-    if (!points.empty()) CVT_2::IO::insert_points(cdt, CVT_2::IO::read_points<K::Point_2>(points));
+    if (argc > 2) CVT_2::IO::insert_points(cdt, CVT_2::IO::read_points<K::Point_2>(argv[2]));
     const BVD bvd(cdt);
     CVT_2::IO::write_cells(std::cout, bvd);
     if (!CVT_2::IO::write_svg(svg, bvd)) {

@@ -22,8 +22,6 @@
 #include <CVT_2/natural_neighbor_coordinates_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 
-#include "example_arguments.h"
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
@@ -32,6 +30,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -73,10 +72,10 @@ struct Opening {
 
 int main(int argc, char* argv[]) {
   try {
-    const Example_arguments args(argc, argv, "crack_growth [N] [STEPS] [OUT.txt]", 3);
-    const std::size_t n = args.count(0, "N", 100000);
-    const int steps = int(args.count(1, "STEPS", 60));
-    const std::string out = args.text(2, "crack_growth.txt");
+    const std::size_t n = argc > 1 ? std::stoul(argv[1]) : 100000;
+    const int steps = argc > 2 ? std::stoi(argv[2]) : 60;
+    if (steps < 1) throw std::invalid_argument("STEPS must be at least 1");
+    const std::string out = argc > 3 ? argv[3] : "crack_growth.txt";
     CVT_2::IO::Poly_data<Point> poly;
     poly.vertices = {Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1)};
     poly.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};

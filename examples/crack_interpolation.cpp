@@ -15,8 +15,6 @@
 #include <CVT_2/natural_neighbor_coordinates_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 
-#include "example_arguments.h"
-
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/interpolation_functions.h>
@@ -48,11 +46,14 @@ double field(const Point& p) {
 }
 
 int main(int argc, char* argv[]) {
+  const std::string out = argc > 1 ? argv[1] : "crack_interpolation.txt";
+  if (out.size() > 1 && out[0] == '-') {  // -h, --help: the usage, not a file of that name
+    std::cout << "usage: crack_interpolation [OUT.txt] [N] [GRID]\n";
+    return out == "-h" || out == "--help" ? EXIT_SUCCESS : EXIT_FAILURE;
+  }
   try {
-    const Example_arguments args(argc, argv, "crack_interpolation [OUT.txt] [N] [GRID]", 3);
-    const std::string out = args.text(0, "crack_interpolation.txt");
-    const std::size_t n = args.count(1, "N", 1500);
-    const int grid = int(args.count(2, "GRID", 300));
+    const std::size_t n = argc > 2 ? std::stoul(argv[2]) : 1500;
+    const int grid = argc > 3 ? std::stoi(argv[3]) : 300;
     // The square, and the crack as an inner constraint from (0, 0.5) to the tip.
     CVT_2::IO::Poly_data<Point> poly;
     poly.vertices = {Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1), Point(0, 0.5), tip};

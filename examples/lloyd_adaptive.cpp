@@ -11,8 +11,6 @@
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 
-#include "example_arguments.h"
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cstdlib>
@@ -24,14 +22,12 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CDT = CVT_2::Cvt_triangulation_2<K>;  // CGAL's CDT with Bvd_face_base_2 faces
 
 int main(int argc, char* argv[]) {
+  const std::string domain = argc > 1 ? argv[1] : CVT_2_DATA_DIR "/earcut_logo.poly";
+  const std::string svg = argc > 2 ? argv[2] : "lloyd_adaptive.svg";
   try {
-    const Example_arguments args(argc, argv,
-                                 "lloyd_adaptive [DOMAIN.poly] [OUT.svg] [N] [ITERATIONS] [K]", 5);
-    const std::string domain = args.text(0, CVT_2_DATA_DIR "/earcut_logo.poly");
-    const std::string svg = args.text(1, "lloyd_adaptive.svg");
-    const std::size_t n = args.count(2, "N", 1500);
-    const std::size_t iterations = args.count(3, "ITERATIONS", 1000, 0);
-    const double k = args.real(4, "K", 0.1);
+    const std::size_t n = argc > 3 ? std::stoul(argv[3]) : 1500;
+    const std::size_t iterations = argc > 4 ? std::stoul(argv[4]) : 1000;
+    const double k = argc > 5 ? std::stod(argv[5]) : 0.1;
     CDT cdt;
     CVT_2::IO::insert_poly(cdt, CVT_2::IO::read_poly<K::Point_2>(domain));
     // mu(x) = min over boundary edges s of k d(x, s) + length(s). Built before the generators

@@ -6,8 +6,6 @@
 #include <CVT_2/IO/write_svg.h>
 #include <CVT_2/Lloyd_optimizer_2.h>
 
-#include "example_arguments.h"
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cstdlib>
@@ -18,10 +16,9 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CDT = CVT_2::Cvt_triangulation_2<K>;  // CGAL's CDT with Bvd_face_base_2 faces
 
 int main(int argc, char* argv[]) {
+  const std::string domain = argc > 1 ? argv[1] : CVT_2_DATA_DIR "/four_clusters.poly";
+  const std::string prefix = argc > 2 ? argv[2] : "lloyd_four_clusters";
   try {
-    const Example_arguments args(argc, argv, "lloyd_four_clusters [DOMAIN.poly] [PREFIX]", 2);
-    const std::string domain = args.text(0, CVT_2_DATA_DIR "/four_clusters.poly");
-    const std::string prefix = args.text(1, "lloyd_four_clusters");
     CDT cdt;
     CVT_2::IO::insert_poly(cdt, CVT_2::IO::read_poly<K::Point_2>(domain));  // its free vertices
     CVT_2::Lloyd_optimizer_2<CDT> lloyd(cdt);                               // are the generators

@@ -9,8 +9,6 @@
 #include <CVT_2/lloyd_optimize_2.h>
 #include <CVT_2/random_points_in_domain_2.h>
 
-#include "example_arguments.h"
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cstdlib>
@@ -22,13 +20,11 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CDT = CVT_2::Cvt_triangulation_2<K>;  // CGAL's CDT with Bvd_face_base_2 faces
 
 int main(int argc, char* argv[]) {
+  const std::string domain = argc > 1 ? argv[1] : CVT_2_DATA_DIR "/square_inner_constraints.poly";
+  const std::string svg = argc > 2 ? argv[2] : "lloyd_uniform.svg";
   try {
-    const Example_arguments args(argc, argv,
-                                 "lloyd_uniform [DOMAIN.poly] [OUT.svg] [N] [ITERATIONS]", 4);
-    const std::string domain = args.text(0, CVT_2_DATA_DIR "/square_inner_constraints.poly");
-    const std::string svg = args.text(1, "lloyd_uniform.svg");
-    const std::size_t n = args.count(2, "N", 1000);
-    const std::size_t iterations = args.count(3, "ITERATIONS", 1000, 0);
+    const std::size_t n = argc > 3 ? std::stoul(argv[3]) : 1000;
+    const std::size_t iterations = argc > 4 ? std::stoul(argv[4]) : 1000;
     CDT cdt;
     CVT_2::IO::insert_poly(cdt, CVT_2::IO::read_poly<K::Point_2>(domain));
     CVT_2::insert_generators_2(

@@ -795,8 +795,7 @@ struct Segment_pieces {
     for (std::size_t k = 0; k < segment.size(); ++k) {
       const Point_2 a = ends[2 * k], b = ends[2 * k + 1];
       std::vector<Point_2> chain{a};
-      if (a == p || b == p ||
-          (CGAL::collinear(a, b, p) && CGAL::collinear_are_strictly_ordered_along_line(a, p, b)))
+      if (a == p || b == p || CVT_2::internal::is_bent_onto(p, a, a, b))  // on it, or snapped
         CVT_2::internal::for_each_edge_on_input_segments(
             cdt, std::vector<Point_2>{a, b},
             [&](CDT::Vertex_handle, CDT::Vertex_handle w, std::size_t) {
@@ -1438,10 +1437,11 @@ std::shared_ptr<Optimization> optimize(
       if (!shortfall.empty()) throw py::value_error(asked + ": " + shortfall);
     }
     // Points drawn as cvt2 draws them: none in the circles of conforming lines; with cells= or
-    // size=, dealt to the regions (those drawn again for the circles, with the next seeds, not).
-    const auto draw = [&](std::size_t count, std::uint64_t s) {
-      return choice.random_points(
-          *cdt, sizing, count, CVT_2::parameters::random_seed(s).by_region(counted && s == seed));
+    // size=, or in place of generators redistributed, dealt to the regions (those drawn again for
+    // the circles, with the next seeds, not).
+    const auto draw = [&](std::size_t count, std::uint64_t s, bool dealt) {
+      return choice.random_points(*cdt, sizing, count,
+                                  CVT_2::parameters::random_seed(s).by_region(dealt && s == seed));
     };
     // As cvt2 --redistribute: with a density, the free generators given replaced by as many
     // drawn from it, always or if they do not follow it.
@@ -1462,8 +1462,10 @@ std::shared_ptr<Optimization> optimize(
         if (counted)  // drawn with the others, below
           to_draw += given.size();
         else
-          CVT_2::insert_generators_2(*cdt,
-                                     CVT_2::draw_outside_disks_2(disks, given.size(), seed, draw));
+          CVT_2::insert_generators_2(
+              *cdt, CVT_2::draw_outside_disks_2(
+                        disks, given.size(), seed,
+                        [&](std::size_t count, std::uint64_t s) { return draw(count, s, true); }));
         out->redistributed = true;
         out->notes.push_back("the " + std::to_string(given.size()) +
                              " free generators (the points given and the domain's own) " +
@@ -1476,7 +1478,10 @@ std::shared_ptr<Optimization> optimize(
       }
     }
     if (to_draw > 0)
-      CVT_2::insert_generators_2(*cdt, CVT_2::draw_outside_disks_2(disks, to_draw, seed, draw));
+      CVT_2::insert_generators_2(
+          *cdt, CVT_2::draw_outside_disks_2(
+                    disks, to_draw, seed,
+                    [&](std::size_t count, std::uint64_t s) { return draw(count, s, counted); }));
     std::optional<CVT_2::Sliding_runs_2<CDT>> runs;
     if (slide) {
       runs.emplace(*domain->runs);
@@ -1509,7 +1514,7 @@ std::shared_ptr<Optimization> optimize(
     bvd.for_each_cell([&](CDT::Vertex_handle v, const auto&) {
       out->points.push_back(v->point());
       out->constrained.push_back(bvd.is_free(v) ? 0 : 1);
-      out->fixed.push_back(held.count(v->point()) != 0 ? 1 : 0);
+      out->fixed.push_back(bvd.is_free(v) && held.count(v->point()) != 0 ? 1 : 0);
       const auto it = row.find(&*v);
       out->input_index.push_back(it == row.end() ? -1 : it->second);
     });
@@ -1709,6 +1714,11 @@ PYBIND11_MODULE(_cvt2, m) {
       .def_property_readonly("notes", [](const Optimization& o) { return o.notes; })
       .def_property_readonly("density_response",
                              [](const Optimization& o) { return o.density_response; })
+      .def_property_readonly(
+          "density_response_error",
+          [](const Optimization& o) { return o.result.density_response.standard_error; })
+      .def_property_readonly("density_response_cells",
+                             [](const Optimization& o) { return o.result.density_response.cells; })
       .def_property_readonly("redistributed", [](const Optimization& o) { return o.redistributed; })
       .def("diagram", &Optimization::diagram, py::arg("threads") = 0);
 

@@ -274,8 +274,9 @@ class Constraint_editor_2 {
     finish_edit();
   }
 
-  /// the vertices of constraint `id`, in order along it (a removed one's: the vertices it had,
-  /// where they are now, as later edits and moves left them)
+  /// the vertices of constraint `id`, in order along it, the first again at the end of a closed
+  /// one (a removed one's: the vertices it had, where they are now, as later edits and moves
+  /// left them)
   /// \throws Domain_error if there is no constraint `id`
   const std::vector<Vertex_handle>& vertices_in_constraint(Constraint_id id) const {
     check_known(id, "vertices_in_constraint");

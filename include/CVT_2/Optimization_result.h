@@ -3,6 +3,8 @@
 #ifndef CVT_2_OPTIMIZATION_RESULT_H
 #define CVT_2_OPTIMIZATION_RESULT_H
 
+#include <CVT_2/Density_response.h>
+
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -13,15 +15,16 @@ namespace CVT_2 {
 /// Why an optimization stopped.
 enum Stop_reason {
   CONVERGED,  ///< every free generator's move ratio is below the bound (and `STALLED` is not)
-  /// every move ratio is below the bound, but the cells do not follow the density
-  /// (`Density_response::follows()` false): the generators are still on their
-  /// way across the domain, far from the optimum (points that do not follow the density, given
-  /// under one, stop so; `random_points_in_domain_2()` draws points that do)
-  STALLED,
   MAX_ITERATIONS_REACHED,   ///< `number_of_iterations` moves were done
   TIME_LIMIT_REACHED,       ///< `maximum_running_time` passed
   CALLBACK_REQUESTED_STOP,  ///< the callback returned `false`
-  NO_FREE_GENERATOR         ///< nothing can move
+  NO_FREE_GENERATOR,        ///< nothing can move
+  /// every move ratio is below the bound, but the cells do not follow the density
+  /// (`Density_response::is_followed()` false): the generators are still on their
+  /// way across the domain, far from the optimum (points that do not follow the density, given
+  /// under one, stop so; `random_points_in_domain_2()` draws points that do)
+  STALLED
+
 };
 
 /// \ingroup PkgCvt2Ref
@@ -48,24 +51,6 @@ inline const char* to_string(Stop_reason reason) {
   }
   return "unknown";
 }
-
-/// \ingroup PkgCvt2Ref
-/// How cells follow a density (`density_response_2()`): the least-squares slope of log(cell
-/// area) against log(density), about -1/2 for a centroidal tessellation, 0 for cells of one
-/// size, and its standard error (from the cells' scatter about the line; large where few cells
-/// take part). NaN where it cannot be measured.
-struct Density_response {
-  double slope = std::numeric_limits<double>::quiet_NaN();           ///< the slope
-  double standard_error = std::numeric_limits<double>::quiet_NaN();  ///< the slope's
-  std::size_t cells = 0;                                             ///< the cells measured
-  /// Whether the cells follow the density as a start for (or the result of) an optimization
-  /// must: unless the slope is above -1/4, half way from cells of one size to a centroidal
-  /// tessellation's, by two standard errors, over 100 cells or more. True if it cannot be
-  /// measured, or over fewer cells: the law is asymptotic, and a few large cells follow the
-  /// domain's shape as much as the density (optimal tessellations of 60 to 120 cells on a
-  /// figure-shaped domain have slopes up to +0.2; of 300 to 1 000, -0.34 to -0.56).
-  bool follows() const { return cells < 100 || !(slope - 2 * standard_error > -0.25); }
-};
 
 /// \ingroup PkgCvt2Ref
 /// What an optimization (`lloyd_optimize_2()`, `lbfgs_optimize_2()`) did. The figures describe

@@ -9,6 +9,7 @@
 #include <CVT_2/Optimization_result.h>
 #include <CVT_2/Uniform_density_2.h>
 #include <CVT_2/insert_generators_2.h>
+#include <CVT_2/internal/Handle_set.h>
 #include <CVT_2/internal/density_evaluation.h>
 
 #include <CGAL/Kernel/global_functions_2.h>
@@ -25,6 +26,15 @@
 
 namespace CVT_2 {
 
+namespace internal {
+struct Every_generator {
+  template <class Vertex_handle>
+  bool operator()(Vertex_handle) const {
+    return true;
+  }
+};
+}  // namespace internal
+
 /// \ingroup PkgCvt2Ref
 /// How the cells of the free generators of `bvd` follow the density `rho`: the least-squares
 /// slope of log(area of the cell) against log(rho at its generator), and its standard error. The
@@ -36,17 +46,21 @@ namespace CVT_2 {
 /// the density asks for, and the slope says so. `random_points_in_domain_2()` draws points that
 /// follow it.
 ///
-/// Only Voronoi cells over which rho is about constant take part: no constraint clips them (a
-/// clipped cell has the area the clip leaves), and rho at each vertex of the cell is within a
-/// factor 2 of rho at its generator (where rho varies within a cell, a feature smaller than the
-/// cells or a step, the law does not hold even at the optimum, and such a cell would say
-/// nothing of where its generator is). The slope is NaN if fewer than 3 cells take part, or if
+/// Only cells over which rho varies moderately take part: rho at each vertex of the cell within
+/// a factor 8 of rho at its generator (where rho varies more within a cell, a feature smaller
+/// than the cells or a step, the law does not hold even at the optimum, and such a cell would
+/// say nothing of where its generator is; cells near a boundary where the automatic sizing
+/// grows fast do, and must count). The slope is NaN if fewer than 3 cells take part, or if
 /// rho varies by less than a factor 2 over them (too little to measure). \throws Domain_error
 /// if a value of rho is not positive and finite, naming the point.
+/// `moves(v)` says which free generators take part: those an optimization moves (not its
+/// `fixed_points`, whose cells have the sizes their places give them); by default all.
 /// \tparam Diagram a `Bounded_voronoi_diagram_2`.
 /// \tparam Density a model of `DensityFunction_2` (one with the batch member is called once).
-template <class Diagram, class Density>
-Density_response density_response_2(const Diagram& bvd, const Density& rho) {
+/// \tparam Moves a predicate on `Diagram::Vertex_handle`.
+template <class Diagram, class Density, class Moves = internal::Every_generator>
+Density_response density_response_2(const Diagram& bvd, const Density& rho,
+                                    const Moves& moves = Moves()) {
   using K = typename Diagram::Triangulation::Geom_traits;
   using Point_2 = typename K::Point_2;
   using FT = typename K::FT;
@@ -55,9 +69,7 @@ Density_response density_response_2(const Diagram& bvd, const Density& rho) {
   std::vector<std::size_t> first;
   std::vector<double> log_areas;
   bvd.for_each_cell([&](auto v, const auto& cell) {
-    if (!bvd.is_free(v)) return;
-    for (const auto& c : cell)  // a cell clipped by a constraint has the area the clip left
-      if (c.type != Diagram::Cell_vertex::CIRCUMCENTER) return;
+    if (!bvd.is_free(v) || !moves(v)) return;
     // the fan from the generator, as Bvd_mesh_2::area(): no cancellation far from the origin
     double area = 0;
     for (std::size_t i = 0; i < cell.size(); ++i)
@@ -85,7 +97,7 @@ Density_response density_response_2(const Diagram& bvd, const Density& rho) {
     const double at_generator = std::log(CGAL::to_double(values[first[k]]));
     bool constant = true;
     for (std::size_t j = first[k] + 1; j < first[k + 1] && constant; ++j)
-      constant = std::abs(std::log(CGAL::to_double(values[j])) - at_generator) <= std::log(2.0);
+      constant = std::abs(std::log(CGAL::to_double(values[j])) - at_generator) <= std::log(8.0);
     if (!constant) continue;
     log_rho.push_back(at_generator);
     log_areas[kept++] = log_areas[k];
@@ -118,7 +130,7 @@ Density_response density_response_2(const Diagram& bvd, const Density& rho) {
 /// Whether the free generators of `bvd` are spread as a start for a centroidal tessellation of
 /// `rho` must be: `density_response_2()` not above -1/4, half way from cells of one size to a
 /// centroidal tessellation's, by two standard errors, or not defined (`Density_response::
-/// follows()`). Points that
+/// is_followed()`). Points that
 /// do not follow the density (uniform ones under a density that varies) take the optimizers
 /// hundreds of iterations to move across the domain, and the move ratios fall below 1% long
 /// before they arrive; points drawn by `random_points_in_domain_2()` follow it, and
@@ -126,9 +138,9 @@ Density_response density_response_2(const Diagram& bvd, const Density& rho) {
 /// module's `optimize(redistribute=)` replace them so by default).
 /// \tparam Diagram a `Bounded_voronoi_diagram_2`.
 /// \tparam Density a model of `DensityFunction_2`.
-template <class Diagram, class Density>
-bool follows_density_2(const Diagram& bvd, const Density& rho) {
-  return density_response_2(bvd, rho).follows();
+template <class Diagram, class Density, class Moves = internal::Every_generator>
+bool follows_density_2(const Diagram& bvd, const Density& rho, const Moves& moves = Moves()) {
+  return density_response_2(bvd, rho, moves).is_followed();
 }
 
 /// \ingroup PkgCvt2Ref
@@ -151,8 +163,11 @@ std::vector<typename CDT::Vertex_handle> generators_to_redistribute_2(const CDT&
                                                                       const PointRange& fixed,
                                                                       bool always = false) {
   std::vector<typename CDT::Vertex_handle> given = internal::movable_generators(cdt, fixed);
-  if (!given.empty() && !always && follows_density_2(Bounded_voronoi_diagram_2<CDT>(cdt), rho))
-    given.clear();
+  if (given.empty() || always) return given;
+  internal::Handle_set<typename CDT::Vertex_handle> moved;
+  for (const auto v : given) moved.insert(v);
+  const auto moves = [&moved](typename CDT::Vertex_handle v) { return moved.contains(v); };
+  if (follows_density_2(Bounded_voronoi_diagram_2<CDT>(cdt), rho, moves)) given.clear();
   return given;
 }
 
@@ -163,11 +178,15 @@ namespace internal {
 // uniform density has no response to measure.
 template <class CDT, class Traits, class Density>
 void judge_density_response(const CDT& cdt, const Traits& traits, const Density& rho,
+                            const std::vector<typename CDT::Vertex_handle>& fixed,
                             Optimization_result& r) {
   if constexpr (!std::is_same_v<Density, Uniform_density_2<typename CDT::Geom_traits>>) {
+    Handle_set<typename CDT::Vertex_handle> held;
+    for (const auto v : fixed) held.insert(v);
     r.density_response =
-        density_response_2(Bounded_voronoi_diagram_2<CDT, Traits>(cdt, traits), rho);
-    if (r.stop_reason == CONVERGED && !r.density_response.follows()) r.stop_reason = STALLED;
+        density_response_2(Bounded_voronoi_diagram_2<CDT, Traits>(cdt, traits), rho,
+                           [&held](typename CDT::Vertex_handle v) { return !held.contains(v); });
+    if (r.stop_reason == CONVERGED && !r.density_response.is_followed()) r.stop_reason = STALLED;
   }
 }
 
@@ -175,7 +194,7 @@ void judge_density_response(const CDT& cdt, const Traits& traits, const Density&
 // free generators were drawn from the density (or redistributed), so a start far from its
 // distribution is not the reason.
 inline std::string density_response_note(const Density_response& response, bool drawn) {
-  if (response.follows()) return {};
+  if (response.is_followed()) return {};
   char s[32];
   std::snprintf(s, sizeof s, "%.2f", response.slope);
   return std::string("the cells do not follow the density: their areas scale as density^") + s +

@@ -60,12 +60,13 @@ Optimization_result lbfgs_optimize_2(CDT& cdt, const NP& np = parameters::defaul
   Optimizer lbfgs(cdt, density, Policies::quadrature(np), options.lbfgs_memory,
                   Policies::traits(np));
   lbfgs.set_number_of_threads(options.threads);
-  lbfgs.fix_generators(internal::fixed_vertices(cdt, np));
+  const auto fixed = internal::fixed_vertices(cdt, np);
+  lbfgs.fix_generators(fixed);
   if (region) lbfgs.set_region(*region);
   internal::set_keep_out(lbfgs, np);
   internal::set_sliding_runs(lbfgs, np);
   Optimization_result r = internal::run_optimization(lbfgs, options, "lbfgs");
-  if (!region) internal::judge_density_response(cdt, Policies::traits(np), density, r);
+  if (!region) internal::judge_density_response(cdt, Policies::traits(np), density, fixed, r);
   return r;
 }
 

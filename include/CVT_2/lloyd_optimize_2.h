@@ -83,13 +83,14 @@ Optimization_result lloyd_optimize_2(CDT& cdt, const NP& np = parameters::defaul
   if (!region) internal::lay_out_faces(cdt, options);
   Optimizer lloyd(cdt, density, Policies::quadrature(np), Policies::traits(np));
   lloyd.set_number_of_threads(options.threads);
-  lloyd.fix_generators(internal::fixed_vertices(cdt, np));
+  const auto fixed = internal::fixed_vertices(cdt, np);
+  lloyd.fix_generators(fixed);
   if (region) lloyd.set_region(*region);
   internal::set_keep_out(lloyd, np);
   internal::set_sliding_runs(lloyd, np);
   Optimization_result r =
       internal::run_optimization(internal::Lloyd_steps<Optimizer>{lloyd}, options, "lloyd");
-  if (!region) internal::judge_density_response(cdt, Policies::traits(np), density, r);
+  if (!region) internal::judge_density_response(cdt, Policies::traits(np), density, fixed, r);
   return r;
 }
 

@@ -474,7 +474,8 @@ def optimize(
     - ``redistribute``: with a density, whether to replace the free generators given (``points``
       and the domain's own, not ``fixed_points``) by as many drawn from the density
       (:func:`random_points` with ``seed``): ``"auto"`` (the default) if their cells do not
-      follow it (``density_response`` above -1/4: uniform points under a density that varies,
+      follow it (``density_response`` above -1/4 by two standard errors, over 128 cells or
+      more: uniform points under a density that varies,
       from which the iteration would stop with every move ratio small, far from the optimum),
       ``True`` always, ``False`` never (``cvt2 --redistribute auto|always|never``). The result's
       ``redistributed`` says whether it did, and its ``input_index`` is then -1 for them;
@@ -863,18 +864,19 @@ class OptimizeResult:
       1 is the optimum for large N), as ``cvt2`` prints it;
     - ``iterations``, ``evaluations``: moves done, and diagrams evaluated;
     - ``stop_reason``: ``"converged"``, ``"stalled"`` (every move ratio below the stop, but
-      the cells do not follow the density: ``density_response`` above -0.25, far from the
-      optimum), ``"max_iterations"``, ``"time_limit"``, ``"callback"`` or
-      ``"no_free_generator"``;
+      the cells do not follow the density, far from the optimum: ``density_response`` above
+      -0.25 by two of its standard errors, ``density_response_error``, over 128 cells or more),
+      ``"max_iterations"``, ``"time_limit"``, ``"callback"`` or ``"no_free_generator"``;
     - ``energy_history``, ``max_move_ratio_history``, ``mean_move_ratio_history``: one value an
       iteration, the first before any move; ``max_move_ratio``, ``mean_move_ratio``: the last;
     - ``seconds``: the optimization's time, measured as ``cvt2`` prints ``seconds=``;
     - ``notes``: the points moved onto the boundary (``boundary_tolerance``), as ``cvt2`` notes
-      them, and, with a density, a note if the cells do not follow it (``density_response``
-      above -0.25): a list of strings, empty if none;
+      them, and, with a density, a note if the cells do not follow it (as for ``"stalled"``):
+      a list of strings, empty if none;
     - ``density_response``: with a density, the least-squares slope of log(cell area) against
-      log(density at the generator) over the free generators whose cells the density is about
-      constant over (within a factor 2): about -0.5 for a centroidal tessellation of the
+      log(density at the generator) over the free generators that move (not ``fixed``), the
+      density varying over their cells by a factor 8 at most, ``density_response_cells`` of
+      them: about -0.5 for a centroidal tessellation of the
       density (cell size ~ density**-1/4), 0 for cells of one size, as a uniform start keeps
       them long after every move ratio is below 1%; NaN without a density, or where it varies
       by less than a factor 2 over those cells (or within most cells: a feature smaller than
@@ -905,6 +907,8 @@ class OptimizeResult:
         self.seconds = impl.seconds
         self.notes = impl.notes
         self.density_response = impl.density_response
+        self.density_response_error = impl.density_response_error
+        self.density_response_cells = impl.density_response_cells
         self.input_index = impl.input_index
         self.redistributed = impl.redistributed
 

@@ -411,7 +411,7 @@ struct Conforming {
 };
 
 void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& sizing, CDT& cdt,
-                          const CVT_2::Conforming_disks<Point_2>& keep_out) {
+                          const CVT_2::Conforming_disks<Point_2>& keep_out, bool dealt) {
   if (n == 0) return;
   // What memory cannot hold is refused rather than killed after minutes of work.
   const std::string shortfall = CVT_2::internal::memory_shortfall(double(n), o.lbfgs);
@@ -421,10 +421,11 @@ void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& 
                                            : "--points") +
                       ": " + shortfall);
   const auto draw = [&](std::size_t count, std::uint64_t seed) {
-    // --cells and --size: cells of one size, region by region; -n: n points, as before. The
-    // points drawn again for those that fell in the circles of conforming lines, a few, are
-    // drawn independently: dealt, they would all go to the regions of largest remainder.
-    const bool by_region = (o.cells.has_value() || o.size.has_value()) && seed == o.seed;
+    // --cells and --size, or in place of generators redistributed (`dealt`): cells of one size,
+    // region by region; -n: n points, as before. The points drawn again for those that fell in
+    // the circles of conforming lines, a few, are drawn independently: dealt, they would all go
+    // to the regions of largest remainder.
+    const bool by_region = (o.cells.has_value() || o.size.has_value() || dealt) && seed == o.seed;
     return sizing.apply(
         CVT_2::parameters::random_seed(seed).by_region(by_region),
         [&](const auto& np) { return CVT_2::random_points_in_domain_2(cdt, count, np); });
@@ -964,7 +965,7 @@ int run(const Options& o) {
   n += redistributed;
   const bool drawn = redistributed > 0 || o.points_in.empty();  // for the density's note
   const std::size_t before = cdt.number_of_vertices();
-  insert_random_points(n, o, sizing, cdt, disks);
+  insert_random_points(n, o, sizing, cdt, disks, redistributed > 0);
   // Where the coordinates are coarse for the domain (a double near 1e15 is an eighth), drawn
   // points can fall on one another, and are merged.
   const std::size_t added = cdt.number_of_vertices() - before;

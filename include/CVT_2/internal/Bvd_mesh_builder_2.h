@@ -209,15 +209,25 @@ Bvd_mesh_builder_2<Diagram>::Bvd_mesh_builder_2(Mesh& mesh, const Diagram& bvd, 
     if (m_offsets[k + 1] - m_offsets[k] < 3)
       throw cannot_hold(
           k, "rounds to " + std::to_string(m_offsets[k + 1] - m_offsets[k]) + " vertices");
+  const auto fan = [&](const std::vector<Index>& ring, FT& scale) {  // scale: sum of |parts|
+    FT a = 0;
+    for (std::size_t j = 1; j + 1 < ring.size(); ++j) {
+      const FT part = CGAL::area(m_points[ring[0]], m_points[ring[j]], m_points[ring[j + 1]]);
+      a += part, scale += CGAL::abs(part);
+    }
+    return a;
+  };
   for (std::size_t k = 0; k < m_generators.size(); ++k) {
-    if (!m_constrained[k]) continue;  // polygons() keeps one ring's area: it drops no lobe
-    FT lobes = 0, scale = 0;          // (a fan's rounding: some 2^-52 of the sum of its parts)
-    for (const auto& ring : m_mesh.polygons(k))
-      for (std::size_t j = 1; j + 1 < ring.size(); ++j) {
-        const FT part = CGAL::area(m_points[ring[0]], m_points[ring[j]], m_points[ring[j + 1]]);
-        lobes += part, scale += CGAL::abs(part);
-      }
-    const FT area = m_mesh.area(k);
+    // polygons() cuts a cycle into lobes where it passes through the generator twice or more
+    const auto first = m_cell_vertices.begin() + std::ptrdiff_t(m_offsets[k]),
+               last = m_cell_vertices.begin() + std::ptrdiff_t(m_offsets[k + 1]);
+    if (std::count_if(first, last, [&](Index i) { return m_types[i] == Cell_vertex::GENERATOR; }) <
+        2)
+      continue;
+    FT scale = 0;  // a fan's rounding: some 2^-52 of it
+    const FT area = fan(std::vector<Index>(first, last), scale);
+    FT lobes = 0;
+    for (const auto& ring : m_mesh.polygons(k)) lobes += fan(ring, scale);
     if (CGAL::abs(lobes - area) > CGAL::abs(area) * 0x1.0p-20 + scale * 0x1.0p-40)
       throw cannot_hold(k, "loses a part to rounding");
   }
