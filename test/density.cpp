@@ -710,7 +710,7 @@ TEST_CASE("a stop whose cells do not follow the density is STALLED, not CONVERGE
     const auto uniform =
         run(square_grid(20, false), lbfgs, CVT_2::parameters::number_of_iterations(5));
     CHECK(uniform.stop_reason == CVT_2::CONVERGED);
-    CHECK(std::isnan(uniform.density_response.slope));
+    CHECK(uniform.density_response.cells == 0);  // not measured
     const auto limit = run(square_grid(20, false), lbfgs, density.move_ratio_bound(0));
     CHECK(limit.stop_reason == CVT_2::MAX_ITERATIONS_REACHED);
     CHECK(limit.density_response.slope == Approx(0).margin(0.02));
