@@ -56,7 +56,8 @@ struct Every_generator {
 /// `moves(v)` says which free generators take part: those an optimization moves (not its
 /// `fixed_points`, whose cells have the sizes their places give them); by default all.
 /// \tparam Diagram a `Bounded_voronoi_diagram_2`.
-/// \tparam Density a model of `DensityFunction_2` (one with the batch member is called once).
+/// \tparam Density a model of `DensityFunction_2` (one with the batch member is called with
+///         2^18 points at most).
 /// \tparam Moves a predicate on `Diagram::Vertex_handle`.
 template <class Diagram, class Density, class Moves = internal::Every_generator>
 Density_response density_response_2(const Diagram& bvd, const Density& rho,
@@ -86,7 +87,16 @@ Density_response density_response_2(const Diagram& bvd, const Density& rho,
   first.push_back(points.size());
   std::vector<FT> values;
   if constexpr (has_batch_evaluation_v<Density, K>) {
-    internal::evaluate_in_batch(rho, points, values);
+    // in batches of 2^18 points (4 MiB of coordinates), not one of millions
+    constexpr std::size_t batch = std::size_t(1) << 18;
+    std::vector<Point_2> some;
+    std::vector<FT> got;
+    for (std::size_t i = 0; i < points.size(); i += batch) {
+      some.assign(points.begin() + std::ptrdiff_t(i),
+                  points.begin() + std::ptrdiff_t(std::min(points.size(), i + batch)));
+      internal::evaluate_in_batch(rho, some, got);
+      values.insert(values.end(), got.begin(), got.end());
+    }
   } else {
     const internal::Checked_density<Density, Point_2> checked{rho};
     for (const Point_2& p : points) values.push_back(checked(p));
