@@ -65,7 +65,7 @@ Density_response density_response_2(const Diagram& bvd, const Density& rho,
   using K = typename Diagram::Triangulation::Geom_traits;
   using Point_2 = typename K::Point_2;
   using FT = typename K::FT;
-  // each cell's generator, then its vertices; `first[k]` where cell k's start
+  // each cell's generator, then its vertices; `first[k]`: where cell k's points start
   std::vector<Point_2> points;
   std::vector<std::size_t> first;
   std::vector<double> log_areas;
