@@ -1445,6 +1445,8 @@ std::shared_ptr<Optimization> optimize(
     };
     // As cvt2 --redistribute: with a density, the free generators given replaced by as many
     // drawn from it, always or if they do not follow it.
+    // for the density's note: whether every free generator is drawn from the density
+    const bool none_given = CVT_2::internal::movable_generators(*cdt, fixed).empty();
     if (redistribute == "always" && choice.kind == Density_choice::UNIFORM)
       out->notes.push_back(
           "redistribute=True: the density is uniform: the generators given are kept");
@@ -1520,7 +1522,7 @@ std::shared_ptr<Optimization> optimize(
     });
     out->density_response = out->result.density_response.slope;
     const std::string note = CVT_2::internal::density_response_note(
-        out->result.density_response, out->redistributed || points.empty());
+        out->result.density_response, out->redistributed || none_given);
     if (!note.empty()) out->notes.push_back(note);
     const std::string inside = CVT_2::internal::conforming_disks_note(*cdt, disks);
     if (!inside.empty()) out->notes.push_back(inside);  // as cvt2 says it

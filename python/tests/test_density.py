@@ -138,7 +138,8 @@ def test_cells_that_do_not_follow_the_density_say_so(rectangle):
     assert result.stop_reason == "stalled"
     assert not result.redistributed
     assert result.density_response > -0.25
-    assert any("do not follow the density" in note for note in result.notes)
+    assert any("do not follow the density" in note and "started far" in note
+               for note in result.notes)
     # From points drawn from the density, the cells follow it: no note, a slope near -1/2.
     drawn = cvt2.random_points(rectangle, 600, seed=4, density=step)
     result = cvt2.optimize(rectangle, drawn, density=step)

@@ -961,9 +961,11 @@ int run(const Options& o) {
       sizing.refinement->add_point(Point_2(x, y), std::min(size, background), radius);
     }
   }
+  // for the density's note: whether every free generator is drawn from the density
+  const bool none_given = CVT_2::internal::movable_generators(cdt, fixed).empty();
   const std::size_t redistributed = redistribute(o, sizing, fixed, cdt);
   n += redistributed;
-  const bool drawn = redistributed > 0 || o.points_in.empty();  // for the density's note
+  const bool drawn = redistributed > 0 || none_given;
   const std::size_t before = cdt.number_of_vertices();
   insert_random_points(n, o, sizing, cdt, disks, redistributed > 0);
   // Where the coordinates are coarse for the domain (a double near 1e15 is an eighth), drawn
