@@ -684,6 +684,36 @@ TEST_CASE("the density response is the slope of log(area) on log(density): 0, -1
   CHECK(CVT_2::internal::density_response_note(far, true).empty());
 }
 
+// The step of the tests below as a batch density (DensityFunction_2::evaluate()) that records
+// its calls.
+struct Recorded_step {
+  std::vector<std::size_t>* calls;  // the points of each call
+  double operator()(const Point& p) const { return p.x() > 0.5 ? 16.0 : 1.0; }
+  void evaluate(const std::vector<Point>& points, std::vector<double>& values) const {
+    calls->push_back(points.size());
+    values.clear();
+    for (const Point& p : points) values.push_back((*this)(p));
+  }
+};
+
+TEST_CASE("the density response calls a batch density with 2^18 points at most, to the same bits",
+          "[density]") {
+  // 56 250 square cells: a generator and four vertices each, some 292 000 points.
+  Domain d;
+  load_square(d);
+  CVT_2::insert_generators_2(d.cdt, square_grid(150, true));
+  std::vector<std::size_t> calls;
+  const CVT_2::Density_response batched =
+      CVT_2::density_response_2(Bvd(d.cdt), Recorded_step{&calls});
+  const CVT_2::Density_response single = CVT_2::density_response_2(
+      Bvd(d.cdt), [](const Point& p) { return p.x() > 0.5 ? 16.0 : 1.0; });
+  REQUIRE(calls.size() >= 2);
+  CHECK(*std::max_element(calls.begin(), calls.end()) <= (std::size_t(1) << 18));
+  CHECK(batched.slope == single.slope);
+  CHECK(batched.cells == single.cells);
+  CHECK(batched.slope == Approx(-0.5).margin(0.02));
+}
+
 TEST_CASE("a stop whose cells do not follow the density is STALLED, not CONVERGED", "[density]") {
   // Cells of one size on the unit square under a step density (16 on the right half): every
   // move ratio is 0 from the start (each cell's density is constant, its centroid its centre),
