@@ -1439,14 +1439,17 @@ std::shared_ptr<Optimization> optimize(
     // Points drawn as cvt2 draws them: none in the circles of conforming lines; with cells= or
     // size=, or in place of generators redistributed, dealt to the regions (those drawn again for
     // the circles, with the next seeds, not).
-    const auto draw = [&](std::size_t count, std::uint64_t s, bool dealt) {
-      return choice.random_points(*cdt, sizing, count,
-                                  CVT_2::parameters::random_seed(s).by_region(dealt && s == seed));
+    const auto draw = [&](bool dealt) {
+      return [&, dealt](std::size_t count, std::uint64_t s) {
+        return choice.random_points(
+            *cdt, sizing, count, CVT_2::parameters::random_seed(s).by_region(dealt && s == seed));
+      };
     };
     // As cvt2 --redistribute: with a density, the free generators given replaced by as many
     // drawn from it, always or if they do not follow it.
-    // for the density's note: whether every free generator is drawn from the density
-    const bool none_given = CVT_2::internal::movable_generators(*cdt, fixed).empty();
+    // for the density's note (a density only): whether every free generator is drawn from it
+    const bool none_given = choice.kind != Density_choice::UNIFORM &&
+                            CVT_2::internal::movable_generators(*cdt, fixed).empty();
     if (redistribute == "always" && choice.kind == Density_choice::UNIFORM)
       out->notes.push_back(
           "redistribute=True: the density is uniform: the generators given are kept");
@@ -1465,9 +1468,7 @@ std::shared_ptr<Optimization> optimize(
           to_draw += given.size();
         else
           CVT_2::insert_generators_2(
-              *cdt, CVT_2::draw_outside_disks_2(
-                        disks, given.size(), seed,
-                        [&](std::size_t count, std::uint64_t s) { return draw(count, s, true); }));
+              *cdt, CVT_2::draw_outside_disks_2(disks, given.size(), seed, draw(true)));
         out->redistributed = true;
         out->notes.push_back("the " + std::to_string(given.size()) +
                              " free generators (the points given and the domain's own) " +
@@ -1480,10 +1481,8 @@ std::shared_ptr<Optimization> optimize(
       }
     }
     if (to_draw > 0)
-      CVT_2::insert_generators_2(
-          *cdt, CVT_2::draw_outside_disks_2(
-                    disks, to_draw, seed,
-                    [&](std::size_t count, std::uint64_t s) { return draw(count, s, counted); }));
+      CVT_2::insert_generators_2(*cdt,
+                                 CVT_2::draw_outside_disks_2(disks, to_draw, seed, draw(counted)));
     std::optional<CVT_2::Sliding_runs_2<CDT>> runs;
     if (slide) {
       runs.emplace(*domain->runs);

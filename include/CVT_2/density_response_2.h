@@ -105,10 +105,10 @@ Density_response density_response_2(const Diagram& bvd, const Density& rho,
   std::size_t kept = 0;
   for (std::size_t k = 0; k + 1 < first.size(); ++k) {
     const double at_generator = std::log(CGAL::to_double(values[first[k]]));
-    bool constant = true;
-    for (std::size_t j = first[k] + 1; j < first[k + 1] && constant; ++j)
-      constant = std::abs(std::log(CGAL::to_double(values[j])) - at_generator) <= std::log(8.0);
-    if (!constant) continue;
+    bool moderate = true;  // within a factor 8 of its value at the generator all over
+    for (std::size_t j = first[k] + 1; j < first[k + 1] && moderate; ++j)
+      moderate = std::abs(std::log(CGAL::to_double(values[j])) - at_generator) <= std::log(8.0);
+    if (!moderate) continue;
     log_rho.push_back(at_generator);
     log_areas[kept++] = log_areas[k];
   }

@@ -961,8 +961,9 @@ int run(const Options& o) {
       sizing.refinement->add_point(Point_2(x, y), std::min(size, background), radius);
     }
   }
-  // for the density's note: whether every free generator is drawn from the density
-  const bool none_given = CVT_2::internal::movable_generators(cdt, fixed).empty();
+  // for the density's note (a density only): whether every free generator is drawn from it
+  const bool none_given = (sizing.lipschitz || sizing.refinement) &&
+                          CVT_2::internal::movable_generators(cdt, fixed).empty();
   const std::size_t redistributed = redistribute(o, sizing, fixed, cdt);
   n += redistributed;
   const bool drawn = redistributed > 0 || none_given;

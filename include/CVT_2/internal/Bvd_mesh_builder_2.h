@@ -209,10 +209,11 @@ Bvd_mesh_builder_2<Diagram>::Bvd_mesh_builder_2(Mesh& mesh, const Diagram& bvd, 
     if (m_offsets[k + 1] - m_offsets[k] < 3)
       throw cannot_hold(
           k, "rounds to " + std::to_string(m_offsets[k + 1] - m_offsets[k]) + " vertices");
-  const auto fan = [&](const std::vector<Index>& ring, FT& scale) {  // scale: sum of |parts|
+  // the area of the cycle [begin, end) (three indices or more), its parts' sizes into `scale`
+  const auto fan = [&](auto begin, auto end, FT& scale) {
     FT a = 0;
-    for (std::size_t j = 1; j + 1 < ring.size(); ++j) {
-      const FT part = CGAL::area(m_points[ring[0]], m_points[ring[j]], m_points[ring[j + 1]]);
+    for (auto j = begin + 1; j + 1 != end; ++j) {
+      const FT part = CGAL::area(m_points[*begin], m_points[*j], m_points[*(j + 1)]);
       a += part, scale += CGAL::abs(part);
     }
     return a;
@@ -225,9 +226,9 @@ Bvd_mesh_builder_2<Diagram>::Bvd_mesh_builder_2(Mesh& mesh, const Diagram& bvd, 
         2)
       continue;
     FT scale = 0;  // a fan's rounding: some 2^-52 of it
-    const FT area = fan(std::vector<Index>(first, last), scale);
+    const FT area = fan(first, last, scale);
     FT lobes = 0;
-    for (const auto& ring : m_mesh.polygons(k)) lobes += fan(ring, scale);
+    for (const auto& ring : m_mesh.polygons(k)) lobes += fan(ring.begin(), ring.end(), scale);
     if (CGAL::abs(lobes - area) > CGAL::abs(area) * 0x1.0p-20 + scale * 0x1.0p-40)
       throw cannot_hold(k, "loses a part to rounding");
   }
