@@ -1473,8 +1473,8 @@ std::shared_ptr<Optimization> optimize(
         out->notes.push_back("the " + std::to_string(given.size()) +
                              " free generators (the points given and the domain's own) " +
                              (redistribute == "auto"
-                                  ? "do not follow the density (their cells' areas do not "
-                                    "shrink as it grows)"
+                                  ? "do not follow the density (their cells' sizes, or "
+                                    "their counts in the regions between constraints)"
                                   : "are redistributed (redistribute=True)") +
                              ": replaced by as many drawn from the density (redistribute=False "
                              "keeps them)");
@@ -1720,6 +1720,9 @@ PYBIND11_MODULE(_cvt2, m) {
           [](const Optimization& o) { return o.result.density_response.standard_error; })
       .def_property_readonly("density_response_cells",
                              [](const Optimization& o) { return o.result.density_response.cells; })
+      .def_property_readonly(
+          "density_count_excess",
+          [](const Optimization& o) { return o.result.density_response.count_excess; })
       .def_property_readonly("redistributed", [](const Optimization& o) { return o.redistributed; })
       .def("diagram", &Optimization::diagram, py::arg("threads") = 0);
 

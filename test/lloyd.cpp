@@ -715,10 +715,10 @@ TEST_CASE("a density evaluated in batches gives the same bits as point by point"
           CHECK(batches == 0);
         } else {
           // One batch a chunk of faces (of cells under a quadrature rule) an evaluation, and
-          // one for the final cells' density response.
+          // two for the final density response: the cells', and the counties' masses.
           using Chunks = CVT_2::internal::Face_chunks<Cdt>;
           const std::size_t chunks = Chunks(d.cdt, Chunks::quadrature_chunk_size).size();
-          CHECK(batches == chunks * r.number_of_evaluations + 1);
+          CHECK(batches == chunks * r.number_of_evaluations + 2);
         }
         check_invariants(d.cdt, marks, 50);
         histories.push_back(r.energy_history);

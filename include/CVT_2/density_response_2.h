@@ -11,6 +11,7 @@
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/internal/Handle_set.h>
 #include <CVT_2/internal/density_evaluation.h>
+#include <CVT_2/internal/domain_regions.h>
 
 #include <CGAL/Kernel/global_functions_2.h>
 #include <CGAL/number_utils.h>
@@ -22,6 +23,7 @@
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <unordered_map>
 #include <vector>
 
 namespace CVT_2 {
@@ -33,6 +35,101 @@ struct Every_generator {
     return true;
   }
 };
+
+// The values of rho at `points`, checked: a batch density (DensityFunction_2::evaluate()) in
+// batches of 2^18 points (4 MiB of coordinates), not one of millions.
+template <class K, class Density>
+void density_values(const Density& rho, const std::vector<typename K::Point_2>& points,
+                    std::vector<typename K::FT>& values) {
+  using Point_2 = typename K::Point_2;
+  values.clear();
+  if constexpr (has_batch_evaluation_v<Density, K>) {
+    constexpr std::size_t batch = std::size_t(1) << 18;
+    std::vector<Point_2> some;
+    std::vector<typename K::FT> got;
+    for (std::size_t i = 0; i < points.size(); i += batch) {
+      some.assign(points.begin() + std::ptrdiff_t(i),
+                  points.begin() + std::ptrdiff_t(std::min(points.size(), i + batch)));
+      evaluate_in_batch(rho, some, got);
+      values.insert(values.end(), got.begin(), got.end());
+    }
+  } else {
+    const Checked_density<Density, Point_2> checked{rho};
+    for (const Point_2& p : points) values.push_back(checked(p));
+  }
+}
+
+// The point counts of the regions that the constraints of `cdt` separate (a county network's
+// counties, islands) into `out`, against those rho asks for: `moving(v)` says which free
+// generators count, the others hold their shares of their regions as random_points_in_domain_2()
+// deals them (region_weights()). A region of mass M (the integral of rho^(1/2), here by each
+// domain face's area and rho at its centroid) in c cells has an energy of about M^2 / c
+// (Gersho's law in 2D), least over the domain when c follows M. Nothing is measured with one
+// region, or fewer than Density_response::fewest_cells generators that count.
+template <class CDT, class Density, class Moving>
+void measure_region_counts(const CDT& cdt, const Density& rho, const Moving& moving,
+                           Density_response& out) {
+  using K = typename CDT::Geom_traits;
+  using Point_2 = typename K::Point_2;
+  using Face_handle = typename CDT::Face_handle;
+  // one region unless some constraint has the domain on both sides
+  bool inner = false;
+  for (auto e = cdt.constrained_edges_begin(); e != cdt.constrained_edges_end() && !inner; ++e) {
+    const Face_handle f = e->first, g = f->neighbor(e->second);
+    inner = f->is_inside_domain() && g->is_inside_domain() && !cdt.is_infinite(f) &&
+            !cdt.is_infinite(g);
+  }
+  if (!inner) return;
+  std::vector<Face_handle> faces;
+  std::unordered_map<Face_handle, std::size_t> index;
+  std::vector<std::size_t> face_region;
+  const std::size_t regions = domain_regions(cdt, faces, index, face_region);
+  if (regions < 2) return;
+  const auto counts = [&](typename CDT::Vertex_handle v) {
+    return !cdt.are_there_incident_constraints(v) && moving(v);
+  };
+  std::vector<double> count(regions, 0.0);
+  std::size_t n = 0;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    if (!counts(v)) continue;
+    const auto it = index.find(v->face());  // all its faces are the domain's, or none
+    if (it == index.end()) continue;
+    count[face_region[it->second]] += 1;
+    ++n;
+  }
+  if (n < Density_response::fewest_cells) return;
+  const Domain_triangles<Point_2> domain = domain_triangles(cdt);
+  std::vector<Point_2> centroids;
+  centroids.reserve(domain.triangles.size());
+  for (const auto& t : domain.triangles) centroids.push_back(CGAL::centroid(t[0], t[1], t[2]));
+  std::vector<typename K::FT> values;
+  density_values<K>(rho, centroids, values);
+  std::vector<double> mass(faces.size());
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    mass[f] = domain.area(domain.triangles[f]) * std::sqrt(CGAL::to_double(values[f]));
+  const Region_weights w =
+      region_weights(cdt, n, faces, index, face_region, regions, std::move(mass), domain,
+                     [&](typename CDT::Vertex_handle v) { return !counts(v); });
+  double free_mass = 0;  // the mass left to the points that count, region by region below
+  for (const double x : w.weight) free_mass += std::max(x, 0.0);
+  if (!(free_mass > 0 && w.cell_mass > 0)) return;
+  // the energy, over Gersho's constant, of the counts as they are and as rho asks
+  double as_they_are = 0, as_asked = 0, scatter = 0;
+  std::size_t compared = 0;
+  for (std::size_t r = 0; r < regions; ++r) {
+    if (!(w.mass[r] > 0)) continue;
+    const double held = std::max(0.0, (w.mass[r] - w.weight[r]) / w.cell_mass);  // in cells
+    const double asked = double(n) * std::max(w.weight[r], 0.0) / free_mass;
+    // a region with no cell at all would have an infinite energy: a quarter cell bounds it
+    as_they_are += w.mass[r] * w.mass[r] / std::max(held + count[r], 0.25);
+    as_asked += w.mass[r] * w.mass[r] / std::max(held + asked, 0.25);
+    scatter += (count[r] - asked) * (count[r] - asked) / std::max(asked, 1.0);
+    ++compared;
+  }
+  out.regions = compared;
+  out.count_excess = as_they_are / as_asked - 1;
+  out.count_dispersion = scatter / double(compared);
+}
 }  // namespace internal
 
 /// \ingroup PkgCvt2Ref
@@ -55,6 +152,13 @@ struct Every_generator {
 /// if a value of rho is not positive and finite, naming the point.
 /// `moves(v)` says which free generators take part: those an optimization moves (not its
 /// `fixed_points`, whose cells have the sizes their places give them); by default all.
+///
+/// Where constraints cut the domain into regions (a county network's counties, islands), no
+/// generator crosses from one to another, and the slope cannot see a region with too many
+/// points or too few: each region's cells follow rho among themselves. So the regions' counts
+/// of those free generators are compared too with the counts rho asks for, as
+/// `random_points_in_domain_2()` deals them (`Density_response::count_excess`), with 128 of
+/// them or more.
 /// \tparam Diagram a `Bounded_voronoi_diagram_2`.
 /// \tparam Density a model of `DensityFunction_2` (one with the batch member is called with
 ///         2^18 points at most).
@@ -65,6 +169,8 @@ Density_response density_response_2(const Diagram& bvd, const Density& rho,
   using K = typename Diagram::Triangulation::Geom_traits;
   using Point_2 = typename K::Point_2;
   using FT = typename K::FT;
+  Density_response out;
+  internal::measure_region_counts(bvd.triangulation(), rho, moves, out);
   // each cell's generator, then its vertices; `first[k]`: where cell k's points start
   std::vector<Point_2> points;
   std::vector<std::size_t> first;
@@ -82,25 +188,10 @@ Density_response density_response_2(const Diagram& bvd, const Density& rho,
     for (const auto& c : cell) points.push_back(c.point);
     log_areas.push_back(std::log(area));
   });
-  Density_response out;
   if (log_areas.size() < 3) return out;
   first.push_back(points.size());
   std::vector<FT> values;
-  if constexpr (has_batch_evaluation_v<Density, K>) {
-    // in batches of 2^18 points (4 MiB of coordinates), not one of millions
-    constexpr std::size_t batch = std::size_t(1) << 18;
-    std::vector<Point_2> some;
-    std::vector<FT> got;
-    for (std::size_t i = 0; i < points.size(); i += batch) {
-      some.assign(points.begin() + std::ptrdiff_t(i),
-                  points.begin() + std::ptrdiff_t(std::min(points.size(), i + batch)));
-      internal::evaluate_in_batch(rho, some, got);
-      values.insert(values.end(), got.begin(), got.end());
-    }
-  } else {
-    const internal::Checked_density<Density, Point_2> checked{rho};
-    for (const Point_2& p : points) values.push_back(checked(p));
-  }
+  internal::density_values<K>(rho, points, values);
   std::vector<double> log_rho;
   std::size_t kept = 0;
   for (std::size_t k = 0; k + 1 < first.size(); ++k) {
@@ -204,18 +295,42 @@ void judge_density_response(const CDT& cdt, const Traits& traits, const Density&
 // free generators were drawn from the density (or redistributed), so a start far from its
 // distribution is not the reason.
 inline std::string density_response_note(const Density_response& response, bool drawn) {
-  if (response.is_followed()) return {};
+  const bool cells = !response.is_followed_in_cells(), counts = !response.is_followed_by_counts();
+  if (!cells && !counts) return {};
   char s[32];
-  std::snprintf(s, sizeof s, "%.2f", response.slope);
-  return std::string("the cells do not follow the density: their areas scale as density^") + s +
-         ", a centroidal tessellation's as density^-0.50: far from the optimum. " +
-         (drawn ? "The points were drawn from the density: it varies faster than this many "
-                  "cells can follow, or the iteration stopped early (a smaller move ratio "
-                  "bound, more iterations)"
-                : "The points started far from the density's distribution and the iteration "
-                  "moves them across the domain slowly; start from points drawn from the "
-                  "density (random points with the same density), as redistribute='auto' "
-                  "(cvt2 --redistribute auto), the default, does");
+  std::string note;
+  if (cells) {
+    std::snprintf(s, sizeof s, "%.2f", response.slope);
+    note = std::string("the cells do not follow the density: their areas scale as density^") + s +
+           ", a centroidal tessellation's as density^-0.50";
+  }
+  if (counts) {
+    std::snprintf(s, sizeof s, "%.0f%%", 100 * response.count_excess);
+    note += std::string(cells ? "; and the " : "the ") + std::to_string(response.regions) +
+            " regions between constraints hold too many points or too few for the density "
+            "(their counts cost about " +
+            s + " more energy than counts that follow it, and no point crosses a constraint)";
+  }
+  note += ": far from the optimum. ";
+  if (!drawn)
+    return note +
+           (cells ? "The points started far from the density's distribution, and the "
+                    "iteration moves them across the domain slowly. "
+                  : "") +
+           "Start from points drawn from the density" +
+           (counts ? " and dealt to the regions by their masses" : "") +
+           " (random points with the same density" + (counts ? " and cells=" : "") +
+           "), as redistribute='auto' (cvt2 --redistribute auto), the default, does";
+  if (cells)
+    note +=
+        "The points were drawn from the density: it varies faster than this many cells can "
+        "follow, or the iteration stopped early (a smaller move ratio bound, more "
+        "iterations)";
+  if (counts)
+    note += std::string(cells ? "; deal" : "Deal") +
+            " the points to the regions by their masses (cvt2 --cells, random points with "
+            "cells=)";
+  return note;
 }
 
 }  // namespace internal

@@ -475,8 +475,9 @@ def optimize(
       and the domain's own, not ``fixed_points``) by as many drawn from the density
       (:func:`random_points` with ``seed``): ``"auto"`` (the default) if their cells do not
       follow it (``density_response`` above -1/4 by two standard errors, over 128 cells or
-      more: uniform points under a density that varies,
-      from which the iteration would stop with every move ratio small, far from the optimum),
+      more: uniform points under a density that varies, from which the iteration would stop
+      with every move ratio small, far from the optimum), or if the regions that constraints
+      separate hold too many of them or too few (``density_count_excess``),
       ``True`` always, ``False`` never (``cvt2 --redistribute auto|always|never``). The result's
       ``redistributed`` says whether it did, and its ``input_index`` is then -1 for them;
     - ``seed``: the seed of those points (an integer, 0 to 2**64 - 1);
@@ -865,7 +866,9 @@ class OptimizeResult:
     - ``iterations``, ``evaluations``: moves done, and diagrams evaluated;
     - ``stop_reason``: ``"converged"``, ``"stalled"`` (every move ratio below the stop, but
       the cells do not follow the density, far from the optimum: ``density_response`` above
-      -0.25 by two of its standard errors, ``density_response_error``, over 128 cells or more),
+      -0.25 by two of its standard errors, ``density_response_error``, over 128 cells or more;
+      or the regions between constraints hold too many points or too few, by
+      ``density_count_excess``),
       ``"max_iterations"``, ``"time_limit"``, ``"callback"`` or ``"no_free_generator"``;
     - ``energy_history``, ``max_move_ratio_history``, ``mean_move_ratio_history``: one value an
       iteration, the first before any move; ``max_move_ratio``, ``mean_move_ratio``: the last;
@@ -881,6 +884,13 @@ class OptimizeResult:
       them long after every move ratio is below 1%; NaN without a density, or where it varies
       by less than a factor 2 over those cells (or within most cells: a feature smaller than
       them);
+    - ``density_count_excess``: with a density, on a domain that constraints cut into regions
+      (counties, islands), the energy that the regions' counts of those generators cost over
+      counts that follow the density, as a fraction (Gersho's law: a region of mass M, the
+      integral of the density's square root, in c cells has an energy of about M**2 / c). No
+      generator crosses a constraint, so no iteration mends wrong counts; above 0.02, and
+      farther from the density's counts than independent draws from it would be, the stop is
+      ``"stalled"``. NaN with one region, or fewer than 128 generators;
     - ``input_index``: int (N,), for each generator, the row of the ``points`` given that it
       started from (the first of rows merged as duplicates), or -1 for a generator of the
       domain's own or one drawn in their place: ``points[input_index == i]`` is where input row
@@ -909,6 +919,7 @@ class OptimizeResult:
         self.density_response = impl.density_response
         self.density_response_error = impl.density_response_error
         self.density_response_cells = impl.density_response_cells
+        self.density_count_excess = impl.density_count_excess
         self.input_index = impl.input_index
         self.redistributed = impl.redistributed
 

@@ -149,6 +149,7 @@ class OptimizeResult:
     density_response: float  # slope of log(area) on log(density): -0.5 at a CVT, NaN uniform
     density_response_error: float  # its standard error
     density_response_cells: int  # the cells measured
+    density_count_excess: float  # energy the regions' point counts cost; NaN one region
     input_index: np.ndarray  # int (N,), the input row of each generator, -1 for the domain's
     redistributed: bool  # the points given were replaced by points drawn from the density
     @property

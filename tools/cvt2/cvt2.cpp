@@ -98,7 +98,7 @@ void print_help(std::ostream& os) {
         "                         the points its area (its mass, with a density) asks for,\n"
         "                         less the cells of the generators on its boundary and in it:\n"
         "                         no generator crosses a constraint, so these counts stay\n"
-        "                         as drawn\n"
+        "                         as drawn; -n's points are dealt so too under a density\n"
         "Boundary:\n"
         "      --boundary B       keep | resample | slide (default keep). keep: every vertex of\n"
         "                         DOMAIN is a generator. resample: the polylines are cut at\n"
@@ -421,11 +421,14 @@ void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& 
                                            : "--points") +
                       ": " + shortfall);
   const auto draw = [&](std::size_t count, std::uint64_t seed) {
-    // --cells and --size, or in place of generators redistributed (`dealt`): cells of one size,
-    // region by region; -n: n points, as before. The points drawn again for those that fell in
-    // the circles of conforming lines, a few, are drawn independently: dealt, they would all go
-    // to the regions of largest remainder.
-    const bool by_region = (o.cells.has_value() || o.size.has_value() || dealt) && seed == o.seed;
+    // --cells and --size, in place of generators redistributed (`dealt`), or under a density:
+    // cells of one size (of the density's), region by region; -n with a uniform density: n
+    // points, as before. The points drawn again for those that fell in the circles of
+    // conforming lines, a few, are drawn independently: dealt, they would all go to the regions
+    // of largest remainder.
+    const bool density = sizing.lipschitz || sizing.refinement;
+    const bool by_region =
+        (o.cells.has_value() || o.size.has_value() || dealt || density) && seed == o.seed;
     return sizing.apply(
         CVT_2::parameters::random_seed(seed).by_region(by_region),
         [&](const auto& np) { return CVT_2::random_points_in_domain_2(cdt, count, np); });
@@ -454,8 +457,8 @@ std::size_t redistribute(const Options& o, const Sizing_choice& sizing,
   CVT_2::remove_generators_2(cdt, given);
   std::cerr << "cvt2: note: the " << given.size()
             << " free generators (--points-in's and the domain's own) "
-            << (o.redistribute == "auto" ? "do not follow the density (their cells' areas do "
-                                           "not shrink as it grows)"
+            << (o.redistribute == "auto" ? "do not follow the density (their cells' sizes, or "
+                                           "their counts in the regions between constraints)"
                                          : "are redistributed (--redistribute always)")
             << ": replaced by as many drawn from the density (--redistribute never keeps them)\n";
   return given.size();
