@@ -23,7 +23,6 @@
 #include <limits>
 #include <string>
 #include <type_traits>
-#include <unordered_map>
 #include <vector>
 
 namespace CVT_2 {
@@ -80,43 +79,48 @@ void measure_region_counts(const CDT& cdt, const Density& rho, const Moving& mov
             !cdt.is_infinite(g);
   }
   if (!inner) return;
-  std::vector<Face_handle> faces;
-  std::unordered_map<Face_handle, std::size_t> index;
-  std::vector<std::size_t> face_region;
-  const std::size_t regions = domain_regions(cdt, faces, index, face_region);
-  if (regions < 2) return;
+  const Domain_regions<CDT> d = domain_regions(cdt);
+  if (d.regions < 2) return;
   const auto counts = [&](typename CDT::Vertex_handle v) {
     return !cdt.are_there_incident_constraints(v) && moving(v);
   };
-  std::vector<double> count(regions, 0.0);
+  std::vector<double> count(d.regions, 0.0);
   std::size_t n = 0;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
     if (!counts(v)) continue;
-    const auto it = index.find(v->face());  // all its faces are the domain's, or none
-    if (it == index.end()) continue;
-    count[face_region[it->second]] += 1;
+    const std::size_t f = d.find(cdt, v->face());  // all its faces are the domain's, or none
+    if (f == d.faces.size()) continue;
+    count[d.region[f]] += 1;
     ++n;
   }
   if (n < Density_response::fewest_cells) return;
-  const Domain_triangles<Point_2> domain = domain_triangles(cdt);
+  // each face's mass: its area times rho^(1/2) at its centroid, rho in batches
+  const Domain_scale<Point_2> scale = domain_triangles(cdt, false);
+  std::vector<double> mass(d.faces.size());
+  constexpr std::size_t batch = std::size_t(1) << 18;
   std::vector<Point_2> centroids;
-  centroids.reserve(domain.triangles.size());
-  for (const auto& t : domain.triangles) centroids.push_back(CGAL::centroid(t[0], t[1], t[2]));
   std::vector<typename K::FT> values;
-  density_values<K>(rho, centroids, values);
-  std::vector<double> mass(faces.size());
-  for (std::size_t f = 0; f < faces.size(); ++f)
-    mass[f] = domain.area(domain.triangles[f]) * std::sqrt(CGAL::to_double(values[f]));
-  const Region_weights w =
-      region_weights(cdt, n, faces, index, face_region, regions, std::move(mass), domain,
-                     [&](typename CDT::Vertex_handle v) { return !counts(v); });
+  for (std::size_t first = 0; first < d.faces.size(); first += batch) {
+    const std::size_t end = std::min(d.faces.size(), first + batch);
+    centroids.clear();
+    for (std::size_t f = first; f < end; ++f) {
+      const auto t = face_triangle(d.faces[f]);
+      centroids.push_back(CGAL::centroid(t[0], t[1], t[2]));
+    }
+    density_values<K>(rho, centroids, values);
+    for (std::size_t f = first; f < end; ++f)
+      mass[f] =
+          scale.area(face_triangle(d.faces[f])) * std::sqrt(CGAL::to_double(values[f - first]));
+  }
+  const Region_weights w = region_weights(
+      cdt, n, d, std::move(mass), scale, [&](typename CDT::Vertex_handle v) { return !counts(v); });
   double free_mass = 0;  // the mass left to the points that count, region by region below
   for (const double x : w.weight) free_mass += std::max(x, 0.0);
   if (!(free_mass > 0 && w.cell_mass > 0)) return;
   // the energy, over Gersho's constant, of the counts as they are and as rho asks
   double as_they_are = 0, as_asked = 0, scatter = 0;
   std::size_t compared = 0;
-  for (std::size_t r = 0; r < regions; ++r) {
+  for (std::size_t r = 0; r < d.regions; ++r) {
     if (!(w.mass[r] > 0)) continue;
     const double held = std::max(0.0, (w.mass[r] - w.weight[r]) / w.cell_mass);  // in cells
     const double asked = double(n) * std::max(w.weight[r], 0.0) / free_mass;

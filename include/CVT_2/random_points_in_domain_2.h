@@ -20,7 +20,6 @@
 #include <random>
 #include <string>
 #include <type_traits>
-#include <unordered_map>
 #include <vector>
 
 namespace CVT_2 {
@@ -175,18 +174,16 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   std::iota(piece.begin(), piece.end(), std::size_t(0));
   std::vector<std::size_t> range_end{pieces->size()}, quota{n};
   if (choose_parameter(get_parameter(np, by_region_t()), false)) {
-    std::vector<typename CDT::Face_handle> faces;
-    std::unordered_map<typename CDT::Face_handle, std::size_t> index;
-    std::vector<std::size_t> region;
-    const std::size_t regions = internal::domain_regions(cdt, faces, index, region);
+    const internal::Domain_regions<CDT> regions = internal::domain_regions(cdt);
+    const std::vector<std::size_t>& region = regions.region;
     const auto face = [&](std::size_t k) { return face_of.empty() ? k : face_of[k]; };
-    std::vector<double> face_mass(faces.size(), 0.0);
+    std::vector<double> face_mass(regions.faces.size(), 0.0);
     for (std::size_t k = 0; k < piece.size(); ++k) face_mass[face(k)] += mass[k];
-    quota = internal::region_quotas(cdt, n, faces, index, region, regions, face_mass, domain, seed);
+    quota = internal::region_quotas(cdt, n, regions, face_mass, domain, seed);
     std::stable_sort(piece.begin(), piece.end(), [&](std::size_t a, std::size_t b) {
       return region[face(a)] < region[face(b)];
     });
-    range_end.assign(regions, 0);
+    range_end.assign(regions.regions, 0);
     for (const std::size_t k : piece) ++range_end[region[face(k)]];
     std::partial_sum(range_end.begin(), range_end.end(), range_end.begin());
   }

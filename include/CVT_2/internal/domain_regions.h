@@ -5,6 +5,7 @@
 #ifndef CVT_2_INTERNAL_DOMAIN_REGIONS_H
 #define CVT_2_INTERNAL_DOMAIN_REGIONS_H
 
+#include <CVT_2/internal/layout/Handle_numbering.h>
 #include <CVT_2/internal/parallel/Interrupt_scope.h>
 
 #include <CGAL/number_utils.h>
@@ -16,19 +17,17 @@
 #include <cstdint>
 #include <numeric>
 #include <random>
-#include <unordered_map>
 #include <vector>
 
 namespace CVT_2 {
 namespace internal {
 
-// The triangles of the domain, with lengths measured in units of 2^e, the domain's scale, so
-// that areas and squared lengths neither underflow nor overflow (a domain 1e-300 wide is not
-// empty). Areas only weigh the triangles against each other.
+// Lengths measured in units of 2^e, the domain's scale, so that areas and squared lengths
+// neither underflow nor overflow (a domain 1e-300 wide is not empty). Areas only weigh the
+// triangles against each other.
 template <class Point_2>
-struct Domain_triangles {
+struct Domain_scale {
   using Triangle = std::array<Point_2, 3>;
-  std::vector<Triangle> triangles;
   int e = 0;
 
   double dx(const Point_2& a, const Point_2& b) const {
@@ -60,14 +59,26 @@ struct Domain_triangles {
   }
 };
 
+// The triangles of the domain, at its scale.
+template <class Point_2>
+struct Domain_triangles : Domain_scale<Point_2> {
+  std::vector<std::array<Point_2, 3>> triangles;
+};
+
+template <class Face_handle>
+auto face_triangle(Face_handle f) {
+  return std::array{f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()};
+}
+
+// The domain's scale, and its triangles if `triangles`.
 template <class CDT>
-Domain_triangles<typename CDT::Point_2> domain_triangles(const CDT& cdt) {
+Domain_triangles<typename CDT::Point_2> domain_triangles(const CDT& cdt, bool triangles = true) {
   Domain_triangles<typename CDT::Point_2> d;
   double extent = 0;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!f->is_inside_domain()) continue;
-    const auto& t = d.triangles.emplace_back(
-        std::array{f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()});
+    const auto t = face_triangle(f);
+    if (triangles) d.triangles.push_back(t);
     for (int i = 1; i < 3; ++i)
       extent = std::max({extent, std::abs(CGAL::to_double(t[i].x() - t[0].x())),
                          std::abs(CGAL::to_double(t[i].y() - t[0].y()))});
@@ -76,38 +87,51 @@ Domain_triangles<typename CDT::Point_2> domain_triangles(const CDT& cdt) {
   return d;
 }
 
-// The domain's faces, in the order of domain_triangles(), their positions there, and the region
-// of each: the faces joined across edges that are not constraints. Returns the number of
-// regions.
+// The domain's faces, in the order of domain_triangles(), each numbered with its place there
+// (in the face's id where it has one) and given its region: the faces joined across edges that
+// are not constraints.
 template <class CDT>
-std::size_t domain_regions(const CDT& cdt, std::vector<typename CDT::Face_handle>& faces,
-                           std::unordered_map<typename CDT::Face_handle, std::size_t>& index,
-                           std::vector<std::size_t>& face_region) {
+struct Domain_regions {
   using Face_handle = typename CDT::Face_handle;
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-    if (f->is_inside_domain()) index.emplace(f, faces.size()), faces.push_back(f);
-  const std::size_t none = faces.size();
-  face_region.assign(faces.size(), none);
+  std::vector<Face_handle> faces;
+  Handle_numbering<Face_handle> index;
+  std::vector<std::size_t> region;  // of each face
   std::size_t regions = 0;
+  // the place of f among `faces`, or faces.size() if f is not the domain's
+  std::size_t find(const CDT& cdt, Face_handle f) const {
+    return !cdt.is_infinite(f) && f->is_inside_domain() ? index.get(f) : faces.size();
+  }
+};
+
+template <class CDT>
+Domain_regions<CDT> domain_regions(const CDT& cdt) {
+  using Face_handle = typename CDT::Face_handle;
+  Domain_regions<CDT> d;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (f->is_inside_domain()) d.faces.push_back(f);
+  d.index.reserve(d.faces.size());
+  for (std::size_t k = 0; k < d.faces.size(); ++k) d.index.set(d.faces[k], k);
+  const std::size_t none = d.faces.size();
+  d.region.assign(d.faces.size(), none);
   std::vector<std::size_t> stack;
-  for (std::size_t seed = 0; seed < faces.size(); ++seed) {
-    if (face_region[seed] != none) continue;
-    face_region[seed] = regions;
+  for (std::size_t seed = 0; seed < d.faces.size(); ++seed) {
+    if (d.region[seed] != none) continue;
+    d.region[seed] = d.regions;
     stack.assign(1, seed);
     while (!stack.empty()) {
-      const Face_handle f = faces[stack.back()];
+      const Face_handle f = d.faces[stack.back()];
       stack.pop_back();
       for (int i = 0; i < 3; ++i) {
         if (cdt.is_constrained(typename CDT::Edge(f, i))) continue;
-        const auto it = index.find(f->neighbor(i));
-        if (it == index.end() || face_region[it->second] != none) continue;
-        face_region[it->second] = regions;
-        stack.push_back(it->second);
+        const std::size_t g = d.find(cdt, f->neighbor(i));
+        if (g == none || d.region[g] != none) continue;
+        d.region[g] = d.regions;
+        stack.push_back(g);
       }
     }
-    ++regions;
+    ++d.regions;
   }
-  return regions;
+  return d;
 }
 
 // The free points' shares of the regions that the constraints separate (by_region): region r
@@ -135,17 +159,19 @@ struct Region_weights {
 };
 
 template <class CDT, class Holds>
-Region_weights region_weights(
-    const CDT& cdt, std::size_t n, const std::vector<typename CDT::Face_handle>& faces,
-    const std::unordered_map<typename CDT::Face_handle, std::size_t>& index,
-    const std::vector<std::size_t>& face_region, std::size_t regions, std::vector<double> mass,
-    const Domain_triangles<typename CDT::Point_2>& domain, const Holds& holds) {
+Region_weights region_weights(const CDT& cdt, std::size_t n, const Domain_regions<CDT>& d,
+                              std::vector<double> mass,
+                              const Domain_scale<typename CDT::Point_2>& scale,
+                              const Holds& holds) {
   using Face_handle = typename CDT::Face_handle;
+  const std::vector<Face_handle>& faces = d.faces;
+  const std::vector<std::size_t>& face_region = d.region;
+  const std::size_t regions = d.regions;
   Region_weights out;
   double& total = out.total;
   total = std::accumulate(mass.begin(), mass.end(), 0.0);
   if (!(total > 0 && total < HUGE_VAL)) {  // a density of no mass or an infinite one: by area
-    for (std::size_t f = 0; f < faces.size(); ++f) mass[f] = domain.area(domain.triangles[f]);
+    for (std::size_t f = 0; f < faces.size(); ++f) mass[f] = scale.area(face_triangle(faces[f]));
     total = std::accumulate(mass.begin(), mass.end(), 0.0);
   }
   std::vector<double>& region_mass = out.mass;
@@ -157,7 +183,7 @@ Region_weights region_weights(
   const auto face_at = [&](const auto v) {
     auto fc = cdt.incident_faces(v), done = fc;
     do
-      if (const auto it = index.find(fc); it != index.end()) return it->second;
+      if (const std::size_t f = d.find(cdt, fc); f < faces.size()) return f;
     while (++fc != done);
     return faces.size();
   };
@@ -186,7 +212,7 @@ Region_weights region_weights(
       if (!cut[t]) continue;  // (an edge to the infinite vertex is never a constraint)
       const auto& a = f->vertex(CDT::ccw(j))->point();
       const auto& b = f->vertex(CDT::cw(j))->point();
-      length[t] = std::hypot(domain.dx(a, b), domain.dy(a, b));
+      length[t] = std::hypot(scale.dx(a, b), scale.dy(a, b));
     }
     const auto first_cut = std::find(cut.begin(), cut.end(), char(1));
     if (first_cut == cut.end()) {  // a generator inside a region: a whole cell
@@ -199,10 +225,10 @@ Region_weights region_weights(
     double wedge_mass = 0, wedge_area = 0;
     for (std::size_t s = 1; s <= k; ++s) {
       const std::size_t t = (t0 + s) % k;
-      if (const auto it = index.find(around[t]); it != index.end()) {
-        region = face_region[it->second];
-        wedge_mass += mass[it->second];
-        wedge_area += domain.area(domain.triangles[it->second]);
+      if (const std::size_t f = d.find(cdt, around[t]); f < faces.size()) {
+        region = face_region[f];
+        wedge_mass += mass[f];
+        wedge_area += scale.area(face_triangle(faces[f]));
       }
       if (!cut[t]) continue;
       if (region < regions && wedge_mass > 0) {
@@ -222,13 +248,13 @@ Region_weights region_weights(
 // The free points' shares of the regions (region_weights(), every generator holding), rounded
 // to whole points by largest remainder.
 template <class CDT>
-std::vector<std::size_t> region_quotas(
-    const CDT& cdt, std::size_t n, const std::vector<typename CDT::Face_handle>& faces,
-    const std::unordered_map<typename CDT::Face_handle, std::size_t>& index,
-    const std::vector<std::size_t>& face_region, std::size_t regions, std::vector<double> mass,
-    const Domain_triangles<typename CDT::Point_2>& domain, std::uint64_t seed) {
-  const Region_weights w = region_weights(cdt, n, faces, index, face_region, regions,
-                                          std::move(mass), domain, [](auto) { return true; });
+std::vector<std::size_t> region_quotas(const CDT& cdt, std::size_t n, const Domain_regions<CDT>& d,
+                                       std::vector<double> mass,
+                                       const Domain_scale<typename CDT::Point_2>& scale,
+                                       std::uint64_t seed) {
+  const std::size_t regions = d.regions;
+  const Region_weights w =
+      region_weights(cdt, n, d, std::move(mass), scale, [](auto) { return true; });
   std::vector<double> weight = w.weight;
   double sum = 0;
   for (double& x : weight) sum += (x = std::max(x, 0.0));
