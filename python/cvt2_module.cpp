@@ -1455,12 +1455,13 @@ std::shared_ptr<Optimization> optimize(
           "redistribute=True: the density is uniform: the generators given are kept");
     if (redistribute != "never" && choice.kind != Density_choice::UNIFORM) {
       const bool always = redistribute == "always";
+      CVT_2::Density_response response;
       const std::vector<CDT::Vertex_handle> given =
           choice.kind == Density_choice::LIPSCHITZ
               ? CVT_2::generators_to_redistribute_2(
-                    *cdt, CVT_2::make_sizing_field_density_2<K>(*sizing), fixed, always)
+                    *cdt, CVT_2::make_sizing_field_density_2<K>(*sizing), fixed, always, &response)
               : CVT_2::generators_to_redistribute_2(*cdt, Python_density{choice.function, false},
-                                                    fixed, always);
+                                                    fixed, always, &response);
       if (!given.empty()) {
         for (const auto v : given) row.erase(&*v);  // before their addresses may be reused
         CVT_2::remove_generators_2(*cdt, given);
@@ -1473,9 +1474,9 @@ std::shared_ptr<Optimization> optimize(
         out->notes.push_back("the " + std::to_string(given.size()) +
                              " free generators (the points given and the domain's own) " +
                              (redistribute == "auto"
-                                  ? "do not follow the density (their cells' sizes, or "
-                                    "their counts in the regions between constraints)"
-                                  : "are redistributed (redistribute=True)") +
+                                  ? "do not follow the density (" +
+                                        CVT_2::internal::density_response_reason(response) + ")"
+                                  : std::string("are redistributed (redistribute=True)")) +
                              ": replaced by as many drawn from the density (redistribute=False "
                              "keeps them)");
       }

@@ -76,8 +76,9 @@ class Bvd_face_base_2 : public Fb {
   /// tags the face as seeing its circumcenter
   void clear_blinding() { m_bits &= ~index_mask; }
 
-  /// A number for the algorithms that number faces (`Bvd_mesh_2` numbers the circumcenters
-  /// with it), below `max_id`.
+  /// A number for the algorithms that number faces, below `max_id`: `Bvd_mesh_2` numbers the
+  /// circumcenters with it, `random_points_in_domain_2()` and `density_response_2()` the
+  /// domain's faces. Each overwrites it.
   std::size_t id() const { return m_bits >> id_shift; }
   /// sets `id()`. \pre `i <= max_id`
   void set_id(std::size_t i) {

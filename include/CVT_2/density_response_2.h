@@ -64,21 +64,13 @@ void density_values(const Density& rho, const std::vector<typename K::Point_2>& 
 // deals them (region_weights()). A region of mass M (the integral of rho^(1/2), here by each
 // domain face's area and rho at its centroid) in c cells has an energy of about M^2 / c
 // (Gersho's law in 2D), least over the domain when c follows M. Nothing is measured with one
-// region, or fewer than Density_response::fewest_cells generators that count.
+// region (islands are regions too), or fewer than Density_response::fewest_cells generators
+// that count.
 template <class CDT, class Density, class Moving>
 void measure_region_counts(const CDT& cdt, const Density& rho, const Moving& moving,
                            Density_response& out) {
   using K = typename CDT::Geom_traits;
   using Point_2 = typename K::Point_2;
-  using Face_handle = typename CDT::Face_handle;
-  // one region unless some constraint has the domain on both sides
-  bool inner = false;
-  for (auto e = cdt.constrained_edges_begin(); e != cdt.constrained_edges_end() && !inner; ++e) {
-    const Face_handle f = e->first, g = f->neighbor(e->second);
-    inner = f->is_inside_domain() && g->is_inside_domain() && !cdt.is_infinite(f) &&
-            !cdt.is_infinite(g);
-  }
-  if (!inner) return;
   const Domain_regions<CDT> d = domain_regions(cdt);
   if (d.regions < 2) return;
   const auto counts = [&](typename CDT::Vertex_handle v) {
@@ -118,7 +110,7 @@ void measure_region_counts(const CDT& cdt, const Density& rho, const Moving& mov
   for (const double x : w.weight) free_mass += std::max(x, 0.0);
   if (!(free_mass > 0 && w.cell_mass > 0)) return;
   // the energy, over Gersho's constant, of the counts as they are and as rho asks
-  double as_they_are = 0, as_asked = 0, scatter = 0;
+  double as_they_are = 0, as_asked = 0;
   std::size_t compared = 0;
   for (std::size_t r = 0; r < d.regions; ++r) {
     if (!(w.mass[r] > 0)) continue;
@@ -127,12 +119,10 @@ void measure_region_counts(const CDT& cdt, const Density& rho, const Moving& mov
     // a region with no cell at all would have an infinite energy: a quarter cell bounds it
     as_they_are += w.mass[r] * w.mass[r] / std::max(held + count[r], 0.25);
     as_asked += w.mass[r] * w.mass[r] / std::max(held + asked, 0.25);
-    scatter += (count[r] - asked) * (count[r] - asked) / std::max(asked, 1.0);
     ++compared;
   }
   out.regions = compared;
   out.count_excess = as_they_are / as_asked - 1;
-  out.count_dispersion = scatter / double(compared);
 }
 }  // namespace internal
 
@@ -261,18 +251,20 @@ bool follows_density_2(const Diagram& bvd, const Density& rho, const Moves& move
 /// \param rho the density (not evaluated with `always`).
 /// \param fixed a range of points, each a generator of `cdt`, that stay.
 /// \param always whether to replace them whether they follow rho or not.
+/// \param response if not null, gets what `density_response_2()` found (not with `always`).
 /// \throws std::invalid_argument naming a point of `fixed` that is not a generator.
 template <class CDT, class Density, class PointRange>
-std::vector<typename CDT::Vertex_handle> generators_to_redistribute_2(const CDT& cdt,
-                                                                      const Density& rho,
-                                                                      const PointRange& fixed,
-                                                                      bool always = false) {
+std::vector<typename CDT::Vertex_handle> generators_to_redistribute_2(
+    const CDT& cdt, const Density& rho, const PointRange& fixed, bool always = false,
+    Density_response* response = nullptr) {
   std::vector<typename CDT::Vertex_handle> given = internal::movable_generators(cdt, fixed);
   if (given.empty() || always) return given;
   internal::Handle_set<typename CDT::Vertex_handle> moved;
   for (const auto v : given) moved.insert(v);
   const auto moves = [&moved](typename CDT::Vertex_handle v) { return moved.contains(v); };
-  if (follows_density_2(Bounded_voronoi_diagram_2<CDT>(cdt), rho, moves)) given.clear();
+  const Density_response r = density_response_2(Bounded_voronoi_diagram_2<CDT>(cdt), rho, moves);
+  if (response) *response = r;
+  if (r.is_followed()) given.clear();
   return given;
 }
 
@@ -295,6 +287,15 @@ void judge_density_response(const CDT& cdt, const Traits& traits, const Density&
   }
 }
 
+// Why points do not follow the density, for a note on their redistribution: what
+// `response.is_followed()` found.
+inline std::string density_response_reason(const Density_response& response) {
+  const bool cells = !response.is_followed_in_cells(), counts = !response.is_followed_by_counts();
+  return std::string(cells ? "their cells' areas do not shrink as it grows" : "") +
+         (cells && counts ? ", and " : "") +
+         (counts ? "the regions between constraints hold too many of them or too few" : "");
+}
+
 // A note for a result whose cells do not follow the density, empty otherwise; `drawn`: the
 // free generators were drawn from the density (or redistributed), so a start far from its
 // distribution is not the reason.
@@ -310,9 +311,9 @@ inline std::string density_response_note(const Density_response& response, bool 
   }
   if (counts) {
     std::snprintf(s, sizeof s, "%.0f%%", 100 * response.count_excess);
-    note += std::string(cells ? "; and the " : "the ") + std::to_string(response.regions) +
-            " regions between constraints hold too many points or too few for the density "
-            "(their counts cost about " +
+    note += std::string(cells ? "; and of the " : "of the ") + std::to_string(response.regions) +
+            " regions between constraints, some hold too many points or too few for the "
+            "density (the counts cost at least about " +
             s + " more energy than counts that follow it, and no point crosses a constraint)";
   }
   note += ": far from the optimum. ";

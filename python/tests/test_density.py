@@ -359,6 +359,32 @@ def test_wrong_counts_between_regions_are_a_stall_and_redistributed():
     rectangle = cvt2.Domain([[0, 0], [2, 0], [2, 1], [0, 1]], [[0, 1], [1, 2], [2, 3], [3, 0]])
     one = cvt2.optimize(rectangle, wrong, density=two_squares_density, max_iterations=0)
     assert np.isnan(one.density_count_excess)
+    assert any("regions between constraints hold too many of them or too few" in n
+               for n in auto.notes)  # why they were replaced
+    # Islands are regions too: the same squares half a unit apart.
+    islands = cvt2.Domain([[0, 0], [1, 0], [1, 1], [0, 1], [2, 0], [3, 0], [3, 1], [2, 1]],
+                          [[0, 1], [1, 2], [2, 3], [3, 0], [4, 5], [5, 6], [6, 7], [7, 4]])
+    apart = wrong + np.where(wrong[:, :1] > 1, [1.0, 0.0], [0.0, 0.0])
+
+    def island_density(xy):
+        return two_squares_density(np.where(xy[:, :1] > 1.5, xy - [1.0, 0.0], xy))
+
+    kept = cvt2.optimize(islands, apart, density=island_density, redistribute=False)
+    assert kept.stop_reason == "stalled"
+    assert kept.density_count_excess == pytest.approx(1 / 3, abs=0.05)
+    assert cvt2.optimize(islands, apart, density=island_density).redistributed
+
+
+def test_random_points_under_a_density_are_dealt_to_the_regions(data):
+    # n= deals them as cells= does (cvt2 -n under a density does too): the same bits.
+    kentucky = cvt2.Domain.from_file(data / "us_kentucky_counties.poly")
+    n = cvt2.random_points(kentucky, 1000, seed=4, density="lipschitz")
+    cells = cvt2.random_points(kentucky, seed=4, density="lipschitz",
+                               cells=1000 + kentucky.own_cells)
+    assert np.array_equal(n, cells)
+    # without a density, independently, as before
+    assert not np.array_equal(cvt2.random_points(kentucky, 1000, seed=4),
+                              cvt2.random_points(kentucky, seed=4, cells=1000 + kentucky.own_cells))
 
 
 def test_cvt2_deals_its_points_to_the_counties_under_a_density(program, data, tmp_path):
@@ -378,4 +404,4 @@ def test_cvt2_deals_its_points_to_the_counties_under_a_density(program, data, tm
                           "lipschitz", "--redistribute", "never"],
                          check=True, capture_output=True, text=True)
     assert "stop=stalled" in run.stdout
-    assert "regions between constraints hold too many points or too few" in run.stderr
+    assert "regions between constraints, some hold too many points or too few" in run.stderr

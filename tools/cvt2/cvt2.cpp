@@ -129,8 +129,10 @@ void print_help(std::ostream& os) {
         "                         (lipschitz, --refine), replace the points of --points-in and\n"
         "                         DOMAIN by as many drawn from the density (--seed): always, or\n"
         "                         (auto) if their cells do not follow it (areas scaling as\n"
-        "                         density^s, s > -1/4; a centroidal tessellation's: -1/2), from\n"
-        "                         where the iteration would stop far from the optimum\n"
+        "                         density^s, s > -1/4; a centroidal tessellation's: -1/2), or\n"
+        "                         the regions between constraints hold counts that cost over\n"
+        "                         2% of the energy: the iteration would stop far from the\n"
+        "                         optimum\n"
         "      --time-limit T     stop after T seconds (default 0: no limit)\n"
         "      --threads N        threads (default 0: one per core); the result is the same\n"
         "Outputs (written only when the optimization succeeded; an existing file is replaced,\n"
@@ -447,9 +449,10 @@ std::size_t redistribute(const Options& o, const Sizing_choice& sizing,
                  "lipschitz, no --refine): the generators given are kept\n";
   if (o.redistribute == "never" || (!sizing.lipschitz && !sizing.refinement)) return 0;
   const bool always = o.redistribute == "always";
+  CVT_2::Density_response response;
   const auto to_replace = [&](const auto& mu) {
     return CVT_2::generators_to_redistribute_2(cdt, CVT_2::make_sizing_field_density_2<K>(mu),
-                                               fixed, always);
+                                               fixed, always, &response);
   };
   const auto given =
       sizing.lipschitz ? to_replace(*sizing.lipschitz) : to_replace(*sizing.refinement);
@@ -457,9 +460,10 @@ std::size_t redistribute(const Options& o, const Sizing_choice& sizing,
   CVT_2::remove_generators_2(cdt, given);
   std::cerr << "cvt2: note: the " << given.size()
             << " free generators (--points-in's and the domain's own) "
-            << (o.redistribute == "auto" ? "do not follow the density (their cells' sizes, or "
-                                           "their counts in the regions between constraints)"
-                                         : "are redistributed (--redistribute always)")
+            << (o.redistribute == "auto"
+                    ? "do not follow the density (" +
+                          CVT_2::internal::density_response_reason(response) + ")"
+                    : std::string("are redistributed (--redistribute always)"))
             << ": replaced by as many drawn from the density (--redistribute never keeps them)\n";
   return given.size();
 }
