@@ -12,7 +12,8 @@ namespace CVT_2 {
 /// How cells follow a density (`density_response_2()`): the least-squares slope of log(cell
 /// area) against log(density), about -1/2 for a centroidal tessellation, 0 for cells of one
 /// size, and its standard error (from the cells' scatter about the line; large where few cells
-/// take part). NaN where it cannot be measured.
+/// take part), NaN where it cannot be measured; and, on a domain that constraints cut into
+/// regions, the energy that the regions' point counts cost.
 struct Density_response {
   double slope = std::numeric_limits<double>::quiet_NaN();           ///< the slope
   double standard_error = std::numeric_limits<double>::quiet_NaN();  ///< the slope's
@@ -28,10 +29,11 @@ struct Density_response {
   std::size_t regions = 0;
   /// The energy that the regions' point counts cost over counts that follow the density, as a
   /// fraction: by Gersho's law a region of mass M (the integral of the density's square root)
-  /// in c cells has an energy of about M^2 / c, least when the counts follow M. About 0 for
-  /// counts dealt as the density asks (a little below 0 at times: the counts asked for are
-  /// those `random_points_in_domain_2()` deals, not this law's exact minimum); NaN where not
-  /// measured. A lower bound where a region keeps few cells: its boundary generators' cells
+  /// in c cells has an energy of about M^2 / c, least when the counts follow M. The reference
+  /// is the counts `random_points_in_domain_2()` deals by region: 0 for them, below 0 for
+  /// counts the law prefers (it may, by a point or two a region, where regions hold few);
+  /// NaN where not measured. A lower bound where a region keeps few cells: its boundary
+  /// generators' cells
   /// are strips, not the compact cells of the law (a county emptied of its 59 points costs 117%,
   /// not the 33% predicted).
   double count_excess = std::numeric_limits<double>::quiet_NaN();

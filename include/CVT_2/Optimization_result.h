@@ -20,9 +20,10 @@ enum Stop_reason {
   CALLBACK_REQUESTED_STOP,  ///< the callback returned `false`
   NO_FREE_GENERATOR,        ///< nothing can move
   /// every move ratio is below the bound, but the cells do not follow the density
-  /// (`Density_response::is_followed()` false): the generators are still on their
-  /// way across the domain, far from the optimum (points that do not follow the density, given
-  /// under one, stop so; `random_points_in_domain_2()` draws points that do)
+  /// (`Density_response::is_followed()` false): the generators are still on their way across
+  /// the domain, or the regions between constraints hold too many of them or too few, which no
+  /// move mends; far from the optimum either way (points that do not follow the density, given
+  /// under one, stop so; `random_points_in_domain_2()` draws points that do, dealt by region)
   STALLED
 
 };

@@ -21,7 +21,8 @@ namespace CVT_2 {
 /// density that is not uniform, a run over the whole domain measures how the final cells follow
 /// it (`density_response_2()`): a stop with every move ratio below the bound whose cells do not
 /// is `STALLED`, not `CONVERGED` (the move ratios see local moves only, and from points that do
-/// not follow the density they fall below 1% long before the cells have the sizes it asks for).
+/// not follow the density they fall below 1% long before the cells have the sizes it asks for;
+/// nor do they see regions between constraints with too many points or too few).
 ///
 /// \param cdt a constrained Delaunay triangulation with its domain marked (see
 ///        `Bounded_voronoi_diagram_2`); its free vertices are moved in place. If

@@ -105,7 +105,8 @@ const Point_2& nearest_vertex(const std::array<Point_2, 3>& t, const Point_2& p)
 ///        or infinite), then drawn in each; the regions
 ///        then have the number of cells their area asks for, which the optimization cannot
 ///        change (no generator crosses a constraint): independent draws leave a region of k
-///        cells about sqrt(k) cells off (default false: independent draws, as before).
+///        cells about sqrt(k) cells off (default false: independent draws, as before). It
+///        numbers the domain's faces in their `id()` (`Bvd_face_base_2`).
 /// \throws Domain_error if the domain is empty; the density's own errors.
 template <class CDT, class NP = No_named_parameters>
 std::vector<typename CDT::Point_2> random_points_in_domain_2(

@@ -362,7 +362,7 @@ def random_points(
       has the cells its area asks for: no generator crosses a constraint, so the optimization
       cannot move cells between regions. ``n=`` points are dealt so too under a density (as
       ``cvt2 -n`` deals them; before December 2026 they were drawn independently, and a
-      county network's counties got up to 10% more energy), and drawn independently without;
+      county network's counties got 7-13% more energy), and drawn independently without;
     - ``seed``: the seed (an integer, 0 to 2**64 - 1): the same seed gives the same points on
       every platform;
     - ``density``: the density the points will be optimized under (:func:`optimize`'s
@@ -392,7 +392,8 @@ def random_points(
         density,
         _number(lipschitz_k, "lipschitz_k"),
         _optional_number(boundary_size, "boundary_size"),
-        by_region=cells is not None or density is not None,
+        by_region=cells is not None or not (density is None or isinstance(density, str)
+                                            and density == "uniform"),
     )
 
 
@@ -889,9 +890,9 @@ class OptimizeResult:
       (counties, islands), the energy that the regions' counts of those generators cost over
       counts that follow the density, as a fraction (Gersho's law: a region of mass M, the
       integral of the density's square root, in c cells has an energy of about M**2 / c). No
-      generator crosses a constraint, so no iteration mends wrong counts; above 0.02, and
-      farther from the density's counts than independent draws from it would be, the stop is
-      ``"stalled"``. NaN with one region, or fewer than 128 generators;
+      generator crosses a constraint, so no iteration mends wrong counts; above 0.02 the stop
+      is ``"stalled"``. A lower bound where a region keeps few cells. NaN with one region, or
+      fewer than 128 generators;
     - ``input_index``: int (N,), for each generator, the row of the ``points`` given that it
       started from (the first of rows merged as duplicates), or -1 for a generator of the
       domain's own or one drawn in their place: ``points[input_index == i]`` is where input row
