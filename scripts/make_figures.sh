@@ -99,10 +99,6 @@ PYTHONPATH="$build/python" /usr/bin/python3 "$root/python/examples/density_respo
   density_response.png
 pngquant --force --output "$fig/density_response.png" 64 density_response.png
 
-PYTHONPATH="$build/python" /usr/bin/python3 "$root/python/examples/region_counts.py" \
-  region_counts.png
-pngquant --force --output "$fig/region_counts.png" 64 region_counts.png
-
 PYTHONPATH="$build/python" /usr/bin/python3 "$root/python/examples/resample.py" "$data" \
   resample.png
 pngquant --force --output "$fig/resample.png" 64 resample.png
