@@ -165,7 +165,8 @@ int main(int argc, char* argv[]) {
     if (fs::is_directory(out, error))
       problem = "is a directory";
     else if (!fs::is_directory(folder, error))
-      problem = "is in no directory";
+      problem = error ? "is in a directory that cannot be checked (" + error.message() + ")"
+                      : "is in no directory";
     if (!problem.empty()) {
       std::cerr << "bvd_edit: --cells-out " << cells_out << ' ' << problem << '\n';
       return EXIT_FAILURE;
