@@ -1436,14 +1436,13 @@ std::shared_ptr<Optimization> optimize(
           CVT_2::internal::memory_shortfall(double(to_draw), algorithm == "lbfgs");
       if (!shortfall.empty()) throw py::value_error(asked + ": " + shortfall);
     }
-    // Points drawn as cvt2 draws them: none in the circles of conforming lines; with cells= or
-    // size=, or in place of generators redistributed, dealt to the regions (those drawn again for
-    // the circles, with the next seeds, not).
-    const auto draw = [&](bool dealt) {
-      return [&, dealt](std::size_t count, std::uint64_t s) {
-        return choice.random_points(
-            *cdt, sizing, count, CVT_2::parameters::random_seed(s).by_region(dealt && s == seed));
-      };
+    // Points drawn as cvt2 draws them: none in the circles of conforming lines (drawn again in
+    // their regions); with cells= or size=, or in place of generators redistributed, dealt to
+    // the regions.
+    const auto draw = [&](std::size_t count, bool dealt) {
+      return choice.random_points(
+          *cdt, sizing, count,
+          CVT_2::parameters::random_seed(seed).by_region(dealt).keep_out(disks));
     };
     // As cvt2 --redistribute: with a density, the free generators given replaced by as many
     // drawn from it, always or if they do not follow it.
@@ -1468,8 +1467,7 @@ std::shared_ptr<Optimization> optimize(
         if (counted)  // drawn with the others, below
           to_draw += given.size();
         else
-          CVT_2::insert_generators_2(
-              *cdt, CVT_2::draw_outside_disks_2(disks, given.size(), seed, draw(true)));
+          CVT_2::insert_generators_2(*cdt, draw(given.size(), true));
         out->redistributed = true;
         out->notes.push_back("the " + std::to_string(given.size()) +
                              " free generators (the points given and the domain's own) " +
@@ -1481,9 +1479,7 @@ std::shared_ptr<Optimization> optimize(
                              "keeps them)");
       }
     }
-    if (to_draw > 0)
-      CVT_2::insert_generators_2(*cdt,
-                                 CVT_2::draw_outside_disks_2(disks, to_draw, seed, draw(counted)));
+    if (to_draw > 0) CVT_2::insert_generators_2(*cdt, draw(to_draw, counted));
     std::optional<CVT_2::Sliding_runs_2<CDT>> runs;
     if (slide) {
       runs.emplace(*domain->runs);

@@ -709,9 +709,8 @@ TEST_CASE(
   std::vector<Point> fixed;
   for (const auto& p : pairs) fixed.push_back(p.left), fixed.push_back(p.right);
   CVT_2::insert_generators_2(
-      cdt, CVT_2::draw_outside_disks_2(disks, 1000 - fixed.size(), 1, [&](std::size_t n, auto s) {
-        return CVT_2::random_points_in_domain_2(cdt, n, CVT_2::parameters::random_seed(s));
-      }));
+      cdt, CVT_2::random_points_in_domain_2(cdt, 1000 - fixed.size(),
+                                            CVT_2::parameters::random_seed(1).keep_out(disks)));
   CVT_2::lloyd_optimize_2(cdt, CVT_2::parameters::fixed_points(fixed).keep_out(disks));
   std::size_t inside = 0;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)

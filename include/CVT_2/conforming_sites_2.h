@@ -80,8 +80,9 @@ Conforming_sites<Point_2> conforming_sites_2(const std::vector<Point_2>& line, d
 
 /// \ingroup PkgCvt2Ref
 /// The circles of conforming lines (`Conforming_sites::radii` around the nodes), to keep other
-/// generators out of: a random start drawn there is drawn again elsewhere, since a free
-/// generator at a node is a fixed point of Lloyd's iteration that breaks the line's faces.
+/// generators out of: a random start drawn there is drawn again elsewhere
+/// (`random_points_in_domain_2()` with `keep_out`), since a free generator at a node is a fixed
+/// point of Lloyd's iteration that breaks the line's faces.
 template <class Point_2>
 class Conforming_disks {
  public:
@@ -143,26 +144,6 @@ class Conforming_disks {
   }
   internal::Circle_grid m_grid;
 };
-
-/// \ingroup PkgCvt2Ref
-/// `n` random points, none in a circle of `disks`: `draw(count, seed)` (`count` points from
-/// `seed`: `random_points_in_domain_2()` with a density, say) with `seed`, then as many as lay
-/// in a circle drawn again with each next seed, up to 63 times (a point may stay in one after
-/// that). The points `cvt2` starts from beside conforming lines.
-template <class Point_2, class Draw>
-std::vector<Point_2> draw_outside_disks_2(const Conforming_disks<Point_2>& disks, std::size_t n,
-                                          std::uint64_t seed, Draw draw) {
-  std::vector<Point_2> points = draw(n, seed);
-  for (std::uint64_t next = seed + 1; next != seed + 64 && !disks.empty(); ++next) {
-    const auto kept = std::remove_if(points.begin(), points.end(),
-                                     [&](const Point_2& p) { return disks.contains(p); });
-    if (kept == points.end()) break;
-    points.erase(kept, points.end());
-    const std::vector<Point_2> more = draw(n - points.size(), next);
-    points.insert(points.end(), more.begin(), more.end());
-  }
-  return points;
-}
 
 /// \ingroup PkgCvt2Ref
 /// The two generators mirrored across a step of a conforming line, and the line's number.

@@ -106,7 +106,10 @@ const Point_2& nearest_vertex(const std::array<Point_2, 3>& t, const Point_2& p)
 ///        then have the number of cells their area asks for, which the optimization cannot
 ///        change (no generator crosses a constraint): independent draws leave a region of k
 ///        cells about sqrt(k) cells off (default false: independent draws, as before). It
-///        numbers the domain's faces in their `id()` (`Bvd_face_base_2`).
+///        numbers the domain's faces in their `id()` (`Bvd_face_base_2`);
+///        `keep_out(disks)` (an object with `bool contains(const Point_2&) const`, such as
+///        `Conforming_disks`): a point drawn where `disks.contains()` it is drawn again in
+///        its region, up to 63 times (then kept), so that the regions keep their counts.
 /// \throws Domain_error if the domain is empty; the density's own errors.
 template <class CDT, class NP = No_named_parameters>
 std::vector<typename CDT::Point_2> random_points_in_domain_2(
@@ -192,10 +195,17 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   double total = 0;
   for (std::size_t i = 0; i < piece.size(); ++i) cumulative[i] = total += mass[piece[i]];
   // Rounding may put a point drawn by a boundary edge just outside the domain face its piece
-  // was cut from (a piece's cut points are rounded too): it is drawn again. A needle thinner
-  // than double precision can resolve (a vertex at 1e124 among vertices at 10) holds almost no
-  // double point and would reject draws forever: after 64 misses in a row, the vertex of the
-  // face nearest to the draw is taken instead.
+  // was cut from (a piece's cut points are rounded too): it is drawn again, and so is a point
+  // in a circle to keep out of, in its region. A needle thinner than double precision can
+  // resolve (a vertex at 1e124 among vertices at 10) holds almost no double point and would
+  // reject draws forever: after 64 misses in a row, the vertex of the face nearest to the draw
+  // is taken instead (or the point in a circle kept).
+  const auto kept_out = [&](const Point_2& p) {
+    if constexpr (has_parameter<NP, keep_out_t>)
+      return get_parameter(np, keep_out_t()).contains(p);
+    else
+      return false;
+  };
   std::vector<Point_2> points;
   points.reserve(n);
   for (std::size_t r = 0; r < quota.size(); ++r) {
@@ -215,7 +225,7 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
       const Triangle& face = face_of.empty() ? (*pieces)[k] : domain.triangles[face_of[k]];
       const Point_2 p = internal::random_point_in_triangle((*pieces)[k], rng);
       const bool inside = internal::in_closed_triangle(face, p);
-      if (!inside && ++misses < 64) continue;
+      if (!(inside && !kept_out(p)) && ++misses < 64) continue;
       points.push_back(inside ? p : internal::nearest_vertex(face, p));
       misses = 0;
       ++drawn;

@@ -1,6 +1,7 @@
 # Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
 # A Python density: called with batches of points (a chunk of cells' quadrature points, not one
 # point at a time), deterministic whatever the threads, and it shapes the cells.
+import json
 import subprocess
 import threading
 
@@ -418,3 +419,35 @@ def test_cvt2_deals_its_points_to_the_counties_under_a_density(program, data, tm
     run = subprocess.run([program, str(kentucky), "--points-in", str(given), "--density",
                           "lipschitz"], check=True, capture_output=True, text=True)
     assert "stop=converged" in run.stdout and "replaced" not in run.stderr
+
+
+def test_points_kept_out_of_conforming_circles_stay_in_their_regions(program, tmp_path):
+    # A square cut in four by slits, a conforming river in two quadrants: a point drawn in a
+    # river's circle is drawn again in its own quadrant, so the two quadrants without a river
+    # keep the counts dealt to them, as without the rivers. Drawn again anywhere, they took
+    # 10-20 too many and the runs stopped "stalled" on the library's own start.
+    def line(coordinates, kind):
+        return {"type": "Feature", "properties": {"kind": kind},
+                "geometry": {"type": "LineString", "coordinates": coordinates}}
+
+    square = {"type": "Feature", "properties": {}, "geometry": {
+        "type": "Polygon", "coordinates": [[[0, 0], [1000, 0], [1000, 1000], [0, 1000], [0, 0]]]}}
+    slits = [line(c, "slit") for c in ([[500, 0], [500, 500]], [[500, 500], [500, 1000]],
+                                       [[0, 500], [500, 500]], [[500, 500], [1000, 500]])]
+    rivers = [line([[60, 100], [200, 250], [300, 200], [440, 420]], "conforming"),
+              line([[560, 600], [700, 750], [940, 900]], "conforming")]
+    counts = {}
+    for name, features in (("quad", [square, *slits]), ("rivers", [square, *slits, *rivers])):
+        path = tmp_path / f"{name}.geojson"
+        path.write_text(json.dumps({"type": "FeatureCollection", "features": features}))
+        summary, points, _ = run_program(program, path, tmp_path, "--cells", 400, "--refine",
+                                         700, 750, 5, 300, "--seed", 2, "--iterations", 0)
+        free = points[points[:, 2] == 0]
+        # the quadrants without a river: upper left and lower right
+        counts[name] = [np.count_nonzero((free[:, 0] < 500) & (free[:, 1] > 500)),
+                        np.count_nonzero((free[:, 0] > 500) & (free[:, 1] < 500))]
+        if name == "rivers":
+            converged, _, _ = run_program(program, path, tmp_path, "--cells", 400, "--refine",
+                                          700, 750, 5, 300, "--seed", 2)
+            assert converged["stop"] == "converged"
+    assert counts["rivers"] == counts["quad"]

@@ -422,21 +422,15 @@ void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& 
                                   : o.size ? "--size"
                                            : "--points") +
                       ": " + shortfall);
-  const auto draw = [&](std::size_t count, std::uint64_t seed) {
-    // --cells and --size, in place of generators redistributed (`dealt`), or under a density:
-    // cells of one size (of the density's), region by region; -n with a uniform density: n
-    // points, as before. The points drawn again for those that fell in the circles of
-    // conforming lines, a few, are drawn independently: dealt, they would all go to the regions
-    // of largest remainder.
-    const bool density = sizing.lipschitz || sizing.refinement;
-    const bool by_region =
-        (o.cells.has_value() || o.size.has_value() || dealt || density) && seed == o.seed;
-    return sizing.apply(
-        CVT_2::parameters::random_seed(seed).by_region(by_region),
-        [&](const auto& np) { return CVT_2::random_points_in_domain_2(cdt, count, np); });
-  };
-  // (points in the circles of conforming lines drawn again, with the next seeds)
-  CVT_2::insert_generators_2(cdt, CVT_2::draw_outside_disks_2(keep_out, n, o.seed, draw));
+  // --cells and --size, in place of generators redistributed (`dealt`), or under a density:
+  // cells of one size (of the density's), region by region; -n with a uniform density: n
+  // points, as before. None in the circles of conforming lines: drawn again in its region.
+  const bool by_region =
+      o.cells.has_value() || o.size.has_value() || dealt || sizing.lipschitz || sizing.refinement;
+  CVT_2::insert_generators_2(
+      cdt,
+      sizing.apply(CVT_2::parameters::random_seed(o.seed).by_region(by_region).keep_out(keep_out),
+                   [&](const auto& np) { return CVT_2::random_points_in_domain_2(cdt, n, np); }));
 }
 
 // --redistribute: with a density, the free generators given (--points-in, the domain file's;
@@ -883,7 +877,8 @@ int run(const Options& o) {
       throw CVT_2::Domain_error(std::string(e.what()) +
                                     " (the domain as --boundary resample left it, whose chords "
                                     "cut corners by up to the deviation bound; points in the "
-                                    "domain file, as POINT, are kept inside)",
+                                    "domain file, as POINT, are kept inside; --boundary-"
+                                    "tolerance T puts points given within T onto the boundary)",
                                 e.index());
     }
   };
