@@ -760,9 +760,11 @@ Array random_points(const Domain& domain, std::int64_t n, std::uint64_t seed,
     const CVT_2::internal::Interrupt_scope interruptible{Signal_check()};
     const auto cdt = domain.triangulation();
     const std::optional<Sizing> sizing = choice.sizing(*cdt);
+    // dealt to the regions for cells=, and under a density as cvt2 -n deals them
+    const bool dealt = by_region || choice.kind != Density_choice::UNIFORM;
     if (count > 0)
       points = choice.random_points(*cdt, sizing, count,
-                                    CVT_2::parameters::random_seed(seed).by_region(by_region));
+                                    CVT_2::parameters::random_seed(seed).by_region(dealt));
   } catch (const std::exception& e) {  // the points' reserve(): length_error or bad_alloc
     if (!dynamic_cast<const std::length_error*>(&e) && !dynamic_cast<const std::bad_alloc*>(&e))
       throw;

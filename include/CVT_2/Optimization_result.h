@@ -25,7 +25,6 @@ enum Stop_reason {
   /// move mends; far from the optimum either way (points that do not follow the density, given
   /// under one, stop so; `random_points_in_domain_2()` draws points that do, dealt by region)
   STALLED
-
 };
 
 /// \ingroup PkgCvt2Ref

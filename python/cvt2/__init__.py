@@ -392,8 +392,7 @@ def random_points(
         density,
         _number(lipschitz_k, "lipschitz_k"),
         _optional_number(boundary_size, "boundary_size"),
-        by_region=cells is not None or not (density is None or isinstance(density, str)
-                                            and density == "uniform"),
+        by_region=cells is not None,
     )
 
 

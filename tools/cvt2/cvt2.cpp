@@ -425,8 +425,7 @@ void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& 
   // --cells and --size, in place of generators redistributed (`dealt`), or under a density:
   // cells of one size (of the density's), region by region; -n with a uniform density: n
   // points, as before. None in the circles of conforming lines: drawn again in its region.
-  const bool by_region =
-      o.cells.has_value() || o.size.has_value() || dealt || sizing.lipschitz || sizing.refinement;
+  const bool by_region = o.cells.has_value() || o.size.has_value() || dealt || !sizing.is_uniform();
   CVT_2::insert_generators_2(
       cdt,
       sizing.apply(CVT_2::parameters::random_seed(o.seed).by_region(by_region).keep_out(keep_out),
@@ -438,10 +437,10 @@ void insert_random_points(std::size_t n, const Options& o, const Sizing_choice& 
 // many, to draw as many from the density.
 std::size_t redistribute(const Options& o, const Sizing_choice& sizing,
                          const std::vector<Point_2>& fixed, CDT& cdt) {
-  if (o.redistribute == "always" && !sizing.lipschitz && !sizing.refinement)
+  if (o.redistribute == "always" && sizing.is_uniform())
     std::cerr << "cvt2: note: --redistribute always: the density is uniform (no --density "
                  "lipschitz, no --refine): the generators given are kept\n";
-  if (o.redistribute == "never" || (!sizing.lipschitz && !sizing.refinement)) return 0;
+  if (o.redistribute == "never" || sizing.is_uniform()) return 0;
   const bool always = o.redistribute == "always";
   CVT_2::Density_response response;
   const auto to_replace = [&](const auto& mu) {
@@ -964,8 +963,8 @@ int run(const Options& o) {
     }
   }
   // for the density's note (a density only): whether every free generator is drawn from it
-  const bool none_given = (sizing.lipschitz || sizing.refinement) &&
-                          CVT_2::internal::movable_generators(cdt, fixed).empty();
+  const bool none_given =
+      !sizing.is_uniform() && CVT_2::internal::movable_generators(cdt, fixed).empty();
   const std::size_t redistributed = redistribute(o, sizing, fixed, cdt);
   n += redistributed;
   const bool drawn = redistributed > 0 || none_given;

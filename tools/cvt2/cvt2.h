@@ -74,6 +74,7 @@ struct Options {
 struct Sizing_choice {
   std::optional<Sizing> lipschitz;
   std::optional<CVT_2::Point_refinement_sizing_2<K>> refinement;
+  bool is_uniform() const { return !lipschitz && !refinement; }
   // run(np) with the sizing field among the named parameters np.
   template <class NP, class Run>
   auto apply(const NP& np, Run run) const {
