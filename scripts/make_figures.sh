@@ -103,6 +103,17 @@ PYTHONPATH="$build/python" /usr/bin/python3 "$root/python/examples/resample.py" 
   resample.png
 pngquant --force --output "$fig/resample.png" 64 resample.png
 
+# A river past a well (the manual's conforming lines): without it, and made conforming.
+printf 'POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0))\n' > square.wkt
+{ cat square.wkt; printf 'LINESTRING (0 5.2, 10 4.8)\n'; } > river.wkt
+"$build/tools/cvt2/cvt2" square.wkt --cells 3000 --refine 5 5.5 0.05 2 --quiet \
+  --geojson alone.geojson > /dev/null
+"$build/tools/cvt2/cvt2" river.wkt --cells 3000 --refine 5 5.5 0.05 2 --quiet \
+  --constraints conforming --geojson river.geojson > /dev/null
+/usr/bin/python3 "$root/scripts/plot_conforming_refined.py" alone.geojson river.geojson \
+  conforming_refined.png
+pngquant --force --output "$fig/conforming_refined.png" 64 conforming_refined.png
+
 "$build/tools/cvt2/cvt2" "$data/aquifer.geojson" --cells 2500 --quiet \
   --fixed-points "$data/aquifer_wells.txt" --refine 480 640 12 300 --refine 1560 520 12 300 \
   --geojson aquifer_cells.geojson > /dev/null

@@ -750,6 +750,93 @@ TEST_CASE(
                       "segment (0.5, 0.2) - (0.5, 0.8) crosses (0.2, 0.5) - (0.8, 0.5)"));
 }
 
+TEST_CASE("conforming lines follow a spacing that varies, and still lie on faces all along",
+          "[mesh][grid][keep_out]") {
+  // A river with a bend past a well, steps of 0.01 at the well growing to 0.1 at 0.3 from it
+  // (a refinement), as a function of the point.
+  const Point well(0.5, 0.54);
+  const auto spacing = [&](const Point& p) {
+    return 0.01 + 0.09 * std::min(1.0, std::sqrt(CGAL::squared_distance(p, well)) / 0.3);
+  };
+  const std::vector<std::vector<Point>> lines{{{0.03, 0.5}, {0.6, 0.5}, {0.97, 0.45}}};
+  Cdt_ids cdt = unit_square(false);
+  CVT_2::Conforming_disks<Point> disks;
+  std::size_t left_out = 1;
+  const auto pairs = CVT_2::insert_conforming_sites_2(cdt, lines, spacing, disks, &left_out);
+  CHECK(left_out == 0);
+  // As many steps as the integral of 1 / spacing along the line, rounded up on each segment
+  // (and a step or two more at the bend); each pair about a step apart, a step as long as the
+  // spacing where it lies or a little shorter. (A pair lies on the circles of its step's nodes,
+  // sized by each node's longer step: here, where the spacing grows by a third a step, up to 30%
+  // further apart than its own step is long.)
+  double steps = 0;
+  for (std::size_t k = 0; k + 1 < lines[0].size(); ++k) {
+    const Point &u = lines[0][k], &w = lines[0][k + 1];
+    double integral = 0;
+    for (int j = 0; j < 100000; ++j)
+      integral += std::sqrt(CGAL::squared_distance(u, w)) / 100000 /
+                  spacing(u + (w - u) * ((j + 0.5) / 100000));
+    steps += std::ceil(integral);
+  }
+  CHECK(double(pairs.size()) >= steps - 0.5);
+  CHECK(double(pairs.size()) <= steps + 4.5);
+  for (const auto& p : pairs) {
+    const double apart = std::sqrt(CGAL::squared_distance(p.left, p.right)),
+                 h = spacing(CGAL::midpoint(p.left, p.right));
+    CHECK(apart < 1.35 * h);
+    CHECK(apart > 0.5 * h);
+  }
+  // The same faces along the line as at a constant spacing.
+  std::vector<Point> fixed;
+  for (const auto& p : pairs) fixed.push_back(p.left), fixed.push_back(p.right);
+  CVT_2::insert_generators_2(
+      cdt, CVT_2::random_points_in_domain_2(
+               cdt, 600, CVT_2::parameters::random_seed(1).keep_out(disks).sizing_field(spacing)));
+  CVT_2::lloyd_optimize_2(
+      cdt, CVT_2::parameters::fixed_points(fixed).keep_out(disks).sizing_field(spacing));
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    CHECK_FALSE(disks.contains(v->point()));
+  const Bvd_ids bvd(cdt);
+  const Mesh mesh(bvd);
+  check_mesh(mesh, cdt);
+  double on_faces = 0, length = 0;
+  for (std::size_t k = 0; k + 1 < lines[0].size(); ++k)
+    length += std::sqrt(CGAL::squared_distance(lines[0][k], lines[0][k + 1]));
+  for (const auto& p : pairs) {
+    Cdt_ids::Locate_type lt;
+    int li;
+    const auto f = cdt.locate(p.left, lt, li);
+    REQUIRE(lt == Cdt_ids::VERTEX);
+    const std::size_t left = mesh.cell_of(f->vertex(li));
+    const auto g = cdt.locate(p.right, lt, li);
+    REQUIRE(lt == Cdt_ids::VERTEX);
+    const std::size_t right = mesh.cell_of(g->vertex(li));
+    const auto& cell = mesh.cell(left);
+    for (std::size_t j = 0; j < cell.size(); ++j)
+      if (mesh.side(left, j).cell == right)
+        on_faces += std::sqrt(
+            CGAL::squared_distance(mesh.point(cell[j]), mesh.point(cell[(j + 1) % cell.size()])));
+  }
+  CHECK(on_faces > (1 - 1e-7) * length);
+  CHECK(on_faces < length + 2 * 0.1);
+  // A constant function places the pairs of the constant, to the bit.
+  Cdt_ids a = unit_square(false), b = unit_square(false);
+  CVT_2::Conforming_disks<Point> da, db;
+  const auto by_number = CVT_2::insert_conforming_sites_2(a, lines, 0.05, da);
+  const auto by_function = CVT_2::insert_conforming_sites_2(
+      b, lines, [](const Point&) { return 0.05; }, db);
+  REQUIRE(by_function.size() == by_number.size());
+  for (std::size_t k = 0; k < by_number.size(); ++k) {
+    CHECK(by_function[k].left == by_number[k].left);
+    CHECK(by_function[k].right == by_number[k].right);
+  }
+  // A spacing that is not positive somewhere on the line is refused, the point named.
+  Cdt_ids c = unit_square(false);
+  CHECK_THROWS_WITH(CVT_2::insert_conforming_sites_2(
+                        c, lines, [](const Point& p) { return p.x() < 0.8 ? 0.05 : -1.0; }, db),
+                    Catch::Contains("the spacing at (") && Catch::Contains("not -1"));
+}
+
 TEST_CASE("a cell that meets itself at its generator becomes one ring per lobe", "[mesh]") {
   // Two triangular holes touching at (2, 2): the cell of that vertex has two lobes.
   CVT_2::IO::Poly_data<Point> poly;

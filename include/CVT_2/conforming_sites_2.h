@@ -22,6 +22,7 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 namespace CVT_2 {
@@ -171,13 +172,20 @@ struct Conforming_pair_2 {
 /// its circles not added unless a step kept shares them, and counted in `*left_out` if given.
 /// The generators are to stay fixed (`fixed_points`) and the circles free of others
 /// (`keep_out(disks)`).
-/// \throws std::invalid_argument as `conforming_sites_2()`, and if two lines cross at a point
-///         that is a vertex of neither (the message names the segments).
-template <class CDT>
+///
+/// `spacing` is a length, or a function `double(const Point_2&)` that gives the spacing where
+/// the steps lie (the cell size a density asks for, as `Point_refinement_sizing_2` gives it
+/// around a well): each segment is then cut into steps that follow it, and the roundings above
+/// and the shortest steps are measured by the least spacing found along the lines.
+/// \throws std::invalid_argument as `conforming_sites_2()`, if a spacing function gives a value
+///         that is not positive and finite, and if two lines cross at a point that is a vertex of
+///         neither (the message names the segments).
+template <class CDT, class Spacing>
 std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
-    CDT& cdt, const std::vector<std::vector<typename CDT::Point_2>>& lines, double spacing,
+    CDT& cdt, const std::vector<std::vector<typename CDT::Point_2>>& lines, const Spacing& spacing,
     Conforming_disks<typename CDT::Point_2>& disks, std::size_t* left_out = nullptr) {
   using Point_2 = typename CDT::Point_2;
+  constexpr bool graded = std::is_invocable_v<const Spacing&, const Point_2&>;
   typename CDT::Face_handle hint;
   const auto strictly_inside = [&](const Point_2& p) {
     typename CDT::Locate_type lt;
@@ -192,8 +200,15 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
   std::vector<Point_2> fixed;  // the domain's vertices: generators that cannot move away
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     if (cdt.are_there_incident_constraints(v)) fixed.push_back(v->point());
-  const auto net =
-      internal::conforming_network(lines, spacing, "conforming lines", strictly_inside, fixed);
+  const auto net = [&] {
+    if constexpr (graded)
+      return internal::conforming_network(
+          lines, internal::smallest_spacing(lines, spacing, "conforming lines"), "conforming lines",
+          strictly_inside, fixed, spacing);
+    else
+      return internal::conforming_network(lines, double(spacing), "conforming lines",
+                                          strictly_inside, fixed);
+  }();
   std::vector<Conforming_pair_2<Point_2>> pairs;
   std::vector<Point_2> sites;
   // A step along a constraint (the line given as a barrier or slit too) has its faces already.

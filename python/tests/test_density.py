@@ -424,7 +424,8 @@ def test_cvt2_deals_its_points_to_the_counties_under_a_density(program, data, tm
 def test_points_kept_out_of_conforming_circles_stay_in_their_regions(program, tmp_path):
     # A square cut in four by slits, a conforming river in two quadrants: a point drawn in a
     # river's circle is drawn again in its own quadrant, so the two quadrants without a river
-    # keep the counts dealt to them, as without the rivers. Drawn again anywhere, they took
+    # keep the counts dealt to them, as without the rivers, but for the rounding to whole points
+    # (the rivers' pairs change the other regions' remainders). Drawn again anywhere, they took
     # 10-20 too many and the runs stopped "stalled" on the library's own start.
     def line(coordinates, kind):
         return {"type": "Feature", "properties": {"kind": kind},
@@ -450,4 +451,4 @@ def test_points_kept_out_of_conforming_circles_stay_in_their_regions(program, tm
             converged, _, _ = run_program(program, path, tmp_path, "--cells", 400, "--refine",
                                           700, 750, 5, 300, "--seed", 2)
             assert converged["stop"] == "converged"
-    assert counts["rivers"] == counts["quad"]
+    assert np.abs(np.subtract(counts["rivers"], counts["quad"])).max() <= 1

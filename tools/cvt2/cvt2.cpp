@@ -159,7 +159,8 @@ void print_help(std::ostream& os) {
         "                         crosses (a river; the LINESTRINGs of a .wkt or .geojson file),\n"
         "                         not a constraint: generators mirrored across it, fixed, so that\n"
         "                         faces lie on it, perpendicular to the line between the cells\n"
-        "                         beside it. A GeoJSON feature's \"kind\" property (slit,\n"
+        "                         beside it, a cell size apart (--refine's where it refines).\n"
+        "                         A GeoJSON feature's \"kind\" property (slit,\n"
         "                         barrier, conforming) says it for its own lines\n"
         "      --mesh-out PREFIX  the final triangulation: PREFIX.node, .ele, .edge (Triangle)\n"
         "      --domain-out FILE  the domain (resampled with --boundary resample, where its\n"
@@ -760,15 +761,20 @@ double background_size(const Options& o, std::size_t cells, const CDT& cdt) {
 
 // --constraints conforming: the pairs of generators mirrored across each line, fixed, those of
 // a step whose pair is not both strictly inside the domain, or that lies along a constraint,
-// left out (noted).
-void insert_conforming_sites(const Options& o, std::size_t free_generators, CDT& cdt,
-                             std::vector<Point_2>& fixed, Conforming& conforming,
-                             CVT_2::Conforming_disks<Point_2>& disks) {
+// left out (noted). Their steps are the background cells' size, or with --refine the size the
+// refinement asks for where they lie.
+void insert_conforming_sites(const Options& o, std::size_t free_generators,
+                             const Sizing_choice& sizing, CDT& cdt, std::vector<Point_2>& fixed,
+                             Conforming& conforming, CVT_2::Conforming_disks<Point_2>& disks) {
   const std::size_t cells =
       o.cells ? *o.cells : free_generators + CVT_2::internal::number_of_vertices_in_domain(cdt);
   std::size_t left_out = 0;
-  conforming.pairs = CVT_2::insert_conforming_sites_2(
-      cdt, conforming.lines, background_size(o, cells, cdt), disks, &left_out);
+  conforming.pairs =
+      sizing.refinement
+          ? CVT_2::insert_conforming_sites_2(cdt, conforming.lines, *sizing.refinement, disks,
+                                             &left_out)
+          : CVT_2::insert_conforming_sites_2(cdt, conforming.lines, background_size(o, cells, cdt),
+                                             disks, &left_out);
   for (const auto& p : conforming.pairs) fixed.push_back(p.left), fixed.push_back(p.right);
   const std::string note =
       CVT_2::internal::conforming_left_out_note(left_out, conforming.pairs, conforming.items);
@@ -926,9 +932,26 @@ int run(const Options& o) {
     return wanted;
   };
   if (counted) cells_wanted();
+  // --refine, before the conforming lines' steps, which follow it. The background: uniform
+  // cells, as many as asked for (the lines' pairs among them).
+  if (!o.refine.empty()) {
+    const double background =
+        background_size(o,
+                        counted ? std::size_t(cells_wanted())
+                                : default_n + CVT_2::internal::number_of_vertices_in_domain(cdt),
+                        cdt);
+    sizing.refinement.emplace(background);
+    for (const auto& [x, y, size, radius] : o.refine) {
+      if (size >= background)  // the background is the largest size: nothing to refine
+        std::cerr << "cvt2: note: --refine " << x << ' ' << y << ' ' << size << ' ' << radius
+                  << ": the size is not below the background cells' (" << background
+                  << "): no finer cells there\n";
+      sizing.refinement->add_point(Point_2(x, y), std::min(size, background), radius);
+    }
+  }
   CVT_2::Conforming_disks<Point_2> disks;
   if (!conforming.lines.empty())
-    insert_conforming_sites(o, default_n, cdt, fixed, conforming, disks);
+    insert_conforming_sites(o, default_n, sizing, cdt, fixed, conforming, disks);
   const std::size_t present = CVT_2::internal::number_of_vertices_in_domain(cdt);
   std::size_t n = default_n;
   if (counted) {
@@ -951,17 +974,6 @@ int run(const Options& o) {
   if (!o.resample && own > (present - own + n) / 10 && own > 100)
     std::cerr << "cvt2: note: the domain's " << own << " vertices are generators too, "
               << present + n << " cells in all; --boundary resample spaces them to the cell size\n";
-  if (!o.refine.empty()) {  // the background: uniform cells, as many as asked for
-    const double background = background_size(o, n + present, cdt);
-    sizing.refinement.emplace(background);
-    for (const auto& [x, y, size, radius] : o.refine) {
-      if (size >= background)  // the background is the largest size: nothing to refine
-        std::cerr << "cvt2: note: --refine " << x << ' ' << y << ' ' << size << ' ' << radius
-                  << ": the size is not below the background cells' (" << background
-                  << "): no finer cells there\n";
-      sizing.refinement->add_point(Point_2(x, y), std::min(size, background), radius);
-    }
-  }
   // for the density's note (a density only): whether every free generator is drawn from it
   const bool none_given =
       !sizing.is_uniform() && CVT_2::internal::movable_generators(cdt, fixed).empty();

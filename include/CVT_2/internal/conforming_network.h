@@ -187,9 +187,90 @@ struct Conforming_network {
   std::vector<Point_2> sites;  // two a step: left of a -> b, then its mirror image on the right
 };
 
+// The cuts of the segment u -> w, as parameters from 0 to 1, into at least `least` steps, each
+// about as long as `spacing_at` (a function of the point) says where it lies and no longer: as
+// many steps as the integral of 1 / spacing along the segment, rounded up, which the cuts divide
+// into equal parts. The integral by the trapezoidal rule on samples a quarter of the spacing
+// apart; a spacing constant along the segment gives its equal steps. \throws
+// std::invalid_argument if the spacing is not positive and finite at a sample, or
+// cuts the segment into more than 1e8 steps.
+template <class Point_2, class Spacing_at>
+std::vector<double> graded_cuts(const Point_2& u, const Point_2& w, std::size_t least,
+                                const Spacing_at& spacing_at, const std::string& who) {
+  const double ux = CGAL::to_double(u.x()), uy = CGAL::to_double(u.y());
+  const double dx = CGAL::to_double(w.x()) - ux, dy = CGAL::to_double(w.y()) - uy;
+  const double length = std::hypot(dx, dy);
+  const auto spacing = [&](double t) {
+    const Point_2 p(ux + t * dx, uy + t * dy);
+    const double h = double(spacing_at(p));
+    if (!(h > 0) || !std::isfinite(h))
+      throw std::invalid_argument(who + ": the spacing at " + to_string(p) +
+                                  " must be positive and finite, not " + number_to_string(h));
+    return h;
+  };
+  std::vector<double> t{0.0}, steps_to{0.0};  // samples, and the integral up to each
+  const double first = spacing(0);
+  bool constant = true;
+  for (double h = first; t.back() < 1;) {
+    const double next = std::min(1.0, t.back() + h / (4 * length)), h_next = spacing(next);
+    steps_to.push_back(steps_to.back() + (next - t.back()) * length * (1 / h + 1 / h_next) / 2);
+    t.push_back(next);
+    h = h_next;
+    constant = constant && h == first;
+    if (!(steps_to.back() < 1e8))
+      throw std::invalid_argument(who + ": the spacing cuts a segment of length " +
+                                  number_to_string(length) + " into too many steps");
+  }
+  std::vector<double> cuts{0.0};
+  if (constant) {  // the equal steps of that length, as for a number (the same bits)
+    const auto steps = std::max(least, std::size_t(std::ceil(length / first)));
+    for (std::size_t j = 1; j <= steps; ++j) cuts.push_back(double(j) / double(steps));
+    return cuts;
+  }
+  // (a spacing that fits a whole number of steps is not rounded up to one more)
+  const double total = steps_to.back();
+  const auto steps = std::max(least, std::size_t(std::ceil(total * (1 - 1e-9))));
+  for (std::size_t j = 1, i = 0; j < steps; ++j) {
+    const double at = total * double(j) / double(steps);
+    while (steps_to[i + 1] < at) ++i;
+    const double part = (at - steps_to[i]) / (steps_to[i + 1] - steps_to[i]);
+    cuts.push_back(t[i] + part * (t[i + 1] - t[i]));
+  }
+  cuts.push_back(1.0);
+  return cuts;
+}
+
+// The smallest spacing that `spacing_at` gives at the vertices of `lines` and at eight points
+// of each segment (1 without lines): the scale of the roundings that join lines and of the
+// shortest steps. \throws std::invalid_argument as graded_cuts().
+template <class Point_2, class Spacing_at>
+double smallest_spacing(const std::vector<std::vector<Point_2>>& lines,
+                        const Spacing_at& spacing_at, const std::string& who) {
+  double smallest = HUGE_VAL;
+  const auto sample = [&](const Point_2& p) {
+    const double h = double(spacing_at(p));
+    if (!(h > 0) || !std::isfinite(h))
+      throw std::invalid_argument(who + ": the spacing at " + to_string(p) +
+                                  " must be positive and finite, not " + number_to_string(h));
+    smallest = std::min(smallest, h);
+  };
+  for (const auto& line : lines)
+    for (std::size_t k = 0; k < line.size(); ++k) {
+      sample(line[k]);
+      if (k + 1 == line.size()) break;
+      const double ux = CGAL::to_double(line[k].x()), uy = CGAL::to_double(line[k].y());
+      const double dx = CGAL::to_double(line[k + 1].x()) - ux,
+                   dy = CGAL::to_double(line[k + 1].y()) - uy;
+      for (int j = 1; j < 9; ++j) sample(Point_2(ux + j * dx / 9, uy + j * dy / 9));
+    }
+  return smallest == HUGE_VAL ? 1.0 : smallest;
+}
+
 // The network of `lines` at `spacing`. A point that lines share (a corner, a junction, a line
 // that ends on another's vertex or segment) is one node, whose circle all its steps share. Each
-// edge between nodes is cut into equal steps at most `spacing` long. At a node where lines meet
+// edge between nodes is cut into equal steps at most `spacing` long, or with `spacing_at` (a
+// function of the point, not nullptr) into steps as long as it says where they lie
+// (graded_cuts()), `spacing` then the least it gives along the lines. At a node where lines meet
 // at less than 100 degrees, or three or more meet, the pairs are placed at a prescribed angle
 // from each step (0.45 of the narrower sector beside it, at most 45 degrees), so that they stay
 // in order around it; elsewhere a node's radius is max(d_{k-1}, d_k)/sqrt(2) of its steps
@@ -206,11 +287,12 @@ struct Conforming_network {
 // `spacing` is not positive and finite, a line has fewer than
 //         two points, repeats a point, is cut into too many steps, or two lines (or a line and
 //         itself) cross at a point that is a vertex of neither.
-template <class Point_2, class Inside = std::nullptr_t>
+template <class Point_2, class Inside = std::nullptr_t, class Spacing_at = std::nullptr_t>
 Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Point_2>>& lines,
                                                double spacing, const std::string& who,
                                                const Inside& inside = Inside(),
-                                               const std::vector<Point_2>& obstacles = {}) {
+                                               const std::vector<Point_2>& obstacles = {},
+                                               const Spacing_at& spacing_at = Spacing_at()) {
   using K = typename CGAL::Kernel_traits<Point_2>::Kernel;
   using CDT = Cvt_triangulation_2<K>;
   using Vertex_handle = typename CDT::Vertex_handle;
@@ -371,13 +453,18 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
     prescribed[n] = m >= 3 || narrowest < pi * 100 / 180;
   }
 
-  // Each edge's steps, as parameters from u (0) to w (1): equal steps at most `spacing` long,
-  // at least two where an end is prescribed (its next node's radius is), three where both are.
+  // Each edge's steps, as parameters from u (0) to w (1): equal steps at most `spacing` long
+  // (or graded by `spacing_at`), at least two where an end is prescribed (its next node's radius
+  // is), three where both are.
   std::vector<std::vector<double>> cuts(edges.size());
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const std::size_t least = 1 + prescribed[edges[e].u] + prescribed[edges[e].w];
-    const auto steps = std::max(least, std::size_t(std::ceil(edges[e].length / spacing)));
-    for (std::size_t j = 0; j <= steps; ++j) cuts[e].push_back(double(j) / double(steps));
+    if constexpr (!std::is_same_v<Spacing_at, std::nullptr_t>) {
+      cuts[e] = graded_cuts(net.nodes[edges[e].u], net.nodes[edges[e].w], least, spacing_at, who);
+    } else {
+      const auto steps = std::max(least, std::size_t(std::ceil(edges[e].length / spacing)));
+      for (std::size_t j = 0; j <= steps; ++j) cuts[e].push_back(double(j) / double(steps));
+    }
   }
 
   struct Step_at {
