@@ -673,6 +673,32 @@ TEST_CASE("keep_out: no free generator stays in or enters the circles of a confo
   CHECK(inside_without > 0);  // without keep_out, starts inside stay there: the test can tell
 }
 
+namespace {
+
+// The length of the faces that the cells of each pair of a conforming line share.
+double length_between_pairs(const Cdt_ids& cdt, const Mesh& mesh,
+                            const std::vector<CVT_2::Conforming_pair_2<Point>>& pairs) {
+  double length = 0;
+  for (const auto& p : pairs) {
+    Cdt_ids::Locate_type lt;
+    int li;
+    const auto f = cdt.locate(p.left, lt, li);
+    REQUIRE(lt == Cdt_ids::VERTEX);
+    const std::size_t left = mesh.cell_of(f->vertex(li));
+    const auto g = cdt.locate(p.right, lt, li);
+    REQUIRE(lt == Cdt_ids::VERTEX);
+    const std::size_t right = mesh.cell_of(g->vertex(li));
+    const auto& cell = mesh.cell(left);
+    for (std::size_t j = 0; j < cell.size(); ++j)
+      if (mesh.side(left, j).cell == right)
+        length += std::sqrt(
+            CGAL::squared_distance(mesh.point(cell[j]), mesh.point(cell[(j + 1) % cell.size()])));
+  }
+  return length;
+}
+
+}  // namespace
+
 TEST_CASE(
     "conforming lines as a network: corners, junctions and a line that ends on another "
     "lie on faces all along",
@@ -719,22 +745,7 @@ TEST_CASE(
   const Bvd_ids bvd(cdt);
   const Mesh mesh(bvd);
   check_mesh(mesh, cdt);
-  double on_faces = 0;
-  for (const auto& p : pairs) {
-    Cdt_ids::Locate_type lt;
-    int li;
-    const auto f = cdt.locate(p.left, lt, li);
-    REQUIRE(lt == Cdt_ids::VERTEX);
-    const std::size_t left = mesh.cell_of(f->vertex(li));
-    const auto g = cdt.locate(p.right, lt, li);
-    REQUIRE(lt == Cdt_ids::VERTEX);
-    const std::size_t right = mesh.cell_of(g->vertex(li));
-    for (std::size_t j = 0; j < mesh.cell(left).size(); ++j)
-      if (mesh.side(left, j).cell == right)
-        on_faces += std::sqrt(
-            CGAL::squared_distance(mesh.point(mesh.cell(left)[j]),
-                                   mesh.point(mesh.cell(left)[(j + 1) % mesh.cell(left).size()])));
-  }
+  const double on_faces = length_between_pairs(cdt, mesh, pairs);
   // All along (the Voronoi vertices at the nodes rounded), and past the 14 ends of lines by
   // less than a step each (a face goes on until a free cell closes it).
   CHECK(on_faces > (1 - 1e-7) * length);
@@ -799,24 +810,10 @@ TEST_CASE("conforming lines follow a spacing that varies, and still lie on faces
   const Bvd_ids bvd(cdt);
   const Mesh mesh(bvd);
   check_mesh(mesh, cdt);
-  double on_faces = 0, length = 0;
+  double length = 0;
   for (std::size_t k = 0; k + 1 < lines[0].size(); ++k)
     length += std::sqrt(CGAL::squared_distance(lines[0][k], lines[0][k + 1]));
-  for (const auto& p : pairs) {
-    Cdt_ids::Locate_type lt;
-    int li;
-    const auto f = cdt.locate(p.left, lt, li);
-    REQUIRE(lt == Cdt_ids::VERTEX);
-    const std::size_t left = mesh.cell_of(f->vertex(li));
-    const auto g = cdt.locate(p.right, lt, li);
-    REQUIRE(lt == Cdt_ids::VERTEX);
-    const std::size_t right = mesh.cell_of(g->vertex(li));
-    const auto& cell = mesh.cell(left);
-    for (std::size_t j = 0; j < cell.size(); ++j)
-      if (mesh.side(left, j).cell == right)
-        on_faces += std::sqrt(
-            CGAL::squared_distance(mesh.point(cell[j]), mesh.point(cell[(j + 1) % cell.size()])));
-  }
+  const double on_faces = length_between_pairs(cdt, mesh, pairs);
   CHECK(on_faces > (1 - 1e-7) * length);
   CHECK(on_faces < length + 2 * 0.1);
   // A constant function places the pairs of the constant, to the bit.
