@@ -17,6 +17,7 @@
 #include <CVT_2/IO/write_wkb.h>
 #include <CVT_2/Simulation_grid_2.h>
 #include <CVT_2/Sliding_runs_2.h>
+#include <CVT_2/cell_size_scale_2.h>
 #include <CVT_2/conforming_sites_2.h>
 #include <CVT_2/density_response_2.h>
 #include <CVT_2/exceptions.h>
@@ -1408,12 +1409,31 @@ std::shared_ptr<Optimization> optimize(
       const std::size_t cells = cells_asked ? std::size_t(*cells_asked)
                                             : CVT_2::internal::number_of_vertices_in_domain(*cdt);
       std::size_t left_out = 0;
+      // under a density, the size the cells take where the steps lie (cvt2's)
+      const std::size_t count =
+          cells_asked || size ? std::size_t(cells_wanted().first) : std::max<std::size_t>(cells, 1);
+      const auto following = [&](const auto& np, const auto& size_at) {
+        const double scale = CVT_2::cell_size_scale_2(*cdt, count, np);
+        return CVT_2::insert_conforming_sites_2(
+            *cdt, lines, [&](const Point_2& p) { return scale * size_at(p); }, disks, &left_out);
+      };
       const double spacing =
           size ? *size
                : std::sqrt(2 * lineless->area /
                            (std::sqrt(3.0) * double(std::max<std::size_t>(cells, 1))));
-      lineless->conforming_pairs =
-          CVT_2::insert_conforming_sites_2(*cdt, lines, spacing, disks, &left_out);
+      if (choice.kind == Density_choice::LIPSCHITZ) {
+        lineless->conforming_pairs =
+            following(CVT_2::parameters::sizing_field(std::cref(*sizing)),
+                      [&](const Point_2& p) { return CGAL::to_double((*sizing)(p)); });
+      } else if (choice.kind == Density_choice::CALLABLE) {
+        const Python_density points_density{choice.function, true};  // sqrt(rho)
+        lineless->conforming_pairs =
+            following(CVT_2::parameters::density(points_density),
+                      [&](const Point_2& p) { return 1 / std::sqrt(points_density(p)); });
+      } else {
+        lineless->conforming_pairs =
+            CVT_2::insert_conforming_sites_2(*cdt, lines, spacing, disks, &left_out);
+      }
       lineless->conforming_items = line_items;
       for (const auto& p : lineless->conforming_pairs)
         fixed.push_back(p.left), fixed.push_back(p.right);

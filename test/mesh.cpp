@@ -15,6 +15,7 @@
 #include <CVT_2/IO/write_triangle.h>
 #include <CVT_2/IO/write_vtu.h>
 #include <CVT_2/Simulation_grid_2.h>
+#include <CVT_2/cell_size_scale_2.h>
 #include <CVT_2/conforming_sites_2.h>
 #include <CVT_2/insert_generators_2.h>
 #include <CVT_2/lbfgs_optimize_2.h>
@@ -827,11 +828,65 @@ TEST_CASE("conforming lines follow a spacing that varies, and still lie on faces
     CHECK(by_function[k].left == by_number[k].left);
     CHECK(by_function[k].right == by_number[k].right);
   }
+  // The roundings that join lines are measured by the spacing where they are: a tributary that
+  // ends 1e-4 short of a river, where the spacing is 0.02, is joined to it, though a well along
+  // the river asks for 0.005 (by the lines' smallest spacing, 5e-5, it was not, and its pairs
+  // fell in the river's circles).
+  {
+    Cdt_ids t = unit_square(false);
+    CVT_2::Conforming_disks<Point> d;
+    const auto refined = [](const Point& p) {
+      return 0.005 +
+             0.015 * std::min(1.0, std::sqrt(CGAL::squared_distance(p, Point(0.7, 0.5))) / 0.1);
+    };
+    const auto joined = CVT_2::insert_conforming_sites_2(
+        t, std::vector<std::vector<Point>>{{{0, 0.5}, {1, 0.5}}, {{0.3, 0.9}, {0.3, 0.5001}}},
+        refined, d);
+    for (const auto& p : joined) {
+      CHECK_FALSE(d.contains(p.left));
+      CHECK_FALSE(d.contains(p.right));
+    }
+  }
+  // A spacing that falls below the rounding of the parameter along a segment is refused, not
+  // sampled forever.
+  Cdt_ids e = unit_square(false);
+  CHECK_THROWS_WITH(
+      CVT_2::insert_conforming_sites_2(
+          e, lines,
+          [](const Point& p) { return 1e-17 + 0.05 * std::min(1.0, std::abs(p.x() - 0.3) / 0.1); },
+          db),
+      Catch::Contains("into too many steps"));
   // A spacing that is not positive somewhere on the line is refused, the point named.
   Cdt_ids c = unit_square(false);
   CHECK_THROWS_WITH(CVT_2::insert_conforming_sites_2(
                         c, lines, [](const Point& p) { return p.x() < 0.8 ? 0.05 : -1.0; }, db),
                     Catch::Contains("the spacing at (") && Catch::Contains("not -1"));
+}
+
+TEST_CASE("cell_size_scale_2: hexagons of the sizes a density asks for number the cells",
+          "[mesh][grid]") {
+  const Cdt_ids square = unit_square(false);
+  // uniform: the size of n equal hexagons
+  CHECK(CVT_2::cell_size_scale_2(square, 1000) ==
+        Approx(std::sqrt(2 / (std::sqrt(3.0) * 1000))).epsilon(1e-12));
+  // a sizing: (2/sqrt3) times the integral of 1/(kappa mu)^2, by the midpoint rule on a grid
+  // of 10^6 squares, is n
+  const auto mu = [](const Point& p) {
+    return 0.2 + 0.8 * std::min(1.0, std::sqrt(CGAL::squared_distance(p, Point(0.3, 0.6))) / 0.5);
+  };
+  const double kappa = CVT_2::cell_size_scale_2(square, 5000, CVT_2::parameters::sizing_field(mu));
+  double cells = 0;
+  for (int i = 0; i < 1000; ++i)
+    for (int j = 0; j < 1000; ++j) {
+      const double h = kappa * mu(Point((i + 0.5) / 1000, (j + 0.5) / 1000));
+      cells += 2 / (std::sqrt(3.0) * h * h) * 1e-6;
+    }
+  CHECK(cells == Approx(5000).epsilon(0.002));
+  // a point density d = sqrt(rho): the same for d = 1/mu^2
+  CHECK(CVT_2::cell_size_scale_2(square, 5000, CVT_2::parameters::density([&](const Point& p) {
+                                   return 1 / (mu(p) * mu(p));
+                                 })) == Approx(kappa).epsilon(1e-12));
+  CHECK_THROWS_AS(CVT_2::cell_size_scale_2(square, 0), CVT_2::Domain_error);
 }
 
 TEST_CASE("a cell that meets itself at its generator becomes one ring per lobe", "[mesh]") {

@@ -175,8 +175,9 @@ struct Conforming_pair_2 {
 ///
 /// `spacing` is a length, or a function `double(const Point_2&)` that gives the spacing where
 /// the steps lie (the cell size a density asks for, as `Point_refinement_sizing_2` gives it
-/// around a well): each segment is then cut into steps that follow it, and the roundings above
-/// and the shortest steps are measured by the least spacing found along the lines.
+/// around a well, times `cell_size_scale_2()`): each segment is then cut into steps that follow
+/// it, and the roundings above and the shortest steps are measured by the spacing where they
+/// are.
 /// \throws std::invalid_argument as `conforming_sites_2()`, if a spacing function gives a value
 ///         that is not positive and finite, and if two lines cross at a point that is a vertex of
 ///         neither (the message names the segments).
@@ -203,7 +204,7 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
   const auto net = [&] {
     if constexpr (graded)
       return internal::conforming_network(
-          lines, internal::smallest_spacing(lines, spacing, "conforming lines"), "conforming lines",
+          lines, internal::largest_spacing(lines, spacing, "conforming lines"), "conforming lines",
           strictly_inside, fixed, spacing);
     else
       return internal::conforming_network(lines, double(spacing), "conforming lines",

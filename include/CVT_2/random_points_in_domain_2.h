@@ -5,6 +5,7 @@
 
 #include <CVT_2/Concepts/DensityFunction_2.h>
 #include <CVT_2/exceptions.h>
+#include <CVT_2/internal/domain_pieces.h>
 #include <CVT_2/internal/domain_regions.h>
 #include <CVT_2/internal/parallel/Interrupt_scope.h>
 #include <CVT_2/parameters.h>
@@ -28,36 +29,6 @@ namespace internal {
 // A uniform double in [0, 1) from 53 random bits: the same sequence on every platform, which
 // the standard distributions do not promise.
 inline double uniform01(std::mt19937_64& rng) { return double(rng() >> 11) * 0x1.0p-53; }
-
-// The triangles of `d` cut by longest-edge bisection until each has an area of at most
-// `small`, or its longest edge's midpoint rounds to an end (a domain a few units in the last
-// place wide, which cuts would not shrink); `face_of` gets the triangle each piece was cut
-// from.
-template <class Point_2>
-std::vector<std::array<Point_2, 3>> bisect_triangles(const Domain_triangles<Point_2>& d,
-                                                     double small,
-                                                     std::vector<std::size_t>& face_of) {
-  using Triangle = std::array<Point_2, 3>;
-  std::vector<Triangle> pieces, stack;
-  for (std::size_t f = 0; f < d.triangles.size(); ++f) {
-    stack.assign(1, d.triangles[f]);
-    while (!stack.empty()) {
-      poll_interrupt_sometimes();
-      const Triangle u = stack.back();
-      stack.pop_back();
-      const int k = d.opposite_longest_edge(u);
-      const Point_2 m = CGAL::midpoint(u[(k + 1) % 3], u[(k + 2) % 3]);
-      if (d.area(u) <= small || m == u[(k + 1) % 3] || m == u[(k + 2) % 3]) {
-        pieces.push_back(u);
-        face_of.push_back(f);
-        continue;
-      }
-      stack.push_back({u[k], u[(k + 1) % 3], m});
-      stack.push_back({u[k], m, u[(k + 2) % 3]});
-    }
-  }
-  return pieces;
-}
 
 // A point drawn uniformly in triangle t (rounded).
 template <class Point_2>
@@ -124,59 +95,15 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
   for (const Triangle& t : domain.triangles) domain_area += domain.area(t);
   if (!(domain_area > 0)) throw Domain_error("random points: the domain is empty");
   // The triangles to draw from, with their masses, and the face each lies in.
-  const std::vector<Triangle>* pieces = &domain.triangles;
-  std::vector<Triangle> cut;
-  std::vector<std::size_t> face_of;
-  std::vector<double> mass;
-  const auto weigh_pieces = [&](const auto& rho) {
-    cut = internal::bisect_triangles(domain, domain_area / double(std::max<std::size_t>(n, 10000)),
-                                     face_of);
-    pieces = &cut;
-    using Rho = std::decay_t<decltype(rho)>;
-    if constexpr (has_batch_evaluation_v<Rho, typename CDT::Geom_traits>) {
-      // A density evaluated in batches (DensityFunction_2::evaluate()): one call for all the
-      // midpoints, summed as below.
-      std::vector<Point_2> midpoints;
-      midpoints.reserve(3 * cut.size());
-      for (const Triangle& t : cut)
-        for (int i = 0; i < 3; ++i) midpoints.push_back(CGAL::midpoint(t[i], t[(i + 1) % 3]));
-      std::vector<typename CDT::Geom_traits::FT> values;
-      rho.evaluate(midpoints, values);
-      if (values.size() != midpoints.size())
-        throw Domain_error("random points: the density's batch evaluation gave " +
-                           std::to_string(values.size()) + " values for " +
-                           std::to_string(midpoints.size()) + " points");
-      for (std::size_t j = 0; j < cut.size(); ++j) {
-        double s = 0;
-        for (int i = 0; i < 3; ++i) s += CGAL::to_double(values[3 * j + std::size_t(i)]);
-        mass.push_back(domain.area(cut[j]) * s / 3);
-      }
-    } else {
-      for (const Triangle& t : cut) {
-        double s = 0;
-        for (int i = 0; i < 3; ++i) s += CGAL::to_double(rho(CGAL::midpoint(t[i], t[(i + 1) % 3])));
-        mass.push_back(domain.area(t) * s / 3);
-      }
-    }
-  };
-  static_assert(!(has_parameter<NP, density_t> && has_parameter<NP, sizing_field_t>),
-                "random_points_in_domain_2: give either density() or sizing_field(), not both");
-  if constexpr (has_parameter<NP, density_t>) {
-    weigh_pieces(get_parameter(np, density_t()));
-  } else if constexpr (has_parameter<NP, sizing_field_t>) {
-    const auto& mu = get_parameter(np, sizing_field_t());
-    weigh_pieces([&mu](const Point_2& p) {
-      const double m = CGAL::to_double(mu(p));
-      return 1 / (m * m);
-    });
-  } else {
-    for (const Triangle& t : domain.triangles) mass.push_back(domain.area(t));
-  }
+  const internal::Domain_pieces<Point_2> weighed = internal::weigh_domain(domain, n, np);
+  const std::vector<Triangle>& pieces = weighed.cut.empty() ? domain.triangles : weighed.cut;
+  const std::vector<std::size_t>& face_of = weighed.face_of;
+  const std::vector<double>& mass = weighed.mass;
   // The pieces in the order they are drawn from, and the ranges of that order with their
   // quotas of points: all at once, or region by region.
-  std::vector<std::size_t> piece(pieces->size());
+  std::vector<std::size_t> piece(pieces.size());
   std::iota(piece.begin(), piece.end(), std::size_t(0));
-  std::vector<std::size_t> range_end{pieces->size()}, quota{n};
+  std::vector<std::size_t> range_end{pieces.size()}, quota{n};
   if (choose_parameter(get_parameter(np, by_region_t()), false)) {
     const internal::Domain_regions<CDT> regions = internal::domain_regions(cdt);
     const std::vector<std::size_t>& region = regions.region;
@@ -222,8 +149,8 @@ std::vector<typename CDT::Point_2> random_points_in_domain_2(
                                     cumulative.begin(),
                                 end - 1);
       const std::size_t k = piece[i];
-      const Triangle& face = face_of.empty() ? (*pieces)[k] : domain.triangles[face_of[k]];
-      const Point_2 p = internal::random_point_in_triangle((*pieces)[k], rng);
+      const Triangle& face = face_of.empty() ? pieces[k] : domain.triangles[face_of[k]];
+      const Point_2 p = internal::random_point_in_triangle(pieces[k], rng);
       const bool inside = internal::in_closed_triangle(face, p);
       if (!(inside && !kept_out(p)) && ++misses < 64) continue;
       points.push_back(inside ? p : internal::nearest_vertex(face, p));

@@ -464,9 +464,10 @@ def optimize(
     - ``constraints``: None, or ``"conforming"`` (``cvt2 --constraints conforming``) for a domain
       with lines (WKT, GeoJSON or shapely LineStrings): the lines are no constraints, but rivers
       or borders that water crosses. Generators mirrored across each step of a line
-      (:func:`conforming_sites`, at the spacing of the cells) are inserted and fixed, and no other
-      generator enters their circles, so that the faces between the cells lie on the line, each
-      perpendicular to the line between the two cells' centres. The result's ``domain`` is the
+      (:func:`conforming_sites`, at the spacing of the cells where they lie, under a density
+      too) are inserted and fixed, and no other generator enters their circles, so that the
+      faces between the cells lie on the line, each perpendicular to the line between the two
+      cells' centres. The result's ``domain`` is the
       domain without its lines; its writers take ``constraints="conforming"``, and
       ``to_cells_on_constraints`` lists the pairs of cells along each line. A GeoJSON
       feature's ``"kind"`` property (``"slit"``, ``"barrier"``, ``"conforming"``) says it for its

@@ -22,6 +22,7 @@
 #include <CVT_2/Simulation_grid_2.h>
 #include <CVT_2/Sizing_field_density_2.h>
 #include <CVT_2/Sliding_runs_2.h>
+#include <CVT_2/cell_size_scale_2.h>
 #include <CVT_2/conforming_sites_2.h>
 #include <CVT_2/density_response_2.h>
 #include <CVT_2/insert_generators_2.h>
@@ -159,7 +160,8 @@ void print_help(std::ostream& os) {
         "                         crosses (a river; the LINESTRINGs of a .wkt or .geojson file),\n"
         "                         not a constraint: generators mirrored across it, fixed, so that\n"
         "                         faces lie on it, perpendicular to the line between the cells\n"
-        "                         beside it, a cell size apart (--refine's where it refines).\n"
+        "                         beside it, a cell size apart (the size a density asks for\n"
+        "                         where they lie, with --refine or --density lipschitz).\n"
         "                         A GeoJSON feature's \"kind\" property (slit,\n"
         "                         barrier, conforming) says it for its own lines\n"
         "      --mesh-out PREFIX  the final triangulation: PREFIX.node, .ele, .edge (Triangle)\n"
@@ -761,20 +763,24 @@ double background_size(const Options& o, std::size_t cells, const CDT& cdt) {
 
 // --constraints conforming: the pairs of generators mirrored across each line, fixed, those of
 // a step whose pair is not both strictly inside the domain, or that lies along a constraint,
-// left out (noted). Their steps are the background cells' size, or with --refine the size the
-// refinement asks for where they lie.
-void insert_conforming_sites(const Options& o, std::size_t free_generators,
-                             const Sizing_choice& sizing, CDT& cdt, std::vector<Point_2>& fixed,
-                             Conforming& conforming, CVT_2::Conforming_disks<Point_2>& disks) {
-  const std::size_t cells =
-      o.cells ? *o.cells : free_generators + CVT_2::internal::number_of_vertices_in_domain(cdt);
+// left out (noted). Their steps are the size of the `cells` cells: uniform (that of --size if
+// given), or where they lie under a sizing (--refine, --density lipschitz).
+void insert_conforming_sites(const Options& o, std::size_t cells, const Sizing_choice& sizing,
+                             CDT& cdt, std::vector<Point_2>& fixed, Conforming& conforming,
+                             CVT_2::Conforming_disks<Point_2>& disks) {
   std::size_t left_out = 0;
-  conforming.pairs =
-      sizing.refinement
-          ? CVT_2::insert_conforming_sites_2(cdt, conforming.lines, *sizing.refinement, disks,
-                                             &left_out)
-          : CVT_2::insert_conforming_sites_2(cdt, conforming.lines, background_size(o, cells, cdt),
-                                             disks, &left_out);
+  const auto following = [&](const auto& mu) {
+    const double scale =
+        CVT_2::cell_size_scale_2(cdt, cells, CVT_2::parameters::sizing_field(std::cref(mu)));
+    return CVT_2::insert_conforming_sites_2(
+        cdt, conforming.lines, [&](const Point_2& p) { return scale * CGAL::to_double(mu(p)); },
+        disks, &left_out);
+  };
+  conforming.pairs = sizing.refinement  ? following(*sizing.refinement)
+                     : sizing.lipschitz ? following(*sizing.lipschitz)
+                                        : CVT_2::insert_conforming_sites_2(
+                                              cdt, conforming.lines, background_size(o, cells, cdt),
+                                              disks, &left_out);
   for (const auto& p : conforming.pairs) fixed.push_back(p.left), fixed.push_back(p.right);
   const std::string note =
       CVT_2::internal::conforming_left_out_note(left_out, conforming.pairs, conforming.items);
@@ -933,13 +939,13 @@ int run(const Options& o) {
   };
   if (counted) cells_wanted();
   // --refine, before the conforming lines' steps, which follow it. The background: uniform
-  // cells, as many as asked for (the lines' pairs among them).
+  // cells, as many as asked for (--cells, --size: the lines' pairs among them; -n: the N points
+  // and the domain's vertices, the pairs not yet placed).
+  const std::size_t cells_asked =
+      counted ? std::size_t(cells_wanted())
+              : default_n + CVT_2::internal::number_of_vertices_in_domain(cdt);
   if (!o.refine.empty()) {
-    const double background =
-        background_size(o,
-                        counted ? std::size_t(cells_wanted())
-                                : default_n + CVT_2::internal::number_of_vertices_in_domain(cdt),
-                        cdt);
+    const double background = background_size(o, cells_asked, cdt);
     sizing.refinement.emplace(background);
     for (const auto& [x, y, size, radius] : o.refine) {
       if (size >= background)  // the background is the largest size: nothing to refine
@@ -951,7 +957,7 @@ int run(const Options& o) {
   }
   CVT_2::Conforming_disks<Point_2> disks;
   if (!conforming.lines.empty())
-    insert_conforming_sites(o, default_n, sizing, cdt, fixed, conforming, disks);
+    insert_conforming_sites(o, cells_asked, sizing, cdt, fixed, conforming, disks);
   const std::size_t present = CVT_2::internal::number_of_vertices_in_domain(cdt);
   std::size_t n = default_n;
   if (counted) {

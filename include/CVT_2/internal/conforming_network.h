@@ -92,11 +92,12 @@ class Circle_grid {
 // that no other segment shares, within `tolerance` of a vertex of another segment, moves onto
 // it; one within `tolerance` of a segment's interior becomes a vertex of that segment. With
 // `every`, each vertex of a line does so, not only its ends (lines that cross, or meet, at a
-// vertex of one that lies on the other but for a rounding). Segments are found through a grid of
-// cells `spacing` wide. Returns whether any point did.
-template <class Point_2>
-bool snap_to_other_lines(std::vector<std::vector<Point_2>>& lines, double spacing, double tolerance,
-                         bool every = false) {
+// vertex of one that lies on the other but for a rounding). `tolerance(p)` for the point p, at
+// most `spacing`, the width of the cells of the grid that finds the segments. Returns whether
+// any point did.
+template <class Point_2, class Tolerance>
+bool snap_to_other_lines(std::vector<std::vector<Point_2>>& lines, double spacing,
+                         const Tolerance& tolerance, bool every = false) {
   const auto x = [](const Point_2& p) { return CGAL::to_double(p.x()); };
   const auto y = [](const Point_2& p) { return CGAL::to_double(p.y()); };
   const auto cell = [&](double c) { return (long long)std::floor(c / spacing); };
@@ -130,7 +131,8 @@ bool snap_to_other_lines(std::vector<std::vector<Point_2>>& lines, double spacin
       const Point_2 previous = before != none ? line[before] : end;
       const Point_2 next = after != none ? line[k + 1] : end;
       bool shared = false;
-      double best = tolerance;
+      const double within = std::min(spacing, tolerance(end));
+      double best = within;
       const Point_2* vertex = nullptr;
       std::pair<std::size_t, std::size_t> segment{lines.size(), 0};
       for (long long a = cell(x(end)) - 1; a <= cell(x(end)) + 1; ++a)
@@ -148,7 +150,7 @@ bool snap_to_other_lines(std::vector<std::vector<Point_2>>& lines, double spacin
             const double dx = x(q) - x(p), dy = y(q) - y(p), ll = dx * dx + dy * dy;
             const double t = ((x(end) - x(p)) * dx + (y(end) - y(p)) * dy) / ll;
             const double d = std::abs((x(end) - x(p)) * dy - (y(end) - y(p)) * dx) / std::sqrt(ll);
-            if (t > 0 && t < 1 && d < tolerance) segment = {j, k};
+            if (t > 0 && t < 1 && d < within) segment = {j, k};
           }
         }
       if (shared) continue;
@@ -212,7 +214,12 @@ std::vector<double> graded_cuts(const Point_2& u, const Point_2& w, std::size_t 
   const double first = spacing(0);
   bool constant = true;
   for (double h = first; t.back() < 1;) {
-    const double next = std::min(1.0, t.back() + h / (4 * length)), h_next = spacing(next);
+    const double next = std::min(1.0, t.back() + h / (4 * length));
+    if (!(next > t.back()))  // a spacing below the parameter's rounding
+      throw std::invalid_argument(who + ": the spacing " + number_to_string(h) +
+                                  " cuts a segment of length " + number_to_string(length) +
+                                  " into too many steps");
+    const double h_next = spacing(next);
     steps_to.push_back(steps_to.back() + (next - t.back()) * length * (1 / h + 1 / h_next) / 2);
     t.push_back(next);
     h = h_next;
@@ -240,19 +247,19 @@ std::vector<double> graded_cuts(const Point_2& u, const Point_2& w, std::size_t 
   return cuts;
 }
 
-// The smallest spacing that `spacing_at` gives at the vertices of `lines` and at eight points
-// of each segment (1 without lines): the scale of the roundings that join lines and of the
-// shortest steps. \throws std::invalid_argument as graded_cuts().
+// The largest spacing that `spacing_at` gives at the vertices of `lines` and at eight points
+// of each segment (1 without lines): the width of the cells that find segments near a point.
+// \throws std::invalid_argument as graded_cuts().
 template <class Point_2, class Spacing_at>
-double smallest_spacing(const std::vector<std::vector<Point_2>>& lines,
-                        const Spacing_at& spacing_at, const std::string& who) {
-  double smallest = HUGE_VAL;
+double largest_spacing(const std::vector<std::vector<Point_2>>& lines, const Spacing_at& spacing_at,
+                       const std::string& who) {
+  double largest = 0;
   const auto sample = [&](const Point_2& p) {
     const double h = double(spacing_at(p));
     if (!(h > 0) || !std::isfinite(h))
       throw std::invalid_argument(who + ": the spacing at " + to_string(p) +
                                   " must be positive and finite, not " + number_to_string(h));
-    smallest = std::min(smallest, h);
+    largest = std::max(largest, h);
   };
   for (const auto& line : lines)
     for (std::size_t k = 0; k < line.size(); ++k) {
@@ -263,14 +270,15 @@ double smallest_spacing(const std::vector<std::vector<Point_2>>& lines,
                    dy = CGAL::to_double(line[k + 1].y()) - uy;
       for (int j = 1; j < 9; ++j) sample(Point_2(ux + j * dx / 9, uy + j * dy / 9));
     }
-  return smallest == HUGE_VAL ? 1.0 : smallest;
+  return largest == 0 ? 1.0 : largest;
 }
 
 // The network of `lines` at `spacing`. A point that lines share (a corner, a junction, a line
 // that ends on another's vertex or segment) is one node, whose circle all its steps share. Each
 // edge between nodes is cut into equal steps at most `spacing` long, or with `spacing_at` (a
 // function of the point, not nullptr) into steps as long as it says where they lie
-// (graded_cuts()), `spacing` then the least it gives along the lines. At a node where lines meet
+// (graded_cuts()), `spacing` then the largest it gives along the lines, and the roundings and
+// the shortest steps below measured by the spacing where they are. At a node where lines meet
 // at less than 100 degrees, or three or more meet, the pairs are placed at a prescribed angle
 // from each step (0.45 of the narrower sector beside it, at most 45 degrees), so that they stay
 // in order around it; elsewhere a node's radius is max(d_{k-1}, d_k)/sqrt(2) of its steps
@@ -305,6 +313,14 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
   const auto distance = [&](const Point_2& p, const Point_2& q) {
     return std::hypot(x(q) - x(p), y(q) - y(p));
   };
+  // the spacing at p: the roundings that join lines and the shortest steps are measured by it
+  const auto local = [&](const Point_2& p) {
+    if constexpr (std::is_same_v<Spacing_at, std::nullptr_t>)
+      return spacing;
+    else
+      return double(spacing_at(p));
+  };
+  const auto hundredth = [&](const Point_2& p) { return local(p) / 100; };
   const auto line_name = [&](std::size_t i) {
     return lines.size() == 1 ? std::string("the line") : "line " + std::to_string(i);
   };
@@ -385,17 +401,17 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
                  w = e->first->vertex(CDT::cw(e->second));
       const std::size_t a = line_of[std::size_t(u->id())], b = line_of[std::size_t(w->id())];
       if (a != b && a < in.size() && b < in.size() &&
-          distance(u->point(), w->point()) < spacing / 100)
+          distance(u->point(), w->point()) < std::min(local(u->point()), local(w->point())) / 100)
         return true;
     }
     return false;
   };
-  snap_to_other_lines(in, spacing, spacing / 100);
+  snap_to_other_lines(in, spacing, hundredth);
   try {
     triangulate();
-    if (vertices_apart() && snap_to_other_lines(in, spacing, spacing / 100, true)) triangulate();
+    if (vertices_apart() && snap_to_other_lines(in, spacing, hundredth, true)) triangulate();
   } catch (const std::invalid_argument&) {  // a vertex of one a rounding off the other?
-    if (!snap_to_other_lines(in, spacing, spacing / 100, true)) throw;
+    if (!snap_to_other_lines(in, spacing, hundredth, true)) throw;
     triangulate();
   }
   Conforming_network<Point_2> net;
@@ -600,9 +616,11 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
     // than that, or a corner that sharp near its apex, keep their pairs inside circles (the
     // callers say so) rather than get cells far smaller than asked for. Circles that do not
     // cross (a step beside a much shorter one) are graded down to it.
-    const double shortest_step = spacing / 16;
-    for (std::size_t k = 0; k < steps.size(); ++k)
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+      const double shortest_step =
+          local(CGAL::midpoint(net.nodes[steps[k].p], net.nodes[steps[k].q])) / 16;
       halve[k] = halve[k] && (crossing[k] || steps[k].length >= 2 * shortest_step);
+    }
 
     // Halve, then keep the steps beside a halved one within twice its length: along an edge,
     // and among the steps that leave a node (not a prescribed node's first steps, whose pairs

@@ -1,0 +1,125 @@
+// Copyright (c) 2026 CVT_2 contributors. SPDX-License-Identifier: GPL-3.0-or-later
+// The domain's triangles cut into pieces and weighed by a point density: what random points
+// are drawn from, and the mass that sets the cells' size under a density.
+#ifndef CVT_2_INTERNAL_DOMAIN_PIECES_H
+#define CVT_2_INTERNAL_DOMAIN_PIECES_H
+
+#include <CVT_2/Concepts/DensityFunction_2.h>
+#include <CVT_2/exceptions.h>
+#include <CVT_2/internal/domain_regions.h>
+#include <CVT_2/internal/parallel/Interrupt_scope.h>
+#include <CVT_2/parameters.h>
+
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CVT_2 {
+namespace internal {
+
+// The triangles of `d` cut by longest-edge bisection until each has an area of at most
+// `small`, or its longest edge's midpoint rounds to an end (a domain a few units in the last
+// place wide, which cuts would not shrink); `face_of` gets the triangle each piece was cut
+// from.
+template <class Point_2>
+std::vector<std::array<Point_2, 3>> bisect_triangles(const Domain_triangles<Point_2>& d,
+                                                     double small,
+                                                     std::vector<std::size_t>& face_of) {
+  using Triangle = std::array<Point_2, 3>;
+  std::vector<Triangle> pieces, stack;
+  for (std::size_t f = 0; f < d.triangles.size(); ++f) {
+    stack.assign(1, d.triangles[f]);
+    while (!stack.empty()) {
+      poll_interrupt_sometimes();
+      const Triangle u = stack.back();
+      stack.pop_back();
+      const int k = d.opposite_longest_edge(u);
+      const Point_2 m = CGAL::midpoint(u[(k + 1) % 3], u[(k + 2) % 3]);
+      if (d.area(u) <= small || m == u[(k + 1) % 3] || m == u[(k + 2) % 3]) {
+        pieces.push_back(u);
+        face_of.push_back(f);
+        continue;
+      }
+      stack.push_back({u[k], u[(k + 1) % 3], m});
+      stack.push_back({u[k], m, u[(k + 2) % 3]});
+    }
+  }
+  return pieces;
+}
+
+// The pieces of the domain and their masses, at the domain's scale: without a density its
+// triangles (`cut` and `face_of` empty), by area; with the point density of `np` (`density(d)`,
+// or `sizing_field(mu)` for d = 1/mu^2) its triangles cut by longest-edge bisection into pieces
+// of at most 1/max(n, 10000) of its area, each weighed by the integral of d (midpoint rule).
+template <class Point_2>
+struct Domain_pieces {
+  std::vector<std::array<Point_2, 3>> cut;
+  std::vector<std::size_t> face_of;  // the domain triangle each piece was cut from
+  std::vector<double> mass;
+};
+
+template <class Point_2, class NP>
+Domain_pieces<Point_2> weigh_domain(const Domain_triangles<Point_2>& domain, std::size_t n,
+                                    const NP& np) {
+  using namespace internal_np;
+  using Triangle = std::array<Point_2, 3>;
+  using K = typename CGAL::Kernel_traits<Point_2>::Kernel;
+  Domain_pieces<Point_2> w;
+  const auto weigh_pieces = [&](const auto& rho) {
+    double domain_area = 0;
+    for (const Triangle& t : domain.triangles) domain_area += domain.area(t);
+    w.cut =
+        bisect_triangles(domain, domain_area / double(std::max<std::size_t>(n, 10000)), w.face_of);
+    using Rho = std::decay_t<decltype(rho)>;
+    if constexpr (has_batch_evaluation_v<Rho, K>) {
+      // A density evaluated in batches (DensityFunction_2::evaluate()): one call for all the
+      // midpoints, summed as below.
+      std::vector<Point_2> midpoints;
+      midpoints.reserve(3 * w.cut.size());
+      for (const Triangle& t : w.cut)
+        for (int i = 0; i < 3; ++i) midpoints.push_back(CGAL::midpoint(t[i], t[(i + 1) % 3]));
+      std::vector<typename K::FT> values;
+      rho.evaluate(midpoints, values);
+      if (values.size() != midpoints.size())
+        throw Domain_error("random points: the density's batch evaluation gave " +
+                           std::to_string(values.size()) + " values for " +
+                           std::to_string(midpoints.size()) + " points");
+      for (std::size_t j = 0; j < w.cut.size(); ++j) {
+        double s = 0;
+        for (int i = 0; i < 3; ++i) s += CGAL::to_double(values[3 * j + std::size_t(i)]);
+        w.mass.push_back(domain.area(w.cut[j]) * s / 3);
+      }
+    } else {
+      for (const Triangle& t : w.cut) {
+        double s = 0;
+        for (int i = 0; i < 3; ++i) s += CGAL::to_double(rho(CGAL::midpoint(t[i], t[(i + 1) % 3])));
+        w.mass.push_back(domain.area(t) * s / 3);
+      }
+    }
+  };
+  static_assert(!(has_parameter<NP, density_t> && has_parameter<NP, sizing_field_t>),
+                "give either density() or sizing_field(), not both");
+  if constexpr (has_parameter<NP, density_t>) {
+    weigh_pieces(get_parameter(np, density_t()));
+  } else if constexpr (has_parameter<NP, sizing_field_t>) {
+    const auto& mu = get_parameter(np, sizing_field_t());
+    weigh_pieces([&mu](const Point_2& p) {
+      const double m = CGAL::to_double(mu(p));
+      return 1 / (m * m);
+    });
+  } else {
+    for (const Triangle& t : domain.triangles) w.mass.push_back(domain.area(t));
+  }
+  return w;
+}
+
+}  // namespace internal
+}  // namespace CVT_2
+
+#endif  // CVT_2_INTERNAL_DOMAIN_PIECES_H
