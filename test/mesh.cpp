@@ -828,6 +828,12 @@ TEST_CASE("conforming lines follow a spacing that varies, and still lie on faces
     CHECK(by_function[k].left == by_number[k].left);
     CHECK(by_function[k].right == by_number[k].right);
   }
+  // One line alone (conforming_sites_2()): the same, node for node.
+  const auto alone = CVT_2::conforming_sites_2(lines[0], spacing);
+  REQUIRE(alone.sites.size() == 2 * pairs.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k) CHECK(alone.sites[2 * k] == pairs[k].left);
+  CHECK(CVT_2::conforming_sites_2(lines[0], [](const Point&) { return 0.05; }).sites ==
+        CVT_2::conforming_sites_2(lines[0], 0.05).sites);
   // The roundings that join lines are measured by the spacing where they are: a tributary that
   // ends 1e-4 short of a river, where the spacing is 0.02, is joined to it, though a well along
   // the river asks for 0.005 (by the lines' smallest spacing, 5e-5, it was not, and its pairs

@@ -59,14 +59,23 @@ struct Conforming_sites {
 /// another node's circle (parts of the line close together) the steps there are halved, as
 /// `insert_conforming_sites_2()` does for several lines. A node where the line meets itself
 /// appears once a visit, with the same circle. Optimizers should keep these generators fixed
-/// (`fixed_points`).
+/// (`fixed_points`). `spacing` is a length, or a function of the point, as for
+/// `insert_conforming_sites_2()`.
 /// \throws std::invalid_argument if `spacing` is not positive and finite, the line has fewer
 ///         than two distinct points or two equal points in a row, or crosses itself at a point
 ///         that is not one of its vertices.
-template <class Point_2>
-Conforming_sites<Point_2> conforming_sites_2(const std::vector<Point_2>& line, double spacing) {
-  const auto net = internal::conforming_network(std::vector<std::vector<Point_2>>{line}, spacing,
-                                                "conforming_sites_2");
+template <class Point_2, class Spacing>
+Conforming_sites<Point_2> conforming_sites_2(const std::vector<Point_2>& line,
+                                             const Spacing& spacing) {
+  const std::vector<std::vector<Point_2>> lines{line};
+  const auto net = [&] {
+    if constexpr (std::is_invocable_v<const Spacing&, const Point_2&>)
+      return internal::conforming_network(
+          lines, internal::largest_spacing(lines, spacing, "conforming_sites_2"),
+          "conforming_sites_2", nullptr, {}, spacing);
+    else
+      return internal::conforming_network(lines, double(spacing), "conforming_sites_2");
+  }();
   Conforming_sites<Point_2> c;
   for (std::size_t k = 0; k < net.steps.size(); ++k) {
     const auto& s = net.steps[k];
