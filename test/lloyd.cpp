@@ -466,6 +466,29 @@ TEST_CASE("random initial generators are reproducible, inside, and follow the de
   for (const auto& p : w) count[p.x() < mid ? 0 : 1] += 1;
   CHECK(count[1] / count[0] == Approx(mass[1] / mass[0]).epsilon(0.05));
   CHECK(count[1] / count[0] > 1.5 * area[1] / area[0]);  // far from uniform
+
+  // A refinement far steeper than a sampling piece (the cell size 0.0005 at a well, growing
+  // with the distance; a piece is 0.01 across): the points within 0.01 of the well are as
+  // many as the density's mass there says (the pieces' masses from their edges' midpoints gave
+  // it a third of them, and the rest went elsewhere).
+  Domain square;
+  load_square(square);
+  const Point well(0.4302, 0.5713);
+  const auto mu = [&well](const Point& p) {
+    return 0.0005 + std::sqrt(CGAL::squared_distance(p, well));
+  };
+  const auto near = [&well](const Point& p) { return CGAL::squared_distance(p, well) < 1e-4; };
+  double near_mass = 0, all_mass = 0;  // of 1 / mu^2, on a grid of 4000 x 4000 cells
+  for (int i = 0; i < 4000; ++i)
+    for (int j = 0; j < 4000; ++j) {
+      const Point p((i + 0.5) / 4000, (j + 0.5) / 4000);
+      const double m = 1 / (mu(p) * mu(p));
+      all_mass += m, near_mass += near(p) ? m : 0;
+    }
+  const auto drawn = CVT_2::random_points_in_domain_2(
+      square.cdt, 20000, CVT_2::parameters::random_seed(9).sizing_field(mu));
+  const auto in_near = double(std::count_if(drawn.begin(), drawn.end(), near));
+  CHECK(in_near / 20000 == Approx(near_mass / all_mass).epsilon(0.05));
 }
 
 TEST_CASE("Lloyd with the automatic k-Lipschitz sizing refines near the boundary", "[lloyd]") {

@@ -853,6 +853,30 @@ TEST_CASE("conforming lines follow a spacing that varies, and still lie on faces
       CHECK_FALSE(d.contains(p.right));
     }
   }
+  // A spacing that grows six times faster than the steps may (slope 3, from 0.005 at a line's
+  // end, where a steep density asks for tiny cells at the boundary): the steps grow by about
+  // half their length from one to the next, as many as the integral of 1 / (0.005 + s / 2)
+  // says, and no pair lies in a circle (the raw spacing gave 5 steps, each three or four times
+  // the one before: in cvt2, pairs in the next node's circle and halvings that cascade).
+  {
+    Cdt_ids t = unit_square(false);
+    CVT_2::Conforming_disks<Point> d;
+    const auto steep = [](const Point& p) { return 0.005 + 3 * (p.x() - 0.03); };
+    const auto graded = CVT_2::insert_conforming_sites_2(
+        t, std::vector<std::vector<Point>>{{{0.03, 0.5}, {0.97, 0.5}}}, steep, d);
+    const double integral = 2 * std::log((0.005 + 0.94 / 2) / 0.005);  // 9.1
+    CHECK(double(graded.size()) >= integral);
+    CHECK(double(graded.size()) <= integral + 2);
+    for (std::size_t k = 0; k < graded.size(); ++k) {
+      CHECK_FALSE(d.contains(graded[k].left));
+      if (k == 0) continue;
+      const double apart = std::sqrt(CGAL::squared_distance(graded[k].left, graded[k].right)),
+                   before =
+                       std::sqrt(CGAL::squared_distance(graded[k - 1].left, graded[k - 1].right));
+      CHECK(apart / before < 1.8);
+      CHECK(apart / before > 1 / 1.8);
+    }
+  }
   // A spacing that falls below the rounding of the parameter along a segment is refused, not
   // sampled forever.
   Cdt_ids e = unit_square(false);

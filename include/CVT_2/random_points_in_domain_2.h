@@ -60,17 +60,19 @@ const Point_2& nearest_vertex(const std::array<Point_2, 3>& t, const Point_2& p)
 /// with probability proportional to its mass (among its region's, with `by_region`), then a
 /// point uniformly in it. Uniform: the
 /// domain faces, by area, exactly. With a density: the domain faces cut by longest-edge
-/// bisection into about `max(n, 10000)` triangles of equal area, each weighted by
-/// \f$\int\rho\f$ (midpoint rule), so the sample follows \f$\rho\f$ at a resolution finer
-/// than the cells it seeds. A CVT of density \f$\rho\f$ has about \f$\rho^{1/2}\f$ points per
-/// unit area in 2D: sampling with \f$\rho^{1/2}\f$ starts Lloyd iteration close to it.
+/// bisection into about `max(n, 10000)` triangles of equal area, and further where
+/// \f$\rho\f$ differs more than twice at their edges' midpoints (down to 1/4096 of that
+/// area), each weighted by \f$\int\rho\f$ (midpoint rule), so the sample follows \f$\rho\f$
+/// at a resolution finer than the cells it seeds, a steep refinement too. A CVT of density
+/// \f$\rho\f$ has about \f$\rho^{1/2}\f$ points per unit area in 2D: sampling with
+/// \f$\rho^{1/2}\f$ starts Lloyd iteration close to it.
 /// \param cdt a triangulation whose domain is marked
 /// \param n how many points
 /// \param np optional: `density(rho)` (default uniform; a density with the batch member of
-///        `DensityFunction_2` is called once, for all sub-triangles), or `sizing_field(mu)`
-///        for the density \f$1/\mu^2\f$ that starts Lloyd iteration under `sizing_field(mu)`
-///        (\f$\rho = 1/\mu^4\f$) close to its result; `random_seed(s)` (default 0);
-///        `by_region(true)`: the points dealt to the regions that constraints separate (a
+///        `DensityFunction_2` is called once a round of cuts, for all its sub-triangles), or
+///        `sizing_field(mu)` for the density \f$1/\mu^2\f$ that starts Lloyd iteration under
+///        `sizing_field(mu)` (\f$\rho = 1/\mu^4\f$) close to its result; `random_seed(s)` (default
+///        0); `by_region(true)`: the points dealt to the regions that constraints separate (a
 ///        county network's counties, islands), each its share of the mass less the cells of
 ///        the generators already on its boundary or inside it (by area where the mass is 0
 ///        or infinite), then drawn in each; the regions

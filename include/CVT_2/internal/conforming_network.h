@@ -16,7 +16,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <map>
+#include <queue>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -189,19 +191,22 @@ struct Conforming_network {
   std::vector<Point_2> sites;  // two a step: left of a -> b, then its mirror image on the right
 };
 
-// The cuts of the segment u -> w, as parameters from 0 to 1, into at least `least` steps, each
-// about as long as `spacing_at` (a function of the point) says where it lies and no longer: as
-// many steps as the integral of 1 / spacing along the segment, rounded up, which the cuts divide
-// into equal parts. The integral by the trapezoidal rule on samples a quarter of the spacing
-// apart; a spacing constant along the segment gives its equal steps. \throws
-// std::invalid_argument if the spacing is not positive and finite at a sample, or
+// The spacing along the segment u -> w as `spacing_at` (a function of the point) gives it:
+// samples a quarter of it apart, at parameters `t` from 0 to 1.
+struct Spacing_samples {
+  double length = 0;
+  std::vector<double> t, h;
+};
+
+// \throws std::invalid_argument if the spacing is not positive and finite at a sample, or
 // cuts the segment into more than 1e8 steps.
 template <class Point_2, class Spacing_at>
-std::vector<double> graded_cuts(const Point_2& u, const Point_2& w, std::size_t least,
-                                const Spacing_at& spacing_at, const std::string& who) {
+Spacing_samples sample_spacing(const Point_2& u, const Point_2& w, const Spacing_at& spacing_at,
+                               const std::string& who) {
   const double ux = CGAL::to_double(u.x()), uy = CGAL::to_double(u.y());
   const double dx = CGAL::to_double(w.x()) - ux, dy = CGAL::to_double(w.y()) - uy;
-  const double length = std::hypot(dx, dy);
+  Spacing_samples s;
+  s.length = std::hypot(dx, dy);
   const auto spacing = [&](double t) {
     const Point_2 p(ux + t * dx, uy + t * dy);
     const double h = double(spacing_at(p));
@@ -210,29 +215,55 @@ std::vector<double> graded_cuts(const Point_2& u, const Point_2& w, std::size_t 
                                   " must be positive and finite, not " + number_to_string(h));
     return h;
   };
-  std::vector<double> t{0.0}, steps_to{0.0};  // samples, and the integral up to each
-  const double first = spacing(0);
-  bool constant = true;
-  for (double h = first; t.back() < 1;) {
-    const double next = std::min(1.0, t.back() + h / (4 * length));
-    if (!(next > t.back()))  // a spacing below the parameter's rounding
-      throw std::invalid_argument(who + ": the spacing " + number_to_string(h) +
-                                  " cuts a segment of length " + number_to_string(length) +
+  s.t = {0.0}, s.h = {spacing(0)};
+  for (double steps = 0; s.t.back() < 1;) {
+    const double next = std::min(1.0, s.t.back() + s.h.back() / (4 * s.length));
+    steps += (next - s.t.back()) * s.length / s.h.back();
+    if (!(next > s.t.back()) || !(steps < 1e8))  // (the first: below the parameter's rounding)
+      throw std::invalid_argument(who + ": the spacing " + number_to_string(s.h.back()) +
+                                  " cuts a segment of length " + number_to_string(s.length) +
                                   " into too many steps");
-    const double h_next = spacing(next);
-    steps_to.push_back(steps_to.back() + (next - t.back()) * length * (1 / h + 1 / h_next) / 2);
-    t.push_back(next);
-    h = h_next;
-    constant = constant && h == first;
-    if (!(steps_to.back() < 1e8))
-      throw std::invalid_argument(who + ": the spacing cuts a segment of length " +
-                                  number_to_string(length) + " into too many steps");
+    s.t.push_back(next);
+    s.h.push_back(spacing(next));
   }
+  return s;
+}
+
+// Steps grow by at most this share of their length from one to the next along a line: a
+// spacing that grows faster is lowered (a step twice its neighbour's length would put its
+// pair in the circle of the node beyond, and the halving that follows cascades).
+constexpr double conforming_spacing_slope = 0.5;
+
+// The cuts of a segment, as parameters from 0 to 1, into at least `least` steps, each about as
+// long as the spacing sampled in `s` says where it lies and no longer, that spacing first lowered
+// to grow by at most `conforming_spacing_slope` a unit of length from its smaller values along
+// the segment and from `at_u` and `at_w` at its ends: as many steps as the integral of 1 /
+// spacing along it, rounded up, which the cuts divide into equal parts (the spacing linear
+// between samples). A spacing constant along the segment, and not lowered, gives its equal steps.
+inline std::vector<double> graded_cuts(Spacing_samples s, std::size_t least, double at_u,
+                                       double at_w) {
+  const double first = s.h.front();
+  const bool constant = std::all_of(s.h.begin(), s.h.end(), [&](double h) { return h == first; });
+  const std::size_t n = s.t.size();
+  const double g = conforming_spacing_slope * s.length;  // per unit of the parameter
+  s.h.front() = std::min(s.h.front(), at_u), s.h.back() = std::min(s.h.back(), at_w);
+  for (std::size_t i = 1; i < n; ++i)
+    s.h[i] = std::min(s.h[i], s.h[i - 1] + g * (s.t[i] - s.t[i - 1]));
+  for (std::size_t i = n - 1; i-- > 0;)
+    s.h[i] = std::min(s.h[i], s.h[i + 1] + g * (s.t[i + 1] - s.t[i]));
   std::vector<double> cuts{0.0};
-  if (constant) {  // the equal steps of that length, as for a number (the same bits)
-    const auto steps = std::max(least, std::size_t(std::ceil(length / first)));
+  if (constant && s.h.front() == first && s.h.back() == first) {
+    // the equal steps of that length, as for a number (the same bits)
+    const auto steps = std::max(least, std::size_t(std::ceil(s.length / first)));
     for (std::size_t j = 1; j <= steps; ++j) cuts.push_back(double(j) / double(steps));
     return cuts;
+  }
+  std::vector<double> steps_to{0.0};  // the integral up to each sample
+  for (std::size_t i = 1; i < n; ++i) {
+    const double a = s.h[i - 1], b = s.h[i], along = (s.t[i] - s.t[i - 1]) * s.length;
+    steps_to.push_back(steps_to.back() + (std::abs(b - a) > 1e-9 * a
+                                              ? along * std::log(b / a) / (b - a)
+                                              : along * 2 / (a + b)));
   }
   // (a spacing that fits a whole number of steps is not rounded up to one more)
   const double total = steps_to.back();
@@ -241,7 +272,7 @@ std::vector<double> graded_cuts(const Point_2& u, const Point_2& w, std::size_t 
     const double at = total * double(j) / double(steps);
     while (steps_to[i + 1] < at) ++i;
     const double part = (at - steps_to[i]) / (steps_to[i + 1] - steps_to[i]);
-    cuts.push_back(t[i] + part * (t[i + 1] - t[i]));
+    cuts.push_back(s.t[i] + part * (s.t[i + 1] - s.t[i]));
   }
   cuts.push_back(1.0);
   return cuts;
@@ -276,22 +307,22 @@ double largest_spacing(const std::vector<std::vector<Point_2>>& lines, const Spa
 // The network of `lines` at `spacing`. A point that lines share (a corner, a junction, a line
 // that ends on another's vertex or segment) is one node, whose circle all its steps share. Each
 // edge between nodes is cut into equal steps at most `spacing` long, or with `spacing_at` (a
-// function of the point, not nullptr) into steps as long as it says where they lie
-// (graded_cuts()), `spacing` then the largest it gives along the lines, and the roundings and
-// the shortest steps below measured by the spacing where they are. At a node where lines meet
-// at less than 100 degrees, or three or more meet, the pairs are placed at a prescribed angle
-// from each step (0.45 of the narrower sector beside it, at most 45 degrees), so that they stay
-// in order around it; elsewhere a node's radius is max(d_{k-1}, d_k)/sqrt(2) of its steps
-// (reduced where two circles would not cross), the pairs at about 45 degrees. Then each pair is
-// checked against every circle: a step whose pair lies in another node's circle (lines close
-// together) is halved, with the steps of that node, down to spacing / 16; one whose circles do
-// not cross, with no floor; the steps beside a halved one are kept within twice its length. Up
-// to 24 rounds; a pair still inside a circle after that is left (the callers count the
-// generators inside circles). With `inside` (a predicate on points), a step whose midpoint or an
-// end is inside and a generator of whose pair is not (a line near the boundary or through it)
-// is halved too, down to spacing / 16, which brings its pair nearer the line; so are the steps
-// of a node whose circle holds one of `obstacles` (the domain's vertices, which cannot move)
-// elsewhere than at its centre. `who` opens the messages. \throws std::invalid_argument if
+// function of the point, not nullptr) into steps as long as it says where they lie, lowered
+// where it grows faster than half the distance along the lines (graded_cuts()), `spacing` then the
+// largest it gives along the lines, and the roundings and the shortest steps below measured by the
+// spacing where they are. At a node where lines meet at less than 100 degrees, or three or more
+// meet, the pairs are placed at a prescribed angle from each step (0.45 of the narrower sector
+// beside it, at most 45 degrees), so that they stay in order around it; elsewhere a node's radius
+// is max(d_{k-1}, d_k)/sqrt(2) of its steps (reduced where two circles would not cross), the pairs
+// at about 45 degrees. Then each pair is checked against every circle: a step whose pair lies in
+// another node's circle (lines close together) is halved, with the steps of that node, down to
+// spacing / 16; one whose circles do not cross, with no floor; the steps beside a halved one are
+// kept within twice its length. Up to 24 rounds; a pair still inside a circle after that is left
+// (the callers count the generators inside circles). With `inside` (a predicate on points), a step
+// whose midpoint or an end is inside and a generator of whose pair is not (a line near the boundary
+// or through it) is halved too, down to spacing / 16, which brings its pair nearer the line; so are
+// the steps of a node whose circle holds one of `obstacles` (the domain's vertices, which cannot
+// move) elsewhere than at its centre. `who` opens the messages. \throws std::invalid_argument if
 // `spacing` is not positive and finite, a line has fewer than
 //         two points, repeats a point, is cut into too many steps, or two lines (or a line and
 //         itself) cross at a point that is a vertex of neither.
@@ -473,10 +504,39 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
   // (or graded by `spacing_at`), at least two where an end is prescribed (its next node's radius
   // is), three where both are.
   std::vector<std::vector<double>> cuts(edges.size());
+  [[maybe_unused]] std::vector<Spacing_samples> samples;
+  // The least spacing at each node that the slope allows from the spacing along the network.
+  [[maybe_unused]] std::vector<double> at_node(n_nodes, std::numeric_limits<double>::infinity());
+  if constexpr (!std::is_same_v<Spacing_at, std::nullptr_t>) {
+    const double g = conforming_spacing_slope;
+    for (const auto& edge : edges) {
+      samples.push_back(sample_spacing(net.nodes[edge.u], net.nodes[edge.w], spacing_at, who));
+      const Spacing_samples& s = samples.back();
+      for (std::size_t i = 0; i < s.t.size(); ++i) {
+        at_node[edge.u] = std::min(at_node[edge.u], s.h[i] + g * s.t[i] * s.length);
+        at_node[edge.w] = std::min(at_node[edge.w], s.h[i] + g * (1 - s.t[i]) * s.length);
+      }
+    }
+    // along the edges from the least (Dijkstra's order)
+    using Queued = std::pair<double, std::size_t>;
+    std::priority_queue<Queued, std::vector<Queued>, std::greater<Queued>> queue;
+    for (std::size_t n = 0; n < n_nodes; ++n) queue.push({at_node[n], n});
+    while (!queue.empty()) {
+      const auto [h, n] = queue.top();
+      queue.pop();
+      if (h > at_node[n]) continue;
+      for (const auto& a : around[n]) {
+        const auto& edge = edges[a.second / 2];
+        const std::size_t other = a.second % 2 == 0 ? edge.w : edge.u;
+        if (h + g * edge.length < at_node[other])
+          queue.push({at_node[other] = h + g * edge.length, other});
+      }
+    }
+  }
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const std::size_t least = 1 + prescribed[edges[e].u] + prescribed[edges[e].w];
     if constexpr (!std::is_same_v<Spacing_at, std::nullptr_t>) {
-      cuts[e] = graded_cuts(net.nodes[edges[e].u], net.nodes[edges[e].w], least, spacing_at, who);
+      cuts[e] = graded_cuts(samples[e], least, at_node[edges[e].u], at_node[edges[e].w]);
     } else {
       const auto steps = std::max(least, std::size_t(std::ceil(edges[e].length / spacing)));
       for (std::size_t j = 0; j <= steps; ++j) cuts[e].push_back(double(j) / double(steps));

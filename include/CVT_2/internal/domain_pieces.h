@@ -56,7 +56,8 @@ std::vector<std::array<Point_2, 3>> bisect_triangles(const Domain_triangles<Poin
 // The pieces of the domain and their masses, at the domain's scale: without a density its
 // triangles (`cut` and `face_of` empty), by area; with the point density of `np` (`density(d)`,
 // or `sizing_field(mu)` for d = 1/mu^2) its triangles cut by longest-edge bisection into pieces
-// of at most 1/max(n, 10000) of its area, each weighed by the integral of d (midpoint rule).
+// of at most 1/max(n, 10000) of its area, and further where d varies much over one, each
+// weighed by the integral of d (midpoint rule).
 template <class Point_2>
 struct Domain_pieces {
   std::vector<std::array<Point_2, 3>> cut;
@@ -74,33 +75,60 @@ Domain_pieces<Point_2> weigh_domain(const Domain_triangles<Point_2>& domain, std
   const auto weigh_pieces = [&](const auto& rho) {
     double domain_area = 0;
     for (const Triangle& t : domain.triangles) domain_area += domain.area(t);
-    w.cut =
-        bisect_triangles(domain, domain_area / double(std::max<std::size_t>(n, 10000)), w.face_of);
-    using Rho = std::decay_t<decltype(rho)>;
-    if constexpr (has_batch_evaluation_v<Rho, K>) {
-      // A density evaluated in batches (DensityFunction_2::evaluate()): one call for all the
-      // midpoints, summed as below.
+    const double piece_area = domain_area / double(std::max<std::size_t>(n, 10000));
+    std::vector<std::size_t> face_of;
+    std::vector<Triangle> todo = bisect_triangles(domain, piece_area, face_of);
+    const std::size_t most = 8 * todo.size() + 100000;
+    // The values at the midpoints of the edges of `todo`, three a piece.
+    std::vector<double> values;
+    const auto evaluate = [&] {
       std::vector<Point_2> midpoints;
-      midpoints.reserve(3 * w.cut.size());
-      for (const Triangle& t : w.cut)
+      midpoints.reserve(3 * todo.size());
+      for (const Triangle& t : todo)
         for (int i = 0; i < 3; ++i) midpoints.push_back(CGAL::midpoint(t[i], t[(i + 1) % 3]));
-      std::vector<typename K::FT> values;
-      rho.evaluate(midpoints, values);
-      if (values.size() != midpoints.size())
-        throw Domain_error("random points: the density's batch evaluation gave " +
-                           std::to_string(values.size()) + " values for " +
-                           std::to_string(midpoints.size()) + " points");
-      for (std::size_t j = 0; j < w.cut.size(); ++j) {
-        double s = 0;
-        for (int i = 0; i < 3; ++i) s += CGAL::to_double(values[3 * j + std::size_t(i)]);
-        w.mass.push_back(domain.area(w.cut[j]) * s / 3);
+      values.clear();
+      using Rho = std::decay_t<decltype(rho)>;
+      if constexpr (has_batch_evaluation_v<Rho, K>) {
+        // A density evaluated in batches (DensityFunction_2::evaluate()): one call a round.
+        std::vector<typename K::FT> got;
+        rho.evaluate(midpoints, got);
+        if (got.size() != midpoints.size())
+          throw Domain_error("random points: the density's batch evaluation gave " +
+                             std::to_string(got.size()) + " values for " +
+                             std::to_string(midpoints.size()) + " points");
+        for (const auto& v : got) values.push_back(CGAL::to_double(v));
+      } else {
+        for (const Point_2& m : midpoints) values.push_back(CGAL::to_double(rho(m)));
       }
-    } else {
-      for (const Triangle& t : w.cut) {
-        double s = 0;
-        for (int i = 0; i < 3; ++i) s += CGAL::to_double(rho(CGAL::midpoint(t[i], t[(i + 1) % 3])));
-        w.mass.push_back(domain.area(t) * s / 3);
+    };
+    // A piece over which the density varies by more than twice is cut in two, down to 1/4096
+    // of the pieces' area (a steep refinement around a well within a piece, or next to the
+    // tiny faces that a conforming line's pairs make there, would be weighed by values far from
+    // its mean), while the pieces number at most eight times more.
+    for (int round = 0; !todo.empty(); ++round) {
+      evaluate();
+      std::vector<Triangle> next;
+      std::vector<std::size_t> next_face;
+      for (std::size_t j = 0; j < todo.size(); ++j) {
+        const double* v = &values[3 * j];
+        const Triangle& t = todo[j];
+        const double area = domain.area(t);
+        const int k = domain.opposite_longest_edge(t);
+        const Point_2 m = CGAL::midpoint(t[(k + 1) % 3], t[(k + 2) % 3]);
+        if (std::max({v[0], v[1], v[2]}) > 2 * std::min({v[0], v[1], v[2]}) && round < 12 &&
+            area > piece_area / 4096 && m != t[(k + 1) % 3] && m != t[(k + 2) % 3] &&
+            w.cut.size() + next.size() + todo.size() < most) {
+          next.push_back({t[k], t[(k + 1) % 3], m});
+          next.push_back({t[k], m, t[(k + 2) % 3]});
+          next_face.insert(next_face.end(), 2, face_of[j]);
+          continue;
+        }
+        w.cut.push_back(t);
+        w.face_of.push_back(face_of[j]);
+        w.mass.push_back(area * (v[0] + v[1] + v[2]) / 3);
       }
+      todo.swap(next);
+      face_of.swap(next_face);
     }
   };
   static_assert(!(has_parameter<NP, density_t> && has_parameter<NP, sizing_field_t>),
