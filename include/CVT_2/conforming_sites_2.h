@@ -156,11 +156,15 @@ class Conforming_disks {
 };
 
 /// \ingroup PkgCvt2Ref
-/// The two generators mirrored across a step of a conforming line, and the line's number.
+/// The two generators mirrored across a step of a conforming line, the line's number and the
+/// part of its segment that the step lies on.
 template <class Point_2>
 struct Conforming_pair_2 {
   Point_2 left, right;  ///< on the left and the right of the step
   std::size_t line;     ///< the number of the line among those given
+  Point_2 from, to;     ///< the part of the line's segment that the step lies on (between the
+                        ///< segment's ends, junctions and points on other lines): its face lies
+                        ///< along it, and at the line's free end runs on past it
 };
 
 /// \ingroup PkgCvt2Ref
@@ -268,7 +272,7 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
       }
     }
     if (kept_step[nodes] && listed.insert({nodes.first, nodes.second, s.line}).second)
-      pairs.push_back({left, right, s.line});
+      pairs.push_back({left, right, s.line, net.nodes[s.u], net.nodes[s.w]});
   }
   Conforming_sites<Point_2> kept;
   for (std::size_t v = 0; v < net.nodes.size(); ++v)

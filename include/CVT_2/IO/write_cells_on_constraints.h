@@ -12,10 +12,12 @@
 #include <CGAL/squared_distance_2.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <ostream>
 #include <string>
@@ -85,13 +87,19 @@ struct Line_pair {
   std::int64_t line;  ///< written as the row's `constraint`
   std::size_t cell;   ///< the grid cell on one side
   std::size_t other;  ///< the grid cell on the other side
+  /// The part of the line that the pair's face lies along, x0, y0, x1, y1: the face is written
+  /// where it runs along it, not past its ends (a line's free end); NaN: the whole face.
+  std::array<double, 4> along{
+      std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
+      std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
 };
 
 /// \ingroup PkgCvt2IO
 /// The `Line_pair` of each of `pairs` (a range of `Conforming_pair_2`, whose points are vertices
 /// of `cdt`, the triangulation of `grid`'s mesh): the grid cells of its two generators (the
-/// first part of a split cell), and `ids[line]` as the line's id. A pair whose points are not
-/// both vertices is left out.
+/// first part of a split cell), `ids[line]` as the line's id, and the part of the line it lies
+/// along (`Conforming_pair_2::from`, `to`). A pair whose points are not both vertices is left
+/// out.
 template <class CDT, class Grid, class PairRange>
 std::vector<Line_pair> conforming_line_pairs(const CDT& cdt, const Grid& grid,
                                              const PairRange& pairs,
@@ -108,8 +116,11 @@ std::vector<Line_pair> conforming_line_pairs(const CDT& cdt, const Grid& grid,
     const auto g = cdt.locate(p.right, lt[1], li[1], f);
     hint = g;
     if (lt[0] == CDT::VERTEX && lt[1] == CDT::VERTEX)
-      out.push_back({ids.at(p.line), first_part[mesh.cell_of(f->vertex(li[0]))],
-                     first_part[mesh.cell_of(g->vertex(li[1]))]});
+      out.push_back({ids.at(p.line),
+                     first_part[mesh.cell_of(f->vertex(li[0]))],
+                     first_part[mesh.cell_of(g->vertex(li[1]))],
+                     {CGAL::to_double(p.from.x()), CGAL::to_double(p.from.y()),
+                      CGAL::to_double(p.to.x()), CGAL::to_double(p.to.y())}});
   }
   return out;
 }
@@ -125,8 +136,9 @@ std::vector<Line_pair> conforming_line_pairs(const CDT& cdt, const Grid& grid,
 /// other cell. The rows go cell after cell, the edges of each in order, its slits after them.
 /// This is what a MODFLOW 6 package needs for the cells along a line: CHD and GHB on the
 /// boundary, RIV and DRN along a river, HFB between the pairs of a wall. Then, for each of
-/// `pairs` whose cells share edges, a row from each side, `length` the edges' (the pairs of a
-/// conforming line; none where its face is not theirs).
+/// `pairs` whose cells share edges, a row from each side, `length` that of the edges along the
+/// pair's part of the line, `Line_pair::along` (the pairs of a conforming line: a face that runs
+/// past the line's free end counts to the end; none where its face is not theirs).
 template <class Grid>
 void write_cells_on_constraints(std::ostream& os, const Grid& grid,
                                 const std::vector<std::int64_t>& ids,
@@ -186,12 +198,26 @@ void write_cells_on_constraints(std::ostream& os, const Grid& grid,
     }
   }
   for (const Line_pair& pair : pairs) {
+    const auto& [x0, y0, x1, y1] = pair.along;
+    const double dx = x1 - x0, dy = y1 - y0, dd = dx * dx + dy * dy;
     double length = 0;
-    for (std::size_t j = 0, n = grid.degree(pair.cell); j < n; ++j)
-      if (grid.side(pair.cell, j).cell == pair.other)
-        length += std::sqrt(CGAL::to_double(
-            CGAL::squared_distance(grid.point(grid.vertex(pair.cell, j)),
-                                   grid.point(grid.vertex(pair.cell, (j + 1) % n)))));
+    for (std::size_t j = 0, n = grid.degree(pair.cell); j < n; ++j) {
+      if (grid.side(pair.cell, j).cell != pair.other) continue;
+      const auto &a = grid.point(grid.vertex(pair.cell, j)),
+                 &b = grid.point(grid.vertex(pair.cell, (j + 1) % n));
+      const double edge = std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b)));
+      if (!(dd > 0)) {  // no part given (NaN), or none
+        length += edge;
+        continue;
+      }
+      // the share of the edge within the part, by their parameters along it
+      const auto at = [&](const auto& p) {
+        return ((CGAL::to_double(p.x()) - x0) * dx + (CGAL::to_double(p.y()) - y0) * dy) / dd;
+      };
+      const double ta = at(a), tb = at(b);
+      const double lo = std::max(0.0, std::min(ta, tb)), hi = std::min(1.0, std::max(ta, tb));
+      if (hi > lo) length += edge * (hi - lo) / std::abs(tb - ta);
+    }
     if (!(length > 0)) continue;
     for (const auto& [a, b] :
          {std::pair(pair.cell, pair.other), std::pair(pair.other, pair.cell)}) {

@@ -184,6 +184,7 @@ struct Conforming_network {
     std::size_t a, b;  // from nodes[a] to nodes[b]
     std::size_t line;  // the input line walked
     bool repeat;       // walked before (lines that overlap): its pair is the earlier one's
+    std::size_t u, w;  // the ends of its edge (a part of the line's segment), in its direction
   };
   std::vector<Point_2> nodes;
   std::vector<double> radii;   // of the circle around each node
@@ -721,7 +722,9 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
     for (std::size_t j = 0; j < m; ++j) {
       const std::size_t k = first_step[w.edge] + (w.forward ? j : m - 1 - j);
       const Step_at& s = steps[k];
-      net.steps.push_back({w.forward ? s.p : s.q, w.forward ? s.q : s.p, w.line, walked[k]});
+      const auto& edge = edges[w.edge];
+      net.steps.push_back({w.forward ? s.p : s.q, w.forward ? s.q : s.p, w.line, walked[k],
+                           w.forward ? edge.u : edge.w, w.forward ? edge.w : edge.u});
       walked[k] = true;
       sites.push_back(net.sites[2 * k + (w.forward ? 0 : 1)]);
       sites.push_back(net.sites[2 * k + (w.forward ? 1 : 0)]);
