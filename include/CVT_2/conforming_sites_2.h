@@ -189,8 +189,9 @@ struct Conforming_pair_2 {
 /// `spacing` is a length, or a function `double(const Point_2&)` that gives the spacing where
 /// the steps lie (the cell size a density asks for, as `Point_refinement_sizing_2` gives it
 /// around a well, times `cell_size_scale_2()`): each segment is then cut into steps that follow
-/// it, and the roundings above and the shortest steps are measured by the spacing where they
-/// are.
+/// it where their pairs lie (the least of its values on the line and half of it to either
+/// side), lowered where it grows faster than half the distance along the lines, and the
+/// roundings above and the shortest steps are measured by the spacing where they are.
 /// \throws std::invalid_argument as `conforming_sites_2()`, if a spacing function gives a value
 ///         that is not positive and finite, and if two lines cross at a point that is a vertex of
 ///         neither (the message names the segments).

@@ -543,6 +543,27 @@ def test_a_conforming_line_through_a_steep_refinement_costs_little(program, tmp_
     assert float(summary["energy"]) < 1.1 * float(alone["energy"])
 
 
+def test_a_conforming_line_where_the_density_jumps_sizes_each_side(tmp_path):
+    """A density 10 000 times higher on one side of the river (cells ten times smaller): the
+    steps follow the finer side, where its pairs lie, and the energy is near the run without
+    the river (before December 2026 the spacing on the line was the coarse side's, and the
+    energy 15 times that)."""
+    import cvt2
+
+    square = "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0))\n"
+    (tmp_path / "square.wkt").write_text(square)
+    (tmp_path / "river.wkt").write_text(square + "LINESTRING (0 5, 10 5)\n")
+
+    def rho(xy):
+        return np.where(xy[:, 1] > 5, 1e4, 1.0)
+
+    alone = cvt2.optimize(cvt2.Domain.from_file(tmp_path / "square.wkt"), None, density=rho,
+                          cells=1000, max_iterations=200)
+    river = cvt2.optimize(cvt2.Domain.from_file(tmp_path / "river.wkt"), None, density=rho,
+                          cells=1000, constraints="conforming")
+    assert river.energy < 1.1 * alone.energy
+
+
 def test_conforming_lines_that_meet_lie_on_faces_all_along(program, data, tmp_path):
     """Conforming lines with corners and junctions (a V of 30 degrees, a tributary that ends on
     a river's segment, a rounding past it, two lines crossing at a vertex they share, three

@@ -192,8 +192,11 @@ struct Conforming_network {
   std::vector<Point_2> sites;  // two a step: left of a -> b, then its mirror image on the right
 };
 
-// The spacing along the segment u -> w as `spacing_at` (a function of the point) gives it:
-// samples a quarter of it apart, at parameters `t` from 0 to 1.
+// The spacing along the segment u -> w as `spacing_at` (a function of the point) gives it
+// where the pairs lie: at each point of the segment the least of its value there and, where
+// they are positive and finite, at half of it to either side (a density that jumps at the line
+// asks its own size of each side's cells); samples a quarter of it apart, at parameters `t`
+// from 0 to 1.
 struct Spacing_samples {
   double length = 0;
   std::vector<double> t, h;
@@ -209,11 +212,16 @@ Spacing_samples sample_spacing(const Point_2& u, const Point_2& w, const Spacing
   Spacing_samples s;
   s.length = std::hypot(dx, dy);
   const auto spacing = [&](double t) {
-    const Point_2 p(ux + t * dx, uy + t * dy);
-    const double h = double(spacing_at(p));
+    const double x = ux + t * dx, y = uy + t * dy;
+    double h = double(spacing_at(Point_2(x, y)));
     if (!(h > 0) || !std::isfinite(h))
-      throw std::invalid_argument(who + ": the spacing at " + to_string(p) +
+      throw std::invalid_argument(who + ": the spacing at " + to_string(Point_2(x, y)) +
                                   " must be positive and finite, not " + number_to_string(h));
+    const double nx = -dy / s.length * h / 2, ny = dx / s.length * h / 2;
+    for (const double side : {1.0, -1.0}) {
+      const double beside = double(spacing_at(Point_2(x + side * nx, y + side * ny)));
+      if (beside > 0 && std::isfinite(beside)) h = std::min(h, beside);
+    }
     return h;
   };
   s.t = {0.0}, s.h = {spacing(0)};
