@@ -876,6 +876,23 @@ TEST_CASE("conforming lines follow a spacing that varies, and still lie on faces
       CHECK(apart / before < 1.8);
       CHECK(apart / before > 1 / 1.8);
     }
+    // A line across a jump from 0.05 to 0.0005: the drop is found between samples, and the steps
+    // shrink by that slope before it (sampled a quarter of 0.05 apart, steps ten times too long
+    // ran past the jump).
+    Cdt_ids u = unit_square(false);
+    CVT_2::Conforming_disks<Point> du;
+    const auto across = CVT_2::insert_conforming_sites_2(
+        u, std::vector<std::vector<Point>>{{{0.5, 0.05}, {0.5, 0.95}}},
+        [](const Point& p) { return p.y() > 0.503 ? 0.0005 : 0.05; }, du);
+    for (std::size_t k = 1; k < across.size(); ++k) {
+      const double apart = std::sqrt(CGAL::squared_distance(across[k].left, across[k].right)),
+                   before =
+                       std::sqrt(CGAL::squared_distance(across[k - 1].left, across[k - 1].right));
+      CHECK(apart / before < 1.8);
+      CHECK(apart / before > 1 / 1.8);
+      CHECK(apart > 0.0005 * 0.9);
+      if (across[k].left.y() > 0.503) CHECK(apart < 0.0005 * 1.5);
+    }
   }
   // A spacing that falls below the rounding of the parameter along a segment is refused, not
   // sampled forever.

@@ -162,9 +162,10 @@ template <class Point_2>
 struct Conforming_pair_2 {
   Point_2 left, right;  ///< on the left and the right of the step
   std::size_t line;     ///< the number of the line among those given
-  Point_2 from, to;     ///< the part of the line's segment that the step lies on (between the
-                        ///< segment's ends, junctions and points on other lines): its face lies
-                        ///< along it, and at the line's free end runs on past it
+  /// The part of the line's segment that the step lies on (between the segment's ends,
+  /// junctions and points on other lines): its face lies along it, and at the line's free end
+  /// runs on past it. Equal: not known (the whole face is the pair's).
+  Point_2 from = Point_2(0, 0), to = Point_2(0, 0);
 };
 
 /// \ingroup PkgCvt2Ref
@@ -189,8 +190,9 @@ struct Conforming_pair_2 {
 /// `spacing` is a length, or a function `double(const Point_2&)` that gives the spacing where
 /// the steps lie (the cell size a density asks for, as `Point_refinement_sizing_2` gives it
 /// around a well, times `cell_size_scale_2()`): each segment is then cut into steps that follow
-/// it where their pairs lie (the least of its values on the line and half of it to either
-/// side), lowered where it grows faster than half the distance along the lines, and the
+/// it where their pairs lie (its value on the line, or half of it to either side where that is
+/// less than two thirds of it: a jump), lowered where it grows faster than half the distance
+/// along the lines, and the
 /// roundings above and the shortest steps are measured by the spacing where they are.
 /// \throws std::invalid_argument as `conforming_sites_2()`, if a spacing function gives a value
 ///         that is not positive and finite, and if two lines cross at a point that is a vertex of

@@ -547,7 +547,7 @@ def test_a_conforming_line_where_the_density_jumps_sizes_each_side(tmp_path):
     """A density 10 000 times higher on one side of the river (cells ten times smaller): the
     steps follow the finer side, where its pairs lie, and the energy is near the run without
     the river (before December 2026 the spacing on the line was the coarse side's, and the
-    energy 15 times that)."""
+    energy 15 times that). A density that stops at the domain's boundary serves too."""
     import cvt2
 
     square = "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0))\n"
@@ -562,6 +562,18 @@ def test_a_conforming_line_where_the_density_jumps_sizes_each_side(tmp_path):
     river = cvt2.optimize(cvt2.Domain.from_file(tmp_path / "river.wkt"), None, density=rho,
                           cells=1000, constraints="conforming")
     assert river.energy < 1.1 * alone.energy
+    # The sides are asked only inside the domain: a density that is not defined outside it (a
+    # raster) serves a river that leaves it at a slant (it was asked there, and its error
+    # stopped the run).
+
+    def raster(xy):
+        if not ((xy >= 0) & (xy <= 10)).all():
+            raise ValueError("outside the raster")
+        return 1 + xy[:, 0]
+
+    (tmp_path / "slant.wkt").write_text(square + "LINESTRING (0 3, 5 0.2, 10 4)\n")
+    cvt2.optimize(cvt2.Domain.from_file(tmp_path / "slant.wkt"), None, density=raster, cells=500,
+                  constraints="conforming")
 
 
 def test_conforming_lines_that_meet_lie_on_faces_all_along(program, data, tmp_path):

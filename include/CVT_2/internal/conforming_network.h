@@ -193,10 +193,13 @@ struct Conforming_network {
 };
 
 // The spacing along the segment u -> w as `spacing_at` (a function of the point) gives it
-// where the pairs lie: at each point of the segment the least of its value there and, where
-// they are positive and finite, at half of it to either side (a density that jumps at the line
-// asks its own size of each side's cells); samples a quarter of it apart, at parameters `t`
-// from 0 to 1.
+// where the pairs lie: at each point of the segment its value there, or where it is less than
+// two thirds of that at half of it to either side, the least such value (a density that jumps
+// at the line asks its own size of each side's cells; one that varies as smoothly as the steps
+// may grow, the size on the line, which the cells on both sides share; a point beside outside
+// the domain, as `inside` says if not nullptr, is not asked); samples a quarter of it apart, at
+// parameters `t` from 0 to 1, and where it drops to less than half within that, on either side of
+// the drop a quarter of the smaller spacing apart.
 struct Spacing_samples {
   double length = 0;
   std::vector<double> t, h;
@@ -204,36 +207,61 @@ struct Spacing_samples {
 
 // \throws std::invalid_argument if the spacing is not positive and finite at a sample, or
 // cuts the segment into more than 1e8 steps.
-template <class Point_2, class Spacing_at>
+template <class Point_2, class Spacing_at, class Inside = std::nullptr_t>
 Spacing_samples sample_spacing(const Point_2& u, const Point_2& w, const Spacing_at& spacing_at,
-                               const std::string& who) {
+                               const std::string& who, const Inside& inside = Inside()) {
   const double ux = CGAL::to_double(u.x()), uy = CGAL::to_double(u.y());
   const double dx = CGAL::to_double(w.x()) - ux, dy = CGAL::to_double(w.y()) - uy;
   Spacing_samples s;
   s.length = std::hypot(dx, dy);
   const auto spacing = [&](double t) {
     const double x = ux + t * dx, y = uy + t * dy;
-    double h = double(spacing_at(Point_2(x, y)));
+    const double on_line = double(spacing_at(Point_2(x, y)));
+    double h = on_line;
     if (!(h > 0) || !std::isfinite(h))
       throw std::invalid_argument(who + ": the spacing at " + to_string(Point_2(x, y)) +
                                   " must be positive and finite, not " + number_to_string(h));
     const double nx = -dy / s.length * h / 2, ny = dx / s.length * h / 2;
     for (const double side : {1.0, -1.0}) {
-      const double beside = double(spacing_at(Point_2(x + side * nx, y + side * ny)));
-      if (beside > 0 && std::isfinite(beside)) h = std::min(h, beside);
+      const Point_2 q(x + side * nx, y + side * ny);
+      if constexpr (!std::is_same_v<Inside, std::nullptr_t>)
+        if (!inside(q)) continue;
+      const double beside = double(spacing_at(q));
+      if (beside > 0 && std::isfinite(beside) && beside < on_line * 2 / 3) h = std::min(h, beside);
     }
     return h;
   };
   s.t = {0.0}, s.h = {spacing(0)};
   for (double steps = 0; s.t.back() < 1;) {
-    const double next = std::min(1.0, s.t.back() + s.h.back() / (4 * s.length));
-    steps += (next - s.t.back()) * s.length / s.h.back();
-    if (!(next > s.t.back()) || !(steps < 1e8))  // (the first: below the parameter's rounding)
-      throw std::invalid_argument(who + ": the spacing " + number_to_string(s.h.back()) +
+    const double h = s.h.back();
+    double next = std::min(1.0, s.t.back() + h / (4 * s.length));
+    if (!(next > s.t.back()))  // a spacing below the parameter's rounding
+      throw std::invalid_argument(who + ": the spacing " + number_to_string(h) +
                                   " cuts a segment of length " + number_to_string(s.length) +
                                   " into too many steps");
+    double h_next = spacing(next);
+    if (h_next < h / 2) {  // a drop within the step: found by bisection
+      double before = s.t.back(), h_before = h;
+      for (int k = 0; k < 64 && (next - before) * s.length > h_next / 4; ++k) {
+        const double middle = (before + next) / 2, h_middle = spacing(middle);
+        if (!(middle > before && middle < next)) break;
+        if (h_middle < h / 2)
+          next = middle, h_next = h_middle;
+        else
+          before = middle, h_before = h_middle;
+      }
+      if (before > s.t.back()) {
+        steps += (before - s.t.back()) * s.length / h;
+        s.t.push_back(before);
+        s.h.push_back(h_before);
+      }
+    }
+    steps += (next - s.t.back()) * s.length / s.h.back();
+    if (!(steps < 1e8))
+      throw std::invalid_argument(who + ": the spacing cuts a segment of length " +
+                                  number_to_string(s.length) + " into too many steps");
     s.t.push_back(next);
-    s.h.push_back(spacing(next));
+    s.h.push_back(h_next);
   }
   return s;
 }
@@ -280,8 +308,13 @@ inline std::vector<double> graded_cuts(Spacing_samples s, std::size_t least, dou
   for (std::size_t j = 1, i = 0; j < steps; ++j) {
     const double at = total * double(j) / double(steps);
     while (steps_to[i + 1] < at) ++i;
-    const double part = (at - steps_to[i]) / (steps_to[i + 1] - steps_to[i]);
-    cuts.push_back(s.t[i] + part * (s.t[i + 1] - s.t[i]));
+    // where the integral of 1 / h reaches `at`, h linear from a to b along the interval
+    const double a = s.h[i], b = s.h[i + 1], along = (s.t[i + 1] - s.t[i]) * s.length;
+    const double in = at - steps_to[i];
+    const double x = std::abs(b - a) > 1e-9 * a
+                         ? a * along / (b - a) * std::expm1(in * (b - a) / along)
+                         : in * (a + b) / 2;
+    cuts.push_back(std::min(s.t[i + 1], s.t[i] + x / s.length));
   }
   cuts.push_back(1.0);
   return cuts;
@@ -519,7 +552,8 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
   if constexpr (!std::is_same_v<Spacing_at, std::nullptr_t>) {
     const double g = conforming_spacing_slope;
     for (const auto& edge : edges) {
-      samples.push_back(sample_spacing(net.nodes[edge.u], net.nodes[edge.w], spacing_at, who));
+      samples.push_back(
+          sample_spacing(net.nodes[edge.u], net.nodes[edge.w], spacing_at, who, inside));
       const Spacing_samples& s = samples.back();
       for (std::size_t i = 0; i < s.t.size(); ++i) {
         at_node[edge.u] = std::min(at_node[edge.u], s.h[i] + g * s.t[i] * s.length);

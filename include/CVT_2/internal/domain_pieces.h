@@ -78,7 +78,7 @@ Domain_pieces<Point_2> weigh_domain(const Domain_triangles<Point_2>& domain, std
     const double piece_area = domain_area / double(std::max<std::size_t>(n, 10000));
     std::vector<std::size_t> face_of;
     std::vector<Triangle> todo = bisect_triangles(domain, piece_area, face_of);
-    const std::size_t most = 8 * todo.size() + 100000;
+    const std::size_t most = 2 * todo.size() + 100000;
     // The values at the midpoints of the edges of `todo`, three a piece.
     std::vector<double> values;
     const auto evaluate = [&] {
@@ -104,7 +104,7 @@ Domain_pieces<Point_2> weigh_domain(const Domain_triangles<Point_2>& domain, std
     // A piece over which the density varies by more than twice is cut in two, down to 1/4096
     // of the pieces' area (a steep refinement around a well within a piece, or next to the
     // tiny faces that a conforming line's pairs make there, would be weighed by values far from
-    // its mean), while the pieces number at most eight times more.
+    // its mean), while the pieces number at most twice as many, and 100 000 more.
     for (int round = 0; !todo.empty(); ++round) {
       evaluate();
       std::vector<Triangle> next;
