@@ -1417,10 +1417,6 @@ std::shared_ptr<Optimization> optimize(
         return CVT_2::insert_conforming_sites_2(
             *cdt, lines, [&](const Point_2& p) { return scale * size_at(p); }, disks, &left_out);
       };
-      const double spacing =
-          size ? *size
-               : std::sqrt(2 * lineless->area /
-                           (std::sqrt(3.0) * double(std::max<std::size_t>(cells, 1))));
       if (choice.kind == Density_choice::LIPSCHITZ) {
         lineless->conforming_pairs =
             following(CVT_2::parameters::sizing_field(std::cref(*sizing)),
@@ -1431,6 +1427,10 @@ std::shared_ptr<Optimization> optimize(
             following(CVT_2::parameters::density(points_density),
                       [&](const Point_2& p) { return 1 / std::sqrt(points_density(p)); });
       } else {
+        const double spacing =
+            size ? *size
+                 : std::sqrt(2 * lineless->area /
+                             (std::sqrt(3.0) * double(std::max<std::size_t>(cells, 1))));
         lineless->conforming_pairs =
             CVT_2::insert_conforming_sites_2(*cdt, lines, spacing, disks, &left_out);
       }

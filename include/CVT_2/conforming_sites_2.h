@@ -22,7 +22,6 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
-#include <type_traits>
 #include <vector>
 
 namespace CVT_2 {
@@ -67,15 +66,8 @@ struct Conforming_sites {
 template <class Point_2, class Spacing>
 Conforming_sites<Point_2> conforming_sites_2(const std::vector<Point_2>& line,
                                              const Spacing& spacing) {
-  const std::vector<std::vector<Point_2>> lines{line};
-  const auto net = [&] {
-    if constexpr (std::is_invocable_v<const Spacing&, const Point_2&>)
-      return internal::conforming_network(
-          lines, internal::largest_spacing(lines, spacing, "conforming_sites_2"),
-          "conforming_sites_2", nullptr, {}, spacing);
-    else
-      return internal::conforming_network(lines, double(spacing), "conforming_sites_2");
-  }();
+  const auto net = internal::conforming_network(std::vector<std::vector<Point_2>>{line}, spacing,
+                                                "conforming_sites_2");
   Conforming_sites<Point_2> c;
   for (std::size_t k = 0; k < net.steps.size(); ++k) {
     const auto& s = net.steps[k];
@@ -192,8 +184,8 @@ struct Conforming_pair_2 {
 /// around a well, times `cell_size_scale_2()`): each segment is then cut into steps that follow
 /// it where their pairs lie (its value on the line, or half of it to either side where that is
 /// less than two thirds of it: a jump), lowered where it grows faster than half the distance
-/// along the lines, and the
-/// roundings above and the shortest steps are measured by the spacing where they are.
+/// along the lines, and the roundings above and the shortest steps are measured by the spacing
+/// where they are.
 /// \throws std::invalid_argument as `conforming_sites_2()`, if a spacing function gives a value
 ///         that is not positive and finite, and if two lines cross at a point that is a vertex of
 ///         neither (the message names the segments).
@@ -202,7 +194,6 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
     CDT& cdt, const std::vector<std::vector<typename CDT::Point_2>>& lines, const Spacing& spacing,
     Conforming_disks<typename CDT::Point_2>& disks, std::size_t* left_out = nullptr) {
   using Point_2 = typename CDT::Point_2;
-  constexpr bool graded = std::is_invocable_v<const Spacing&, const Point_2&>;
   typename CDT::Face_handle hint;
   const auto strictly_inside = [&](const Point_2& p) {
     typename CDT::Locate_type lt;
@@ -217,15 +208,8 @@ std::vector<Conforming_pair_2<typename CDT::Point_2>> insert_conforming_sites_2(
   std::vector<Point_2> fixed;  // the domain's vertices: generators that cannot move away
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     if (cdt.are_there_incident_constraints(v)) fixed.push_back(v->point());
-  const auto net = [&] {
-    if constexpr (graded)
-      return internal::conforming_network(
-          lines, internal::largest_spacing(lines, spacing, "conforming lines"), "conforming lines",
-          strictly_inside, fixed, spacing);
-    else
-      return internal::conforming_network(lines, double(spacing), "conforming lines",
-                                          strictly_inside, fixed);
-  }();
+  const auto net =
+      internal::conforming_network(lines, spacing, "conforming lines", strictly_inside, fixed);
   std::vector<Conforming_pair_2<Point_2>> pairs;
   std::vector<Point_2> sites;
   // A step along a constraint (the line given as a barrier or slit too) has its faces already.

@@ -346,41 +346,49 @@ double largest_spacing(const std::vector<std::vector<Point_2>>& lines, const Spa
   return largest == 0 ? 1.0 : largest;
 }
 
-// The network of `lines` at `spacing`. A point that lines share (a corner, a junction, a line
-// that ends on another's vertex or segment) is one node, whose circle all its steps share. Each
-// edge between nodes is cut into equal steps at most `spacing` long, or with `spacing_at` (a
-// function of the point, not nullptr) into steps as long as it says where they lie, lowered
-// where it grows faster than half the distance along the lines (graded_cuts()), `spacing` then the
-// largest it gives along the lines, and the roundings and the shortest steps below measured by the
-// spacing where they are. At a node where lines meet at less than 100 degrees, or three or more
-// meet, the pairs are placed at a prescribed angle from each step (0.45 of the narrower sector
-// beside it, at most 45 degrees), so that they stay in order around it; elsewhere a node's radius
-// is max(d_{k-1}, d_k)/sqrt(2) of its steps (reduced where two circles would not cross), the pairs
-// at about 45 degrees. Then each pair is checked against every circle: a step whose pair lies in
-// another node's circle (lines close together) is halved, with the steps of that node, down to
-// spacing / 16; one whose circles do not cross, with no floor; the steps beside a halved one are
-// kept within twice its length. Up to 24 rounds; a pair still inside a circle after that is left
-// (the callers count the generators inside circles). With `inside` (a predicate on points), a step
-// whose midpoint or an end is inside and a generator of whose pair is not (a line near the boundary
-// or through it) is halved too, down to spacing / 16, which brings its pair nearer the line; so are
-// the steps of a node whose circle holds one of `obstacles` (the domain's vertices, which cannot
-// move) elsewhere than at its centre. `who` opens the messages. \throws std::invalid_argument if
-// `spacing` is not positive and finite, a line has fewer than
+// The network of `lines` at `spacing`, a length or a function of the point. A point that lines
+// share (a corner, a junction, a line that ends on another's vertex or segment) is one node,
+// whose circle all its steps share. Each edge between nodes is cut into equal steps at most
+// `spacing` long, or with a function into steps as long as it says where they lie, lowered
+// where it grows faster than half the distance along the lines (graded_cuts()), the segments
+// then found through a grid as wide as the largest it gives along the lines, and the roundings
+// and the shortest steps below measured by the spacing where they are. At a node where lines
+// meet at less than 100 degrees, or three or more meet, the pairs are placed at a prescribed
+// angle from each step (0.45 of the narrower sector beside it, at most 45 degrees), so that they
+// stay in order around it; elsewhere a node's radius is max(d_{k-1}, d_k)/sqrt(2) of its steps
+// (reduced where two circles would not cross), the pairs at about 45 degrees. Then each pair is
+// checked against every circle: a step whose pair lies in another node's circle (lines close
+// together) is halved, with the steps of that node, down to spacing / 16; one whose circles do
+// not cross, with no floor; the steps beside a halved one are kept within twice its length. Up
+// to 24 rounds; a pair still inside a circle after that is left (the callers count the
+// generators inside circles). With `inside` (a predicate on points), a step whose midpoint or an
+// end is inside and a generator of whose pair is not (a line near the boundary or through it)
+// is halved too, down to spacing / 16, which brings its pair nearer the line; so are the steps
+// of a node whose circle holds one of `obstacles` (the domain's vertices, which cannot move)
+// elsewhere than at its centre. `who` opens the messages. \throws std::invalid_argument if
+// `spacing` is not positive and finite (a function: at a point sampled), a line has fewer than
 //         two points, repeats a point, is cut into too many steps, or two lines (or a line and
 //         itself) cross at a point that is a vertex of neither.
-template <class Point_2, class Inside = std::nullptr_t, class Spacing_at = std::nullptr_t>
+template <class Point_2, class Spacing, class Inside = std::nullptr_t>
 Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Point_2>>& lines,
-                                               double spacing, const std::string& who,
+                                               const Spacing& spacing, const std::string& who,
                                                const Inside& inside = Inside(),
-                                               const std::vector<Point_2>& obstacles = {},
-                                               const Spacing_at& spacing_at = Spacing_at()) {
+                                               const std::vector<Point_2>& obstacles = {}) {
   using K = typename CGAL::Kernel_traits<Point_2>::Kernel;
   using CDT = Cvt_triangulation_2<K>;
   using Vertex_handle = typename CDT::Vertex_handle;
   constexpr double pi = 3.14159265358979323846;
-  if (!(spacing > 0) || !std::isfinite(spacing))
+  constexpr bool graded = std::is_invocable_v<const Spacing&, const Point_2&>;
+  // the largest spacing: the width of the cells that find segments near a point
+  const double largest = [&] {
+    if constexpr (graded)
+      return largest_spacing(lines, spacing, who);
+    else
+      return double(spacing);
+  }();
+  if (!(largest > 0) || !std::isfinite(largest))
     throw std::invalid_argument(who + ": the spacing must be positive and finite, not " +
-                                number_to_string(spacing));
+                                number_to_string(largest));
   const auto x = [](const Point_2& p) { return CGAL::to_double(p.x()); };
   const auto y = [](const Point_2& p) { return CGAL::to_double(p.y()); };
   const auto distance = [&](const Point_2& p, const Point_2& q) {
@@ -388,10 +396,10 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
   };
   // the spacing at p: the roundings that join lines and the shortest steps are measured by it
   const auto local = [&](const Point_2& p) {
-    if constexpr (std::is_same_v<Spacing_at, std::nullptr_t>)
-      return spacing;
+    if constexpr (graded)
+      return double(spacing(p));
     else
-      return double(spacing_at(p));
+      return largest;
   };
   const auto hundredth = [&](const Point_2& p) { return local(p) / 100; };
   const auto line_name = [&](std::size_t i) {
@@ -450,9 +458,9 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
   for (const auto& line :
        in)  // before snap_to_other_lines() samples them (it only shortens segments)
     for (std::size_t k = 0; k + 1 < line.size(); ++k)
-      if (!(distance(line[k], line[k + 1]) / spacing < 1e8))
+      if (!(distance(line[k], line[k + 1]) / largest < 1e8))
         throw std::invalid_argument(
-            who + ": the spacing " + number_to_string(spacing) + " cuts a segment of length " +
+            who + ": the spacing " + number_to_string(largest) + " cuts a segment of length " +
             number_to_string(distance(line[k], line[k + 1])) + " into too many steps");
   // Vertices of two lines a rounding apart (one line through the other's vertex, or beside it),
   // seen as a short edge between vertices of different lines.
@@ -479,12 +487,12 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
     }
     return false;
   };
-  snap_to_other_lines(in, spacing, hundredth);
+  snap_to_other_lines(in, largest, hundredth);
   try {
     triangulate();
-    if (vertices_apart() && snap_to_other_lines(in, spacing, hundredth, true)) triangulate();
+    if (vertices_apart() && snap_to_other_lines(in, largest, hundredth, true)) triangulate();
   } catch (const std::invalid_argument&) {  // a vertex of one a rounding off the other?
-    if (!snap_to_other_lines(in, spacing, hundredth, true)) throw;
+    if (!snap_to_other_lines(in, largest, hundredth, true)) throw;
     triangulate();
   }
   Conforming_network<Point_2> net;
@@ -543,17 +551,16 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
   }
 
   // Each edge's steps, as parameters from u (0) to w (1): equal steps at most `spacing` long
-  // (or graded by `spacing_at`), at least two where an end is prescribed (its next node's radius
+  // (or graded by a function), at least two where an end is prescribed (its next node's radius
   // is), three where both are.
   std::vector<std::vector<double>> cuts(edges.size());
   [[maybe_unused]] std::vector<Spacing_samples> samples;
   // The least spacing at each node that the slope allows from the spacing along the network.
   [[maybe_unused]] std::vector<double> at_node(n_nodes, std::numeric_limits<double>::infinity());
-  if constexpr (!std::is_same_v<Spacing_at, std::nullptr_t>) {
+  if constexpr (graded) {
     const double g = conforming_spacing_slope;
     for (const auto& edge : edges) {
-      samples.push_back(
-          sample_spacing(net.nodes[edge.u], net.nodes[edge.w], spacing_at, who, inside));
+      samples.push_back(sample_spacing(net.nodes[edge.u], net.nodes[edge.w], spacing, who, inside));
       const Spacing_samples& s = samples.back();
       for (std::size_t i = 0; i < s.t.size(); ++i) {
         at_node[edge.u] = std::min(at_node[edge.u], s.h[i] + g * s.t[i] * s.length);
@@ -578,10 +585,10 @@ Conforming_network<Point_2> conforming_network(const std::vector<std::vector<Poi
   }
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const std::size_t least = 1 + prescribed[edges[e].u] + prescribed[edges[e].w];
-    if constexpr (!std::is_same_v<Spacing_at, std::nullptr_t>) {
+    if constexpr (graded) {
       cuts[e] = graded_cuts(samples[e], least, at_node[edges[e].u], at_node[edges[e].w]);
     } else {
-      const auto steps = std::max(least, std::size_t(std::ceil(edges[e].length / spacing)));
+      const auto steps = std::max(least, std::size_t(std::ceil(edges[e].length / largest)));
       for (std::size_t j = 0; j <= steps; ++j) cuts[e].push_back(double(j) / double(steps));
     }
   }

@@ -23,31 +23,41 @@
 namespace CVT_2 {
 namespace internal {
 
+// `t` cut in two at its longest edge's midpoint, or false if that midpoint rounds to an end (a
+// triangle a few units in the last place wide, which cuts would not shrink).
+template <class Point_2>
+bool halve_longest_edge(const Domain_triangles<Point_2>& d, const std::array<Point_2, 3>& t,
+                        std::array<std::array<Point_2, 3>, 2>& halves) {
+  const int k = d.opposite_longest_edge(t);
+  const Point_2 m = CGAL::midpoint(t[(k + 1) % 3], t[(k + 2) % 3]);
+  if (m == t[(k + 1) % 3] || m == t[(k + 2) % 3]) return false;
+  halves = {{{t[k], t[(k + 1) % 3], m}, {t[k], m, t[(k + 2) % 3]}}};
+  return true;
+}
+
 // The triangles of `d` cut by longest-edge bisection until each has an area of at most
-// `small`, or its longest edge's midpoint rounds to an end (a domain a few units in the last
-// place wide, which cuts would not shrink); `face_of` gets the triangle each piece was cut
-// from.
+// `small`, or cannot be cut (halve_longest_edge()); `face_of` gets the triangle each piece was
+// cut from.
 template <class Point_2>
 std::vector<std::array<Point_2, 3>> bisect_triangles(const Domain_triangles<Point_2>& d,
                                                      double small,
                                                      std::vector<std::size_t>& face_of) {
   using Triangle = std::array<Point_2, 3>;
   std::vector<Triangle> pieces, stack;
+  std::array<Triangle, 2> halves;
   for (std::size_t f = 0; f < d.triangles.size(); ++f) {
     stack.assign(1, d.triangles[f]);
     while (!stack.empty()) {
       poll_interrupt_sometimes();
       const Triangle u = stack.back();
       stack.pop_back();
-      const int k = d.opposite_longest_edge(u);
-      const Point_2 m = CGAL::midpoint(u[(k + 1) % 3], u[(k + 2) % 3]);
-      if (d.area(u) <= small || m == u[(k + 1) % 3] || m == u[(k + 2) % 3]) {
+      if (d.area(u) <= small || !halve_longest_edge(d, u, halves)) {
         pieces.push_back(u);
         face_of.push_back(f);
         continue;
       }
-      stack.push_back({u[k], u[(k + 1) % 3], m});
-      stack.push_back({u[k], m, u[(k + 2) % 3]});
+      stack.push_back(halves[0]);
+      stack.push_back(halves[1]);
     }
   }
   return pieces;
@@ -105,6 +115,7 @@ Domain_pieces<Point_2> weigh_domain(const Domain_triangles<Point_2>& domain, std
     // of the pieces' area (a steep refinement around a well within a piece, or next to the
     // tiny faces that a conforming line's pairs make there, would be weighed by values far from
     // its mean), while the pieces number at most twice as many, and 100 000 more.
+    std::array<Triangle, 2> halves;
     for (int round = 0; !todo.empty(); ++round) {
       evaluate();
       std::vector<Triangle> next;
@@ -113,13 +124,11 @@ Domain_pieces<Point_2> weigh_domain(const Domain_triangles<Point_2>& domain, std
         const double* v = &values[3 * j];
         const Triangle& t = todo[j];
         const double area = domain.area(t);
-        const int k = domain.opposite_longest_edge(t);
-        const Point_2 m = CGAL::midpoint(t[(k + 1) % 3], t[(k + 2) % 3]);
         if (std::max({v[0], v[1], v[2]}) > 2 * std::min({v[0], v[1], v[2]}) && round < 12 &&
-            area > piece_area / 4096 && m != t[(k + 1) % 3] && m != t[(k + 2) % 3] &&
-            w.cut.size() + next.size() + todo.size() < most) {
-          next.push_back({t[k], t[(k + 1) % 3], m});
-          next.push_back({t[k], m, t[(k + 2) % 3]});
+            area > piece_area / 4096 && w.cut.size() + next.size() + todo.size() < most &&
+            halve_longest_edge(domain, t, halves)) {
+          next.push_back(halves[0]);
+          next.push_back(halves[1]);
           next_face.insert(next_face.end(), 2, face_of[j]);
           continue;
         }
