@@ -504,6 +504,12 @@ py::tuple domain_resample(const Domain& d, std::optional<std::size_t> cells,
   {
     py::gil_scoped_release release;
     const auto cdt = d.triangulation();
+    for (std::size_t k = 0; k < fixed_points.size(); ++k)  // as cvt2 --fixed-points says it
+      if (!CVT_2::is_in_domain_2(*cdt, fixed_points[k]))
+        throw CVT_2::Domain_error("fixed_points[" + std::to_string(k) + "]: point " +
+                                      CVT_2::internal::to_string(fixed_points[k]) +
+                                      " lies outside the domain",
+                                  k);
     h = size ? *size : CVT_2::cell_size_for_cells_2(*cdt, *cells, spacing_ratio);
     auto runs = std::make_shared<CVT_2::Sliding_runs_2<CDT>>();
     // The input item of each constrained edge, for the chords that replace them.

@@ -23,6 +23,7 @@
 #include <array>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <set>
 #include <tuple>
@@ -1000,4 +1001,8 @@ TEST_CASE("Constraint_editor_2: a crack's new vertices carry a field from each s
   CHECK(tips == 7);
   CHECK(crack_nodes_seen > 0);
   CHECK(lips == 2 * 7 * 4);  // 4 vertices inside each step of 0.5
+  // A negative or NaN spacing was taken for 0 (no vertices on the way), silently.
+  for (const double bad : {-0.1, std::numeric_limits<double>::quiet_NaN()})
+    CHECK_THROWS_WITH(editor.extend_constraint(id, Point(4.5, y), bad),
+                      Catch::Contains("a positive length, or 0 for no vertices"));
 }

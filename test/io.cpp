@@ -640,7 +640,7 @@ TEST_CASE(
              Catch::Contains("t.geojson: feature 1 (sq): polygon 1, ring 1: the hole through (5, "
                              "5) lies outside"));
   // What GEOS accepts stays accepted: holes touching the exterior or each other at a vertex,
-  // and, as make_valid() reads them, along an edge; an island in a lake (another polygon).
+  // and, as buffer(0) reads them, along an edge; an island in a lake (another polygon).
   const auto area = [](const std::string& text) {
     Cdt cdt;
     CVT_2::IO::insert_wkt(cdt, parse_wkt(text));
@@ -652,6 +652,29 @@ TEST_CASE(
   CHECK(area("POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (0 0, 5 0, 5 5, 0 5, 0 0))") == Approx(75));
   CHECK(area("MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 8 2, 8 8, 2 8, 2 2)), "
              "((3 3, 7 3, 7 7, 3 7, 3 3), (4 4, 6 4, 6 6, 4 6, 4 4)))") == Approx(64 + 12));
+}
+
+// A hole along its polygon's exterior is a notch (GEOS's buffer(0) and make_valid's "structure"
+// method). Its faces along the shared edge are the exterior's inside ones too, and were taken
+// for an island's: a hole whose every face touched that edge stayed, one with another face went
+// (a triangle gave 100, the same with a vertex more on an edge 91).
+TEST_CASE("regression: a hole along its polygon's exterior is cut out, however its ring is cut",
+          "[io][wkt][regression]") {
+  const auto area = [](const std::string& hole, const std::string& more = "") {
+    Cdt cdt;
+    CVT_2::IO::insert_wkt(cdt, parse_wkt("MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0), (" + hole +
+                                         "))" + more + ")\n"));
+    return domain_area(cdt);
+  };
+  CHECK(area("2 0, 8 0, 5 3, 2 0") == Approx(91));
+  CHECK(area("2 0, 8 0, 6.5 1.5, 5 3, 2 0") == Approx(91));
+  CHECK(area("2 0, 8 0, 8 3, 2 3, 2 0") == Approx(82));
+  CHECK(area("0 0, 4 0, 4 3, 0 3, 0 0") == Approx(88));
+  CHECK(area("0 0, 10 0, 10 3, 0 3, 0 0") == Approx(70));   // across: two pieces
+  CHECK(area("10 10, 5 10, 10 5, 10 10") == Approx(87.5));  // a corner, clockwise
+  // Beside a second polygon that shares the edge from outside, and with an island in the notch.
+  CHECK(area("2 0, 8 0, 5 3, 2 0", ", ((2 0, 8 0, 5 -3, 2 0))") == Approx(100));
+  CHECK(area("2 0, 8 0, 5 3, 2 0", ", ((4 0, 6 0, 5 1, 4 0))") == Approx(92));
 }
 
 // Issue 38: a LINESTRING wholly outside the domain (coordinates in another system, x and y

@@ -134,11 +134,16 @@ class Constraint_editor_2 {
   }
 
   /// Extends constraint `id` from its last vertex to `tip` (a crack that grows), with vertices
-  /// at most `spacing` apart along the new piece if `spacing` is positive. A tip on another
-  /// constraint is inserted on it.
-  /// \throws Domain_error as `insert_constraint()`, or if `id` was removed or is unknown.
+  /// at most `spacing` apart along the new piece if `spacing` is positive (0: none). A tip on
+  /// another constraint is inserted on it.
+  /// \throws Domain_error as `insert_constraint()`, if `id` was removed or is unknown, or if
+  ///         `spacing` is negative or NaN.
   void extend_constraint(Constraint_id id, const Point_2& tip, FT spacing = FT(0)) {
     check_id(id, "extend_constraint");
+    if (!(spacing >= FT(0)))
+      throw Domain_error("extend_constraint: a spacing of " +
+                         internal::number_to_string(CGAL::to_double(spacing)) +
+                         " (a positive length, or 0 for no vertices on the way)");
     if (!internal::is_valid_point(tip))
       throw Domain_error("extend_constraint: " +
                          internal::invalid_point_message("tip " + internal::to_string(tip)));

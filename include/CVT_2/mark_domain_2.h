@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -241,9 +242,10 @@ std::unordered_set<typename CDT::Face_handle> ring_region(const CDT& cdt, PointI
 
 // GEOS's rules for the holes of a valid polygon: each lies inside the polygon's exterior ring,
 // covers less than all of it, and none lies inside another (they may touch the exterior and each
-// other at points and, as make_valid() reads them, along edges). A hole outside would remove
-// nothing, silently. `where(i, r)` names ring r (0: the exterior) of the i-th polygon in messages.
-// The rings are constraints of `cdt`.
+// other at points; along edges, which GEOS does not allow, they are read as its buffer(0) reads
+// them: a hole along the exterior is a notch, holes along each other are one). A hole outside
+// would remove nothing, silently. `where(i, r)` names ring r (0: the exterior) of the i-th polygon
+// in messages. The rings are constraints of `cdt`.
 template <class CDT, class PolygonWithHolesRange, class Where>
 void check_holes_inside(const CDT& cdt, const PolygonWithHolesRange& polygons, const Where& where) {
   if (cdt.dimension() < 2) return;  // no area: the domain is empty
@@ -377,7 +379,8 @@ void mark_domain_2(const CDT& cdt, const PointRange& hole_seeds) {
 /// inside each hole ring, next to its edges, serve as hole seeds (but those that are also just
 /// inside another polygon's ring: an island in the hole, along its edge), and Triangle's rule
 /// does the rest. Polygons may share edges and vertices (a map of counties); their union is the
-/// domain, an island that fills a hole filling it.
+/// domain, an island that fills a hole filling it. A hole along its own polygon's exterior
+/// (invalid for GEOS) is cut out of it, a notch, as GEOS's `buffer(0)` reads it.
 ///
 /// A ring that touches itself at a vertex is read as GEOS reads it (`make_valid()`): cut there
 /// into simple loops, a loop of an outer ring that lies inside another loop of the same ring
@@ -403,25 +406,41 @@ void mark_domain_from_polygons_2(const CDT& cdt, const PolygonWithHolesRange& po
       });
   };
   // Holes are flooded from the faces just inside their edges, but for a face that is also just
-  // inside a loop with area (an island in the hole, along its edge: the island's face, which
-  // the flood would have taken with it; a hole an island fills is no hole of the union).
-  std::unordered_set<Face_handle> solid;
-  std::vector<Face_handle> seeds;
-  const auto visit = [&](Face_handle f, bool hole) {
-    if (hole)
-      seeds.push_back(f);
-    else
-      solid.insert(f);
-  };
+  // inside a loop with area of another ring (an island in the hole, along its edge: the
+  // island's face, which the flood would have taken with it; a hole an island fills is no hole
+  // of the union). A face just inside its own polygon's exterior is a seed all the same: the
+  // hole runs along the exterior there and is cut out, a notch. `solid` maps a face to the
+  // polygon whose exterior alone makes it solid, `other` if another ring does.
+  constexpr std::size_t other = std::numeric_limits<std::size_t>::max();
+  std::unordered_map<Face_handle, std::size_t> solid;
+  std::vector<std::pair<Face_handle, std::size_t>> seeds;  // and the hole's polygon
+  std::size_t i = 0;
   for (const auto& pwh : polygons) {
+    const auto outer = [&](Face_handle f, bool hole) {
+      if (hole) {
+        seeds.emplace_back(f, other);  // a pocket the exterior closes off
+      } else {
+        const auto [it, is_new] = solid.emplace(f, i);
+        if (!is_new && it->second != i) it->second = other;
+      }
+    };
+    const auto inner = [&](Face_handle f, bool hole) {
+      if (hole)
+        seeds.emplace_back(f, i);
+      else
+        solid[f] = other;  // an island the hole ring closes off
+    };
     for_each_inside_face(pwh.outer_boundary().vertices_begin(), pwh.outer_boundary().vertices_end(),
-                         1, visit);
+                         1, outer);
     for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h)
-      for_each_inside_face(h->vertices_begin(), h->vertices_end(), 0, visit);
+      for_each_inside_face(h->vertices_begin(), h->vertices_end(), 0, inner);
+    ++i;
   }
   std::vector<Face_handle> stack;
-  for (const Face_handle f : seeds)
-    if (!solid.count(f)) stack.push_back(f);
+  for (const auto& [f, polygon] : seeds) {
+    const auto it = solid.find(f);
+    if (it == solid.end() || (polygon != other && it->second == polygon)) stack.push_back(f);
+  }
   internal::flood_outside(cdt, stack);
 }
 

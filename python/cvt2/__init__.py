@@ -119,10 +119,12 @@ class Domain:
           MULTIPOINT generators;
         - ``.geojson`` (or ``.json``): the same by geometry type, in features.
 
-        Raises FileNotFoundError, or ParseError / DomainError naming the file and line or
-        feature.
+        Raises FileNotFoundError (IsADirectoryError for a directory), or ParseError /
+        DomainError naming the file and line or feature.
         """
         path = os.fspath(path)
+        if os.path.isdir(path):
+            raise IsADirectoryError(errno.EISDIR, "a directory, not a domain file", path)
         if not os.path.isfile(path):
             raise FileNotFoundError(errno.ENOENT, "no such domain file", path)
         return cls._wrap(_cvt2.Domain.from_file(path))
@@ -138,7 +140,7 @@ class Domain:
         - ``constraints``: None, or a list of LineString, LinearRing or MultiLineString: inner
           constraints, which cells do not cross (county borders, faults, rivers). They may end
           inside the domain, meet each other at their ends or run along the boundary, but not
-          cross each other or the boundary.
+          cross each other or the boundary. Empty geometries are skipped.
 
         Errors name the geometry: ``<shapely>: constraints[2]: this geometry crosses itself or an
         earlier one``. In :attr:`segment_items`, 0 is the polygon, k + 1 is ``constraints[k]``.
@@ -169,6 +171,8 @@ class Domain:
         lines, items = [], []
         for k, c in enumerate(constraints):
             kind = getattr(c, "geom_type", None)
+            if kind is not None and c.is_empty:
+                continue  # no line (shapely 1.8 calls an empty LineString a GeometryCollection)
             if kind in ("LineString", "LinearRing"):
                 parts = [c]
             elif kind == "MultiLineString":

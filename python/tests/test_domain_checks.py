@@ -56,6 +56,22 @@ def test_a_hole_outside_its_shell_is_an_error_in_every_reader(tmp_path):
         assert cvt2.Domain.from_shapely(valid).area == pytest.approx(valid.area, rel=1e-12)
 
 
+@pytest.mark.parametrize("hole", [[(2, 0), (8, 0), (5, 3)], [(2, 0), (8, 0), (6.5, 1.5), (5, 3)],
+                                  [(0, 0), (10, 0), (10, 3), (0, 3)]])
+def test_a_hole_along_its_exterior_is_a_notch_in_every_reader(tmp_path, hole):
+    # GEOS calls it invalid; read as its buffer(0) reads it. A hole whose faces all touched the
+    # shared edge was kept (a triangle: 100), one with another face cut out (the same with a
+    # vertex more: 91).
+    polygon = Polygon([(0, 0), (10, 0), (10, 10), (0, 10)], [hole])
+    assert not polygon.is_valid
+    wkt, geojson = tmp_path / "notch.wkt", tmp_path / "notch.geojson"
+    write_wkt(wkt, [polygon], [])
+    write_geojson(geojson, [polygon], [])
+    for domain in (cvt2.Domain.from_shapely(polygon, [LineString()]), cvt2.Domain.from_file(wkt),
+                   cvt2.Domain.from_file(geojson)):
+        assert domain.area == pytest.approx(polygon.buffer(0).area, rel=1e-12)
+
+
 def _error_in_every_reader(tmp_path, polygon, lines, shapely_message, file_message):
     """The same DomainError from shapely (the lines as constraints[i]) and from a WKT and a
     GeoJSON file with the last line (on the file's line 2, its feature 2)."""

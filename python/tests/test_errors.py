@@ -117,6 +117,9 @@ def test_bad_options(square):
 def test_bad_domains(tmp_path):
     with pytest.raises(FileNotFoundError):
         cvt2.Domain.from_file(tmp_path / "missing.poly")
+    (tmp_path / "folder.wkt").mkdir()
+    with pytest.raises(IsADirectoryError, match="a directory"):  # was "no such domain file"
+        cvt2.Domain.from_file(tmp_path / "folder.wkt")
     bad = tmp_path / "bad.poly"
     bad.write_text("4 2 0 0\n0 0 0\n1 1 0\n2 1 1\n3 0 1\nx 0\n")
     with pytest.raises(cvt2.ParseError) as e:

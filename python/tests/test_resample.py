@@ -464,6 +464,9 @@ def test_resample_and_the_sizing_check_their_arguments():
     for bad in ([[np.nan, 0]], [[1e301, 0]]):  # matched no vertex, and were ignored
         with pytest.raises(cvt2.DomainError, match=r"fixed_points\[0\]: point \(.*\) is not"):
             d.resample(size=0.3, fixed_points=bad)
+    # ignored, where cvt2 --fixed-points refuses it
+    with pytest.raises(cvt2.DomainError, match=r"fixed_points\[1\]: point \(2, 2\) lies outside"):
+        d.resample(size=0.3, fixed_points=[[1, 1], [2, 2]])
     # was "RuntimeError: Unable to cast Python instance to C++ type"
     with pytest.raises(TypeError, match="boundary_size must be None or a number, not str"):
         cvt2.random_points(d, 10, density="lipschitz", boundary_size="x")

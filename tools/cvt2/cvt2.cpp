@@ -197,11 +197,19 @@ bool is_number(const std::string& text) {
   return !text.empty() && *end == '\0';
 }
 
+// Throws unless `path` names a file that can be read (a directory opens, then reads as empty).
+void require_readable(const std::string& what, const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw std::runtime_error("cannot open the " + what + " file '" + path + "': a directory");
+  if (!std::ifstream(path))
+    throw std::runtime_error("cannot open the " + what + " file '" + path + "'");
+}
+
 // --top, --bottom: a number, or the file of one a cell.
 std::vector<double> number_or_values(const std::string& option, const std::string& text) {
   if (is_number(text)) return {parse_real(option, text)};
-  if (!std::ifstream(text))
-    throw std::runtime_error("cannot open the " + option.substr(2) + " file '" + text + "'");
+  require_readable(option.substr(2), text);
   return CVT_2::IO::read_values(text);
 }
 
@@ -800,8 +808,7 @@ void check_layer(const std::vector<double>& top, const std::vector<double>& bott
 }
 
 int run(const Options& o) {
-  if (!std::ifstream(o.domain))
-    throw std::runtime_error("cannot open the domain file '" + o.domain + "'");
+  require_readable("domain", o.domain);
   check_output_paths(o);
   CDT cdt;
   // The DISV's top and bottom read first: a bad file fails before the optimization.
@@ -894,8 +901,7 @@ int run(const Options& o) {
     }
   };
   if (!o.points_in.empty()) {
-    if (!std::ifstream(o.points_in))
-      throw std::runtime_error("cannot open the points file '" + o.points_in + "'");
+    require_readable("points", o.points_in);
     const auto points = CVT_2::IO::read_points<Point_2>(o.points_in);
     if (points.constrained_skipped > 0)
       std::cerr << "cvt2: note: " << o.points_in << ": " << points.constrained_skipped
@@ -918,8 +924,7 @@ int run(const Options& o) {
   // tolerance moved them).
   std::vector<Point_2> fixed;
   if (!o.fixed_points.empty()) {
-    if (!std::ifstream(o.fixed_points))
-      throw std::runtime_error("cannot open the fixed points file '" + o.fixed_points + "'");
+    require_readable("fixed points", o.fixed_points);
     const auto points = CVT_2::IO::read_points<Point_2>(o.fixed_points);
     const auto moved = resampled_hint([&] { return CVT_2::IO::insert_points(cdt, points); });
     fixed = points.points;
