@@ -6,7 +6,10 @@ set -e
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install_dependencies.sh"
 # Each test file alone: a unity unit instrumented at -O2 -g takes 19 minutes and 16 GB to compile.
+# Line tables only (-g1): reports keep their file:line stacks, and a unit compiles in 3/4 the time
+# (tools/cvt2/cvt2.cpp: 221 s against 295).
 cmake -S "$root" -B "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
   -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
   -DCVT_2_BUILD_PYTHON=OFF -DCVT_2_UNITY_TESTS=OFF > /dev/null
 if ! cmake --build "$root/build-asan" -j 2 > "$root/build-asan/build.log" 2>&1; then
