@@ -14,7 +14,8 @@ namespace CVT_2 {
 /// \ingroup PkgCvt2Ref
 /// Why an optimization stopped.
 enum Stop_reason {
-  CONVERGED,  ///< every free generator's move ratio is below the bound (and `STALLED` is not)
+  CONVERGED,  ///< every free (or sliding) generator's move ratio is below the bound, and not
+              ///< `STALLED`
   MAX_ITERATIONS_REACHED,   ///< `number_of_iterations` moves were done
   TIME_LIMIT_REACHED,       ///< `maximum_running_time` passed
   CALLBACK_REQUESTED_STOP,  ///< the callback returned `false`
@@ -63,9 +64,11 @@ struct Optimization_result {
   /// searches)
   std::size_t number_of_evaluations = 0;
   Stop_reason stop_reason = MAX_ITERATIONS_REACHED;  ///< why it stopped
-  double energy = 0;           ///< \f$E = \sum_i \int_{V_i} \rho(y)\|y - x_i\|^2 dy\f$, all cells
-  double max_move_ratio = 0;   ///< \f$\max_i mr(x_i)\f$ over free generators
-  double mean_move_ratio = 0;  ///< the mean of \f$mr(x_i)\f$ over free generators
+  double energy = 0;  ///< \f$E = \sum_i \int_{V_i} \rho(y)\|y - x_i\|^2 dy\f$, all cells
+  /// \f$\max_i mr(x_i)\f$ over the free generators and the sliding ones (`sliding_runs`), whose
+  /// move is along their run
+  double max_move_ratio = 0;
+  double mean_move_ratio = 0;  ///< the mean of \f$mr(x_i)\f$ over the same
   /// how the final cells follow a density that is not uniform (`density_response_2()`); not
   /// measured (NaN) with a uniform density or in a `region`
   Density_response density_response;

@@ -494,8 +494,10 @@ def optimize(
       make that many cells with the domain's own, ``points``, ``fixed_points`` and the
       conforming lines' generators (None for ``points``: none given), dealt to the regions that
       constraints separate as :func:`random_points` deals them (``seed``), none in the
-      conforming lines' circles; ``size`` gives ``domain.cells_for_size(size)`` cells, rounded
-      half away from 0. Their ``input_index`` is -1. ``optimize(d, None, boundary="slide",
+      conforming lines' circles; ``size`` gives ``domain.cells_for_size(size,
+      spacing_ratio=1)`` cells with ``boundary="keep"`` (the boundary's generators counted as if
+      ``size`` apart, however few its vertices), the resampled domain's
+      ``cells_for_size(size)`` otherwise, rounded half away from 0. Their ``input_index`` is -1. ``optimize(d, None, boundary="slide",
       cells=N, seed=S)`` gives the bits of ``cvt2 D --boundary slide --cells N --seed S``, and
       so with ``fixed_points``, ``constraints`` and a density as with their options.
 
@@ -877,7 +879,8 @@ class OptimizeResult:
       ``density_count_excess``),
       ``"max_iterations"``, ``"time_limit"``, ``"callback"`` or ``"no_free_generator"``;
     - ``energy_history``, ``max_move_ratio_history``, ``mean_move_ratio_history``: one value an
-      iteration, the first before any move; ``max_move_ratio``, ``mean_move_ratio``: the last;
+      iteration, the first before any move; ``max_move_ratio``, ``mean_move_ratio``: the last
+      (over the free generators and, with ``boundary="slide"``, the sliding ones);
     - ``seconds``: the optimization's time, measured as ``cvt2`` prints ``seconds=``;
     - ``notes``: the points moved onto the boundary (``boundary_tolerance``), as ``cvt2`` notes
       them, and, with a density, a note if the cells do not follow it (as for ``"stalled"``):

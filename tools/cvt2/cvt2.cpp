@@ -94,7 +94,9 @@ void print_help(std::ostream& os) {
         "                         included (instead of -n); with --constraints barrier the\n"
         "                         grid files split each cell on a barrier in two\n"
         "      --size H           cells of spacing H: H apart in a hexagonal tiling, a cell of\n"
-        "                         area sqrt(3)/2 H^2 (instead of -n). With --cells and --size\n"
+        "                         area sqrt(3)/2 H^2 (instead of -n), the boundary's cells\n"
+        "                         counted as if H apart (with --boundary keep too, however\n"
+        "                         few its vertices). With --cells and --size\n"
         "                         each region between constraints (a county, an island) gets\n"
         "                         the points its area (its mass, with a density) asks for,\n"
         "                         less the cells of the generators on its boundary and in it:\n"
@@ -807,6 +809,24 @@ void check_layer(const std::vector<double>& top, const std::vector<double>& bott
   if (!bad.empty()) throw Usage_error(bad);  // as write_disv() says it
 }
 
+// Notes that the vertices of the boundary and the lines are generators too, where they are
+// many and much closer than --boundary resample would space them (2 cell sizes): a finely
+// digitised coast, not the file's free generators nor a domain resampled before.
+void note_dense_lines(const CDT& cdt, std::size_t cells) {
+  std::size_t on_lines = 0;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    on_lines += cdt.are_there_incident_constraints(v) && CVT_2::internal::has_domain_face(cdt, v);
+  if (on_lines <= 100 || on_lines <= cells / 10) return;
+  double length = 0;  // of the lines in the domain
+  for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
+    if (cdt.is_constrained(*e) &&
+        (e->first->is_inside_domain() || e->first->neighbor(e->second)->is_inside_domain()))
+      length += std::sqrt(CGAL::to_double(cdt.segment(*e).squared_length()));
+  if (on_lines > 1.5 * length / (2 * CVT_2::cell_size_for_cells_2(cdt, cells)))
+    std::cerr << "cvt2: note: the domain's " << on_lines << " vertices are generators too, "
+              << cells << " cells in all; --boundary resample spaces them to the cell size\n";
+}
+
 int run(const Options& o) {
   require_readable("domain", o.domain);
   check_output_paths(o);
@@ -884,8 +904,6 @@ int run(const Options& o) {
     sizing.lipschitz.emplace(
         cdt, o.lipschitz_k.value_or(0.1),
         o.boundary_size ? std::optional<K::FT>(*o.boundary_size) : std::nullopt);
-  // the domain's vertices and generators
-  const std::size_t own = CVT_2::internal::number_of_vertices_in_domain(cdt);
   // Points given outside a resampled domain: inside the input's, where a chord cut a corner?
   const auto resampled_hint = [&o](const auto& insert) {
     try {
@@ -982,9 +1000,7 @@ int run(const Options& o) {
                         : " (--boundary resample spaces the domain's vertices)"));
     n = static_cast<std::size_t>(wanted) - present;
   }
-  if (!o.resample && own > (present - own + n) / 10 && own > 100)
-    std::cerr << "cvt2: note: the domain's " << own << " vertices are generators too, "
-              << present + n << " cells in all; --boundary resample spaces them to the cell size\n";
+  if (!o.resample) note_dense_lines(cdt, present + n);
   // for the density's note (a density only): whether every free generator is drawn from it
   const bool none_given =
       !sizing.is_uniform() && CVT_2::internal::movable_generators(cdt, fixed).empty();
