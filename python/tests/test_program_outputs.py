@@ -141,6 +141,18 @@ def test_random_points_merged_where_coordinates_are_coarse_are_counted(program, 
     assert merged > 0 and generators + merged == 300, (p.stderr, generators)
 
 
+def test_repeated_points_given_are_noted_and_merged(program, data, tmp_path):
+    # (a repeated --fixed-points line was merged silently; --points-in's were noted)
+    (tmp_path / "points.txt").write_text("0.25 0.25\n0.5 0.5\n0.25 0.25\n")
+    (tmp_path / "wells.txt").write_text("0.75 0.75\n# a comment\n0.75 0.75\n")
+    p = run(program, data / "four_clusters.poly", "--points-in", "points.txt", "--fixed-points",
+            "wells.txt", "--iterations", 0, cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    assert "points.txt:3: this point repeats the one on line 1" in p.stderr, p.stderr
+    assert "wells.txt:3: this point repeats the one on line 1" in p.stderr, p.stderr
+    assert int(dict(f.split("=", 1) for f in p.stdout.split())["generators"]) == 213 + 2 + 1
+
+
 def test_redistribute_always_without_a_density_says_the_points_are_kept(program, data, tmp_path):
     # (it was taken silently: with a uniform density there is nothing to redistribute by)
     p = subprocess.run([os.path.abspath(program), str(data / "four_clusters.poly"),

@@ -417,6 +417,16 @@ void note_repeated(const std::vector<std::string>& notes) {
   note_first(notes, "repeat earlier ones", "; merged");
 }
 
+// The lines of the points file `file` whose points repeat earlier ones, merged into one.
+template <class ReadPoints>
+void note_repeated_points(const std::string& file, const ReadPoints& points) {
+  std::vector<std::string> notes;
+  for (const auto& [line, earlier] : points.repeated_points)
+    notes.push_back(file + ":" + std::to_string(line) + ": this point repeats the one on line " +
+                    std::to_string(earlier));
+  note_repeated(notes);
+}
+
 // The conforming lines (--constraints conforming, or a feature's "kind"), their input items and
 // the pairs of generators mirrored across their steps.
 struct Conforming {
@@ -924,11 +934,7 @@ int run(const Options& o) {
     if (points.constrained_skipped > 0)
       std::cerr << "cvt2: note: " << o.points_in << ": " << points.constrained_skipped
                 << " constrained generators ('x y 1') skipped: the domain gives them\n";
-    std::vector<std::string> notes;
-    for (const auto& [line, earlier] : points.repeated_points)
-      notes.push_back(o.points_in + ":" + std::to_string(line) +
-                      ": this point repeats the one on line " + std::to_string(earlier));
-    note_repeated(notes);
+    note_repeated_points(o.points_in, points);
     const auto moved = resampled_hint([&] {
       return o.boundary_tolerance
                  ? CVT_2::IO::insert_points(
@@ -944,6 +950,7 @@ int run(const Options& o) {
   if (!o.fixed_points.empty()) {
     require_readable("fixed points", o.fixed_points);
     const auto points = CVT_2::IO::read_points<Point_2>(o.fixed_points);
+    note_repeated_points(o.fixed_points, points);
     const auto moved = resampled_hint([&] { return CVT_2::IO::insert_points(cdt, points); });
     fixed = points.points;
     for (std::size_t i = 0; i < moved.moved.size(); ++i) fixed[moved.moved[i]] = moved.moved_to[i];
