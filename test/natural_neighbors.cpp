@@ -730,6 +730,36 @@ TEST_CASE("a hint, a query that is not a number, a query outside", "[natural_nei
   std::sort(w2.begin(), w2.end());
   CHECK(w1 == w2);
 
+  // A query on an edge is located in either face beside it, by the hint: the weights were
+  // summed around it from there, a last bit apart (29 of 1 247 midpoints of edges on the
+  // square with inner constraints, 400 nodes). Now the same bits from either side.
+  Domain e;
+  load_domain(e, "square_inner_constraints.poly");
+  insert_random_points(e, 400, 3);
+  const Bvd bvd_e(e.cdt);
+  std::size_t on_edges = 0, differ = 0;
+  for (auto edge = e.cdt.finite_edges_begin(); edge != e.cdt.finite_edges_end(); ++edge) {
+    const auto [f, i] = *edge;
+    const Point a = f->vertex(Cdt::ccw(i))->point(), b = f->vertex(Cdt::cw(i))->point();
+    const Point m = CGAL::midpoint(a, b);
+    if (!CGAL::collinear(a, b, m) || e.cdt.is_infinite(f->neighbor(i))) continue;
+    ++on_edges;
+    for (const auto method : {CVT_2::SIBSON, CVT_2::LAPLACE}) {
+      std::vector<std::pair<Cdt::Vertex_handle, double>> from_f, from_g;
+      const auto rf = CVT_2::natural_neighbor_coordinates_2(
+          bvd_e, m, std::back_inserter(from_f),
+          CVT_2::parameters::hint(f).natural_neighbor_method(method));
+      const auto rg = CVT_2::natural_neighbor_coordinates_2(
+          bvd_e, m, std::back_inserter(from_g),
+          CVT_2::parameters::hint(f->neighbor(i)).natural_neighbor_method(method));
+      std::sort(from_f.begin(), from_f.end());
+      std::sort(from_g.begin(), from_g.end());
+      differ += from_f != from_g || rf.second != rg.second;
+    }
+  }
+  CHECK(on_edges > 300);
+  CHECK(differ == 0);
+
   std::vector<std::pair<Cdt::Vertex_handle, double>> w;
   CHECK_THROWS_WITH(
       CVT_2::natural_neighbor_coordinates_2(bvd, Point(std::nan(""), 0), std::back_inserter(w)),

@@ -317,7 +317,8 @@ class Natural_neighbors {
 ///         traits have `construct_dual_segment_2_object()` (`Bvd_traits_2` has).
 /// \param np optional named parameters:
 ///   - `natural_neighbor_method(m)`: `SIBSON` (the default) or `LAPLACE`.
-///   - `hint(f)`: a face near q, where the point location starts (the previous query's, say).
+///   - `hint(f)`: a face near q, where the point location starts (the previous query's, say);
+///     it changes no bit of the result.
 /// \throws std::invalid_argument if q is not finite or exceeds 1e300 in magnitude;
 ///         `Domain_error` (one) if q is inside but its weights vanish or are not finite in double
 ///         precision: nodes a few ulps apart, or coordinates whose squares underflow or overflow.
@@ -378,8 +379,8 @@ struct Natural_neighbor_matrix_2 {
 /// `natural_neighbor_coordinates_2()` for every point of `queries`, on all cores, as a sparse
 /// matrix (`Natural_neighbor_matrix_2`): the shape functions of the constrained natural element
 /// method at those points. Queries are taken in chunks in their order, each located from the
-/// one before it (spatially sorted queries locate fastest); the result is the same, bit for bit,
-/// whatever the number of threads.
+/// one before it (spatially sorted queries locate fastest); a query's row is the same, bit for
+/// bit, whatever the number of threads and the queries around it.
 ///
 /// With `lips(true)`, a node with two lips or more (a vertex along a crack, or where a crack
 /// meets another constraint: the wedges of the domain between its constraints) has a column

@@ -191,8 +191,16 @@ auto Virtual_insertion<Diagram>::insert(const Point_2& q, Face_handle& hint) -> 
   if (m_cdt->dimension() < 2) return OUTSIDE;
   typename CDT::Locate_type lt;
   int li;
-  const Face_handle f = m_cdt->locate(q, lt, li, hint);
+  Face_handle f = m_cdt->locate(q, lt, li, hint);
   hint = f;
+  // On an edge, which of its faces comes back depends on the hint, and the sums run around q
+  // from it: the face whose opposite vertex comes first in xy order, for the same bits whatever
+  // the query before.
+  if (lt == CDT::EDGE && !m_cdt->is_infinite(f->neighbor(li))) {
+    const int mi = m_cdt->mirror_index(f, li);
+    const Face_handle g = f->neighbor(li);
+    if (m_cdt->is_infinite(f) || g->vertex(mi)->point() < f->vertex(li)->point()) f = g, li = mi;
+  }
   std::vector<Face_handle>& seeds = m_seeds;
   seeds.clear();
   switch (lt) {
