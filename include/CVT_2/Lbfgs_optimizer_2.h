@@ -42,7 +42,7 @@ constexpr std::size_t default_lbfgs_memory = 7;  // curvature pairs kept
 /// generators' quasi-Newton step (block coordinate descent). The quasi-Newton direction comes from
 /// the last `memory` pairs of position and gradient differences, with the Lloyd step as
 /// preconditioner: the initial inverse Hessian is \f$\mathrm{diag}(1/(2m_i))\f$, so a step without
-/// memory (the first, and every restart) is exactly a Lloyd step \f$x_i \to x_i^*\f$.
+/// memory (the first, and every restart) aims where a Lloyd step does, \f$x_i \to x_i^*\f$.
 ///
 /// A step moves the generators in place, as Lloyd iteration does: all at once, those of any
 /// face that this folds within their stars instead (no edge is crossed, so no constraint),
