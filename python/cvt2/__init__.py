@@ -497,8 +497,8 @@ def optimize(
       conforming lines' circles; ``size`` gives ``domain.cells_for_size(size,
       spacing_ratio=1)`` cells with ``boundary="keep"`` (the boundary's generators counted as if
       ``size`` apart, however few its vertices), the resampled domain's
-      ``cells_for_size(size)`` otherwise, rounded half away from 0. Their ``input_index`` is -1. ``optimize(d, None, boundary="slide",
-      cells=N, seed=S)`` gives the bits of ``cvt2 D --boundary slide --cells N --seed S``, and
+      ``cells_for_size(size)`` otherwise, rounded half away from 0. Their ``input_index`` is
+      -1. ``optimize(d, None, boundary="slide", cells=N, seed=S)`` gives the bits of ``cvt2 D --boundary slide --cells N --seed S``, and
       so with ``fixed_points``, ``constraints`` and a density as with their options.
 
     Ctrl-C raises KeyboardInterrupt. Returns an :class:`OptimizeResult`.
